@@ -1,0 +1,15 @@
+// The arpsim subcommands. Each registers its options on the CLI11 app and
+// returns the function that runs it (exit status).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace arp::app {
+
+using Runner = std::function<int()>;
+
+Runner add_frame_command(CLI::App& app);
+Runner add_verify_command(CLI::App& app);
+Runner add_config_command(CLI::App& app);
+
+}  // namespace arp::app

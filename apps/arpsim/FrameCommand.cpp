@@ -1,0 +1,120 @@
+// arpsim frame: one stereo HMD frame of a cube map (or the calibration
+// pattern) at one head orientation, written as an image.
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "CommonOptions.hpp"
+#include "Commands.hpp"
+#include "FrameImage.hpp"
+#include "apps/config/ConfigFile.hpp"
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/CubeMapLoader.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "host/cubemap/ImageFiles.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+namespace arp::app {
+
+namespace {
+struct FrameArgs {
+  ConfigOptions cfg;
+  double yaw = 0, pitch = 0, roll = 0;
+  std::string quat;
+  std::string faces, cross, equirect;
+  std::string out = "frame.png";
+  std::string report;
+  std::string aa;
+  int64_t frame = 0;
+  int threads = 0;
+};
+
+dp::Quat parse_quat(const std::string& s) {
+  std::stringstream ss(s);
+  double v[4];
+  char sep;
+  for (int i = 0; i < 4; ++i) {
+    if (!(ss >> v[i])) throw InputError("--quat", "component " + std::to_string(i), "expected four numbers w,x,y,z");
+    if (i < 3 && !(ss >> sep && sep == ',')) throw InputError("--quat", "", "expected four comma-separated numbers w,x,y,z");
+  }
+  std::string rest;
+  if (ss >> rest) throw InputError("--quat", "", "unexpected text after four numbers: " + rest);
+  return dp::normalised(dp::Quat{v[0], v[1], v[2], v[3]}, "--quat");
+}
+
+int run_frame(const FrameArgs& a) {
+  dp::ArpConfig c = a.cfg.resolve();
+  if (!a.aa.empty() && !dp::parse(a.aa, c.pipeline.aa)) throw InputError("--aa", "", "must be off or bilinear");
+  for (double v : {a.yaw, a.pitch, a.roll})
+    if (!std::isfinite(v)) throw InputError("--yaw/--pitch/--roll", "", "angles must be finite");
+  const dp::Quat q = a.quat.empty() ? dp::normalised(dp::from_yaw_pitch_roll_deg(a.yaw, a.pitch, a.roll), "orientation")
+                                    : parse_quat(a.quat);
+  const FunctionalModel model(c);
+  const int S = c.memory.face_size;
+  std::string source = "calibration pattern";
+  host::CubeMapImages cm;
+  if (!a.faces.empty()) { cm = host::load_six_faces(host::six_face_paths_in(a.faces), S); source = a.faces; }
+  else if (!a.cross.empty()) { cm = host::load_cross(a.cross, S); source = a.cross; }
+  else if (!a.equirect.empty()) { cm = host::load_equirect(a.equirect, S); source = a.equirect; }
+  else cm = host::make_calibration_pattern(S);
+  dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
+  host::load_into_memories(mem, 0, cm, host::far_depth(mem.format()));
+
+  HmdFrame f;
+  RenderOptions ro;
+  ro.threads = a.threads;
+  ro.photon_times = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  model.render(mem, dp::OrientationStream::constant(q), a.frame, f, ro);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  host::write_rgb8(a.out, frame_to_image(f));
+
+  const auto [pmin, pmax] = std::minmax_element(f.photon_ps.begin(), f.photon_ps.end());
+  std::printf("arpsim frame: %s -> %s (%dx%d, %s, %d eye%s)\n", source.c_str(), a.out.c_str(), f.width * f.eyes,
+              f.height, dp::to_string(c.pipeline.aa).c_str(), f.eyes, f.eyes == 2 ? "s side by side" : "");
+  std::printf("  orientation q = (%.6f, %.6f, %.6f, %.6f)  frame %lld at %.3f Hz\n", q.w, q.x, q.y, q.z,
+              static_cast<long long>(a.frame), model.timing().refresh_hz());
+  std::printf("  photon times %.6f .. %.6f ms; display memory in use %.1f MiB; rendered in %.1f ms (wall clock)\n",
+              static_cast<double>(*pmin) * 1e-9, static_cast<double>(*pmax) * 1e-9,
+              static_cast<double>(mem.bytes_allocated()) / (1 << 20), ms);
+  if (!a.report.empty()) {
+    nlohmann::json r{{"image", a.out},
+                     {"source", source},
+                     {"quaternion_wxyz", {q.w, q.x, q.y, q.z}},
+                     {"frame", a.frame},
+                     {"refresh_hz", model.timing().refresh_hz()},
+                     {"first_photon_ps", *pmin},
+                     {"last_photon_ps", *pmax},
+                     {"display_memory_bytes", mem.bytes_allocated()},
+                     {"config", config::to_json(c)}};
+    write_text_atomic(a.report, r.dump(2) + "\n");
+  }
+  return 0;
+}
+}  // namespace
+
+Runner add_frame_command(CLI::App& app) {
+  auto args = std::make_shared<FrameArgs>();
+  CLI::App* cmd = app.add_subcommand("frame", "Render one stereo HMD frame of a cube map at one head orientation");
+  args->cfg.add_to(*cmd);
+  cmd->add_option("--yaw", args->yaw, "Yaw in degrees about +y, positive turns left");
+  cmd->add_option("--pitch", args->pitch, "Pitch in degrees about +x, positive looks up");
+  cmd->add_option("--roll", args->roll, "Roll in degrees about +z, positive tilts the head left");
+  cmd->add_option("--quat", args->quat, "Orientation quaternion w,x,y,z (head frame to world) instead of angles")
+      ->type_name("W,X,Y,Z");
+  auto* g = cmd->add_option_group("cube map", "Display memory contents (default: the calibration pattern)");
+  g->add_option("--faces", args->faces, "Folder with px nx py ny pz nz.<ext>, each face_size square");
+  g->add_option("--cross", args->cross, "One image, a 4:3 horizontal or 3:4 vertical cross");
+  g->add_option("--equirect", args->equirect, "One 2:1 equirectangular panorama");
+  g->require_option(0, 1);
+  cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str();
+  cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
+  cmd->add_option("--frame", args->frame, "Frame index (sets the photon times)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 256));
+  cmd->add_option("--report", args->report, "Also write a JSON report of the frame");
+  return [args] { return run_frame(*args); };
+}
+
+}  // namespace arp::app

@@ -1,0 +1,58 @@
+// arpsim verify: the accuracy harness -- datapath against the golden
+// reference at any widths -- as a table, optionally a JSON report.
+#include <chrono>
+#include <cstdio>
+
+#include "CommonOptions.hpp"
+#include "Commands.hpp"
+#include "testbench/accuracy/AccuracyHarness.hpp"
+
+namespace arp::app {
+
+namespace {
+struct VerifyArgs {
+  ConfigOptions cfg;
+  accuracy::Options opt;
+  bool no_directed = false;
+  std::string json;
+  bool quiet = false;
+};
+
+int run_verify(VerifyArgs& a) {
+  const dp::ArpConfig c = a.cfg.resolve();
+  a.opt.directed = !a.no_directed;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!a.quiet)
+    a.opt.progress = [t0](const char* stage, double f) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double eta = f > 0 ? s * (1.0 - f) / f : 0.0;
+      std::fprintf(stderr, "\rverify: %-8s %5.1f%%  elapsed %5.1f s  ETA %5.1f s ", stage, 100.0 * f, s, eta);
+      if (f >= 1.0) std::fprintf(stderr, "\n");
+    };
+  const accuracy::Report r = accuracy::run(c, a.opt);
+  std::printf("%s", accuracy::to_text(r).c_str());
+  if (!a.json.empty()) write_text_atomic(a.json, accuracy::to_json(r) + "\n");
+  return 0;
+}
+}  // namespace
+
+Runner add_verify_command(CLI::App& app) {
+  auto a = std::make_shared<VerifyArgs>();
+  CLI::App* cmd = app.add_subcommand("verify", "Compare the bit-accurate datapath with the golden reference");
+  a->cfg.add_to(*cmd);
+  cmd->add_option("--frames", a->opt.frame_orientations, "Orientations checked at every display pixel")->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("--random", a->opt.random_orientations, "Seeded random orientations")->capture_default_str()->check(CLI::Range(0, 100000));
+  cmd->add_option("--pixels", a->opt.random_pixels, "Random pixels (and directions) per random orientation")->capture_default_str()
+      ->check(CLI::Range(0, 10000000));
+  cmd->add_option("--color-frames", a->opt.color_orientations, "Bilinear frames compared colour by colour")->capture_default_str()
+      ->check(CLI::Range(0, 100));
+  cmd->add_option("--seed", a->opt.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--worst", a->opt.worst_kept, "Worst inputs listed")->capture_default_str()->check(CLI::Range(0, 1000));
+  cmd->add_flag("--no-directed", a->no_directed, "Skip the directed extreme cases");
+  cmd->add_option("--json", a->json, "Also write the report as JSON");
+  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  return [a] { return run_verify(*a); };
+}
+
+}  // namespace arp::app

@@ -1,0 +1,34 @@
+// arpsim: the command line of the Address Recalculation Pipeline model.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include "Commands.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"arpsim - bit-accurate model of the Address Recalculation Pipeline head-mounted display"};
+  app.require_subcommand(1);
+  std::map<const CLI::App*, arp::app::Runner> runners;
+  auto add = [&](arp::app::Runner r) { runners[app.get_subcommands({}).back()] = std::move(r); };
+  add(arp::app::add_frame_command(app));
+  add(arp::app::add_verify_command(app));
+  add(arp::app::add_config_command(app));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (const auto& [sub, run] : runners)
+      if (sub->parsed()) return run();
+  } catch (const arp::InputError& e) {
+    std::fprintf(stderr, "arpsim: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "arpsim: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

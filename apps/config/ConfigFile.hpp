@@ -1,0 +1,28 @@
+// The configuration file (JSON): every key of dp::ArpConfig, defaults
+// embedded (the struct's own), documented in docs/configuration.md. Reading
+// is strict: unknown keys, wrong types and out-of-range values are an
+// InputError naming the file, the key path and the reason.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "rtl_model/datapath/ArpConfig.hpp"
+
+namespace arp::config {
+
+nlohmann::json to_json(const dp::ArpConfig& c);
+
+// Applies the keys present in `j` on top of `base`; `source` names the origin in errors.
+dp::ArpConfig from_json(const nlohmann::json& j, const std::string& source, dp::ArpConfig base = {});
+
+// Parses and applies a file (syntax errors name line and column).
+dp::ArpConfig load_file(const std::string& path, dp::ArpConfig base = {});
+
+// Applies "section.key=value" overrides (value as JSON, or a bare word as a string).
+dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::string>& sets);
+
+// Throws InputError(source, key, reason) on the first constraint violated.
+void check(const dp::ArpConfig& c, const std::string& source);
+
+}  // namespace arp::config

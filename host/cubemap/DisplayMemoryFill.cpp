@@ -1,0 +1,46 @@
+#include "DisplayMemoryFill.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "CubeFaceBasis.hpp"
+
+namespace arp::host {
+
+void memory_texel_to_image(int face, int x, int y, int S, int& col, int& row) {
+  const Dir3 d = memory_texel_direction(face, x, y, S);
+  const FaceBasis& b = face_bases()[static_cast<size_t>(face)];
+  auto dot = [&](const Dir3& a) { return d.x * a.x + d.y * a.y + d.z * a.z; };
+  const double fw = dot(b.forward);
+  const double u = (dot(b.right) / fw + 1.0) / 2.0, v = (1.0 - dot(b.up) / fw) / 2.0;
+  // Texel centres map onto pixel centres exactly (a mirror of the grid), far from rounding boundaries.
+  col = static_cast<int>(std::floor(u * S));
+  row = static_cast<int>(std::floor(v * S));
+}
+
+void fill_back_buffer(dp::DisplayMemoryBank& bank, const CubeMapImages& cm, uint32_t depth) {
+  const auto& fmt = bank.format();
+  const int S = fmt.face_size;
+  if (cm.face_size != S) throw std::invalid_argument("cube map face size differs from the display memory's");
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        int col, row;
+        memory_texel_to_image(f, x, y, S, col, row);
+        const uint8_t* p = cm.faces[static_cast<size_t>(f)].px(col, row);
+        bank.write(f, x, y, fmt.pack_rgb8(p[0], p[1], p[2]), depth);
+      }
+}
+
+void load_into_memories(dp::DisplayMemorySet& set, int memory, const CubeMapImages& cm, uint32_t depth,
+                        bool swap_now) {
+  for (int e = 0; e < set.eyes(); ++e) {
+    auto& bank = set.bank(e, memory);
+    bank.clear_back();
+    fill_back_buffer(bank, cm, depth);
+    bank.commit();
+    if (swap_now) bank.vblank();
+  }
+}
+
+}  // namespace arp::host

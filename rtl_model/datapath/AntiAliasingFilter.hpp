@@ -1,0 +1,57 @@
+// Anti-aliasing filter. Off: the nearest texel (the texel holding the sample
+// point). Bilinear: the four texels around the sample point (texel centres at
+// i + 1/2, clamp-to-edge within the face -- no filtering across cube edges),
+// each tap composited across the memories first, then the four composited
+// colours blended with weights from the sub-texel bits. Compositing before
+// filtering keeps object edges between memories correct (a filtered depth
+// would be meaningless).
+#pragma once
+#include <cstdint>
+
+#include "DisplayMemoryBank.hpp"
+
+namespace arp::dp {
+
+struct BilinearTaps {
+  int32_t x0, x1, y0, y1;
+  uint32_t wx, wy;  // weight of x1 / y1, Q0.texel_frac
+};
+
+// u, v: texel-space position Q.texel_frac (texel_frac >= 1).
+inline BilinearTaps bilinear_taps(int64_t u, int64_t v, int texel_frac, int32_t face_size) {
+  const int64_t half = int64_t{1} << (texel_frac - 1);
+  const int64_t mask = (int64_t{1} << texel_frac) - 1;
+  const int64_t us = u - half, vs = v - half;
+  const int32_t i0 = static_cast<int32_t>(us >> texel_frac), j0 = static_cast<int32_t>(vs >> texel_frac);
+  auto clampi = [face_size](int32_t i) { return i < 0 ? 0 : (i >= face_size ? face_size - 1 : i); };
+  return {clampi(i0), clampi(i0 + 1), clampi(j0), clampi(j0 + 1), static_cast<uint32_t>(us & mask),
+          static_cast<uint32_t>(vs & mask)};
+}
+
+struct ChannelLayout {
+  int shift[3];
+  uint32_t mask[3];
+  explicit ChannelLayout(const MemoryFormat& f)
+      : shift{f.green_bits + f.blue_bits, f.blue_bits, 0},
+        mask{(1u << f.red_bits) - 1, (1u << f.green_bits) - 1, (1u << f.blue_bits) - 1} {}
+};
+
+// Per channel: ((c00(W-wx) + c10 wx)(W-wy) + (c01(W-wx) + c11 wx) wy) / W^2,
+// rounded half up; W = 2^texel_frac. 16-bit channels and 16 weight bits fit in 64 bits.
+inline uint32_t bilinear_blend(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t wx, uint32_t wy,
+                               int texel_frac, const ChannelLayout& L) {
+  const uint64_t W = uint64_t{1} << texel_frac;
+  const int shift = 2 * texel_frac;
+  const uint64_t round = uint64_t{1} << (shift - 1);
+  uint32_t out = 0;
+  for (int c = 0; c < 3; ++c) {
+    const uint64_t a = (c00 >> L.shift[c]) & L.mask[c], b = (c10 >> L.shift[c]) & L.mask[c];
+    const uint64_t d = (c01 >> L.shift[c]) & L.mask[c], e = (c11 >> L.shift[c]) & L.mask[c];
+    const uint64_t top = a * (W - wx) + b * wx, bottom = d * (W - wx) + e * wx;
+    const uint64_t v = (top * (W - wy) + bottom * wy + round) >> shift;
+    out |= static_cast<uint32_t>(v) << L.shift[c];
+  }
+  return out;
+}
+
+}  // namespace arp::dp

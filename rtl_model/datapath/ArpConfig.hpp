@@ -1,0 +1,94 @@
+// Every parameter of the pixel path, with the defaults of brief §3. Plain data:
+// the JSON layer (apps/config) reads and writes it, validate() checks ranges.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "FixedPoint.hpp"
+
+namespace arp::dp {
+
+enum class EyeScan : uint8_t { Lockstep, SideBySide };
+enum class LatchPolicy : uint8_t { PerFrame, PerField, PerScanline, PerPixel };
+enum class DividerKind : uint8_t { ReciprocalLut, Exact };
+enum class AaMode : uint8_t { Off, Bilinear };
+
+std::string to_string(EyeScan v);
+std::string to_string(LatchPolicy v);
+std::string to_string(DividerKind v);
+std::string to_string(AaMode v);
+bool parse(const std::string& s, EyeScan& out);
+bool parse(const std::string& s, LatchPolicy& out);
+bool parse(const std::string& s, DividerKind& out);
+bool parse(const std::string& s, AaMode& out);
+
+struct VideoTimingConfig {
+  int eyes = 2;                   // 2 = stereo, 1 = mono
+  EyeScan eye_scan = EyeScan::Lockstep;
+  int h_active = 640, h_front_porch = 16, h_sync = 96, h_back_porch = 48;
+  int v_active = 480, v_front_porch = 10, v_sync = 2, v_back_porch = 33;
+  int64_t pixel_clock_hz = 25'175'000;
+  int fields_per_frame = 1;       // 1 progressive, 2 interlaced (odd lines in field 1)
+  int h_total() const { return (eye_scan == EyeScan::SideBySide ? eyes : 1) * h_active + h_front_porch + h_sync + h_back_porch; }
+  int v_total() const { return v_active + v_front_porch + v_sync + v_back_porch; }
+};
+
+struct LensConfig {
+  double fov_deg = 90.0;                  // horizontal field of view per eye (undistorted)
+  std::array<double, 4> k{1.0, 0.0, 0.0, 0.0};  // scale(r) = k0 + k1 r^2 + k2 r^4 + k3 r^6
+  double center_offset_px = 0.0;          // lens centre moved toward the nose, pixels
+};
+
+struct DatapathWidths {
+  int vec_frac = 14;                      // lens vectors, signed Q1.vec_frac
+  int mat_frac = 14;                      // orientation matrix, signed Q1.mat_frac
+  int rot_frac = 14;                      // rotated vector, signed Q1.rot_frac
+  Rounding rot_rounding = Rounding::HalfUp;
+  DividerKind divider = DividerKind::ReciprocalLut;
+  int recip_index_bits = 8;               // LUT has 2^index_bits entries
+  int recip_frac_bits = 16;               // LUT entries and refined reciprocal, Q0.recip_frac
+  int newton_steps = 1;                   // Newton-Raphson refinements after the LUT
+  int quot_frac = 16;                     // sc/|ma|, signed Q1.quot_frac
+  Rounding div_rounding = Rounding::HalfUp;
+  int texel_frac = 8;                     // sub-texel position bits (bilinear weights)
+  Rounding texel_rounding = Rounding::Floor;
+};
+
+struct MemoryConfig {
+  int count = 4;                          // display memories per eye
+  int face_size = 512;                    // S: each face is S x S texels
+  int red_bits = 8, green_bits = 8, blue_bits = 8;
+  int depth_bits = 16;                    // code 2^depth_bits-1 is reserved for "empty"
+  std::array<int, 3> background{0, 0, 0};  // RGB8 shown where every memory is empty
+  int color_bits() const { return red_bits + green_bits + blue_bits; }
+};
+
+struct PipelineConfig {
+  LatchPolicy latch = LatchPolicy::PerScanline;
+  int latch_lead_cycles = 0;              // orientation sampled this many pixel clocks before the latch point
+  AaMode aa = AaMode::Bilinear;
+  int display_bits = 8;                   // per channel at the HMD (<= 10: frames are packed in 32 bits)
+  int64_t photon_delay_ps = 0;            // panel response after scan-out
+};
+
+struct ArpConfig {
+  VideoTimingConfig timing;
+  LensConfig lens;
+  DatapathWidths widths;
+  MemoryConfig memory;
+  PipelineConfig pipeline;
+};
+
+// One violated constraint: the dotted key path and the reason.
+struct ConfigIssue {
+  std::string key;
+  std::string reason;
+};
+
+// Every constraint a configuration must meet so no stage can overflow its
+// 64-bit arithmetic; an empty result means valid.
+std::vector<ConfigIssue> validate(const ArpConfig& c);
+
+}  // namespace arp::dp

@@ -1,0 +1,110 @@
+// One display memory: 6 faces x S x S texels of colour + depth, double
+// buffered. The host writes the back buffer and commits; the swap happens at
+// vertical blank. Storage is sparse in 32x32 tiles: a face or tile never
+// written costs no memory and reads as "empty" (depth code 2^depth_bits - 1).
+// A texel is one 64-bit word: colour in the low 32 bits (R:G:B packed,
+// red highest), depth in the high 32 bits.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "ArpConfig.hpp"
+
+namespace arp::dp {
+
+struct MemoryFormat {
+  int face_size = 512;
+  int red_bits = 8, green_bits = 8, blue_bits = 8, depth_bits = 16;
+  MemoryFormat() = default;
+  explicit MemoryFormat(const MemoryConfig& m)
+      : face_size(m.face_size), red_bits(m.red_bits), green_bits(m.green_bits), blue_bits(m.blue_bits),
+        depth_bits(m.depth_bits) {}
+  uint32_t empty_depth() const { return static_cast<uint32_t>((uint64_t{1} << depth_bits) - 1); }
+  uint64_t empty_word() const { return uint64_t{empty_depth()} << 32; }
+  int color_bits_total() const { return red_bits + green_bits + blue_bits; }
+  uint32_t pack_color(uint32_t r, uint32_t g, uint32_t b) const {
+    return (r << (green_bits + blue_bits)) | (g << blue_bits) | b;
+  }
+  // 8-bit channel -> channel code of the memory's width, rounded to nearest.
+  uint32_t pack_rgb8(int r8, int g8, int b8) const;
+};
+
+inline uint32_t texel_color(uint64_t w) { return static_cast<uint32_t>(w); }
+inline uint32_t texel_depth(uint64_t w) { return static_cast<uint32_t>(w >> 32); }
+
+class DisplayMemoryBank {
+ public:
+  static constexpr int kTileShift = 5;
+  static constexpr int kTile = 1 << kTileShift;
+
+  explicit DisplayMemoryBank(const MemoryFormat& f);
+  DisplayMemoryBank(const DisplayMemoryBank&) = delete;
+  DisplayMemoryBank& operator=(const DisplayMemoryBank&) = delete;
+
+  const MemoryFormat& format() const { return fmt_; }
+
+  // Host port (back buffer). Coordinates and codes are checked: out of range throws std::out_of_range.
+  void write(int face, int x, int y, uint32_t color, uint32_t depth);
+  uint64_t read_back(int face, int x, int y) const { return fetch(back_, face, x, y); }
+  void clear_back();  // the back buffer becomes empty and frees its tiles
+  void commit() { committed_ = true; }
+  bool committed() const { return committed_; }
+  // Vertical blank: swaps if the host has committed; returns whether it did.
+  bool vblank();
+
+  // Pipeline port (front buffer).
+  uint64_t read(int face, int x, int y) const { return fetch(front_, face, x, y); }
+  // Per-face tile table of the front buffer (never null: unwritten tiles point at a shared empty tile).
+  const uint64_t* const* front_tiles(int face) const { return table(front_, face); }
+  int tiles_per_row() const { return tiles_per_row_; }
+
+  size_t tiles_allocated() const;
+  size_t bytes_allocated() const;  // tile storage and per-face tables, both buffers
+
+ private:
+  struct Buffer {
+    std::array<std::vector<uint64_t*>, 6> tables;  // empty vector: face never written
+    std::vector<std::unique_ptr<uint64_t[]>> owned;
+  };
+  const uint64_t* const* table(int buf, int face) const {
+    const auto& t = buffers_[buf].tables[face];
+    return t.empty() ? empty_table_.data() : t.data();
+  }
+  uint64_t fetch(int buf, int face, int x, int y) const {
+    const uint64_t* tile = table(buf, face)[(y >> kTileShift) * tiles_per_row_ + (x >> kTileShift)];
+    return tile[((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1))];
+  }
+
+  MemoryFormat fmt_;
+  int tiles_per_row_;
+  std::unique_ptr<uint64_t[]> empty_tile_;
+  std::vector<uint64_t*> empty_table_;
+  std::array<Buffer, 2> buffers_;
+  int front_ = 0, back_ = 1;
+  bool committed_ = false;
+};
+
+// The memories of a whole HMD: for each eye (its cube rendered from that eye's
+// position), `count` banks. Memory 0 is the fastest-updated.
+class DisplayMemorySet {
+ public:
+  DisplayMemorySet(const MemoryConfig& m, int eyes);
+  int eyes() const { return eyes_; }
+  int count() const { return count_; }
+  const MemoryFormat& format() const { return fmt_; }
+  DisplayMemoryBank& bank(int eye, int memory) { return *banks_[static_cast<size_t>(eye * count_ + memory)]; }
+  const DisplayMemoryBank& bank(int eye, int memory) const {
+    return *banks_[static_cast<size_t>(eye * count_ + memory)];
+  }
+  void vblank();  // every bank
+  size_t bytes_allocated() const;
+
+ private:
+  MemoryFormat fmt_;
+  int eyes_, count_;
+  std::vector<std::unique_ptr<DisplayMemoryBank>> banks_;
+};
+
+}  // namespace arp::dp

@@ -1,0 +1,36 @@
+// HMD scan-out: memory colour codes -> display colour (display_bits per
+// channel, rescaled with rounding through per-channel tables), and each
+// pixel's photon time: its scan-out cycle in picoseconds plus the panel's delay.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "ArpConfig.hpp"
+#include "DisplayMemoryBank.hpp"
+#include "VideoTiming.hpp"
+
+namespace arp::dp {
+
+class HmdScanOut {
+ public:
+  HmdScanOut(const MemoryFormat& f, const PipelineConfig& p);
+  int display_bits() const { return bits_; }
+  // Display pixel, packed R:G:B with display_bits each (red highest).
+  uint32_t to_display(uint32_t color) const {
+    if (identity_) return color;
+    return (lut_[0][(color >> sh_[0]) & mk_[0]] << (2 * bits_)) | (lut_[1][(color >> sh_[1]) & mk_[1]] << bits_) |
+           lut_[2][(color >> sh_[2]) & mk_[2]];
+  }
+  static int64_t photon_time_ps(const VideoTiming& t, const PipelineConfig& p, int64_t frame, int eye, int x, int y) {
+    return t.cycles_to_ps(t.pixel_cycle(frame, eye, x, y)) + p.photon_delay_ps;
+  }
+
+ private:
+  int bits_;
+  bool identity_;
+  int sh_[3];
+  uint32_t mk_[3];
+  std::vector<uint32_t> lut_[3];
+};
+
+}  // namespace arp::dp

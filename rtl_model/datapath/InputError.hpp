@@ -1,0 +1,27 @@
+// The one error type for bad input anywhere in arpsim: it names the source
+// (file, option, device), the place inside it, and the reason.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace arp {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string source, std::string place, std::string reason)
+      : std::runtime_error(compose(source, place, reason)),
+        source_(std::move(source)), place_(std::move(place)), reason_(std::move(reason)) {}
+  const std::string& source() const { return source_; }
+  const std::string& place() const { return place_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  static std::string compose(const std::string& s, const std::string& p, const std::string& r) {
+    std::string m = s.empty() ? std::string("input") : s;
+    if (!p.empty()) m += ": " + p;
+    return m + ": " + r;
+  }
+  std::string source_, place_, reason_;
+};
+
+}  // namespace arp

@@ -1,0 +1,81 @@
+#include "OrientationMatrixUnit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "InputError.hpp"
+
+namespace arp::dp {
+
+Quat normalised(const Quat& q, const std::string& source) {
+  const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+  if (!std::isfinite(q.w) || !std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+    throw InputError(source, "quaternion", "has a NaN or infinite component");
+  if (!(n2 > 1e-24) || !std::isfinite(n2))
+    throw InputError(source, "quaternion", "has zero (or unrepresentable) length; a rotation needs a non-zero quaternion");
+  const double inv = 1.0 / std::sqrt(n2);
+  return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
+}
+
+static Quat mul(const Quat& a, const Quat& b) {
+  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+
+Quat from_yaw_pitch_roll_deg(double yaw, double pitch, double roll) {
+  const double k = M_PI / 360.0;  // half angle in radians per degree
+  const Quat qy{std::cos(yaw * k), 0, std::sin(yaw * k), 0};
+  const Quat qp{std::cos(pitch * k), std::sin(pitch * k), 0, 0};
+  const Quat qr{std::cos(roll * k), 0, 0, std::sin(roll * k)};
+  return mul(mul(qy, qp), qr);
+}
+
+Mat3q quantise_rotation(const Quat& q, int mat_frac) {
+  const double w = q.w, x = q.x, y = q.y, z = q.z;
+  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+                       2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                       2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
+  Mat3q m{};
+  for (int i = 0; i < 9; ++i) m.m[i] = static_cast<int32_t>(quantise_real(r[i], mat_frac, mat_frac + 2));
+  return m;
+}
+
+OrientationStream::OrientationStream(std::vector<OrientationSample> samples, const std::string& source)
+    : samples_(std::move(samples)) {
+  if (samples_.empty()) throw InputError(source, "", "no orientation samples");
+  for (size_t i = 0; i < samples_.size(); ++i) {
+    const std::string place = "sample " + std::to_string(i);
+    try {
+      samples_[i].q = normalised(samples_[i].q, source);
+    } catch (const InputError& e) {
+      throw InputError(source, place, e.reason());
+    }
+    if (i > 0 && samples_[i].time_ps < samples_[i - 1].time_ps)
+      throw InputError(source, place, "time " + std::to_string(samples_[i].time_ps) +
+                                           " ps is earlier than the previous sample's");
+  }
+}
+
+OrientationStream OrientationStream::constant(const Quat& q) {
+  return OrientationStream({OrientationSample{0, q}}, "constant orientation");
+}
+
+size_t OrientationStream::index_at(int64_t t_ps) const {
+  auto it = std::upper_bound(samples_.begin(), samples_.end(), t_ps,
+                             [](int64_t t, const OrientationSample& s) { return t < s.time_ps; });
+  return it == samples_.begin() ? 0 : static_cast<size_t>(it - samples_.begin()) - 1;
+}
+
+int64_t latch_cycle(const VideoTiming& t, LatchPolicy policy, int lead_cycles, int64_t frame, int eye, int x,
+                    int y) {
+  int64_t c = 0;
+  switch (policy) {
+    case LatchPolicy::PerFrame: c = t.frame_start_cycle(frame); break;
+    case LatchPolicy::PerField: c = t.field_start_cycle(frame, t.field_of_line(y)); break;
+    case LatchPolicy::PerScanline: c = t.line_start_cycle(frame, y); break;
+    case LatchPolicy::PerPixel: c = t.pixel_cycle(frame, eye, x, y); break;
+  }
+  return c - lead_cycles;
+}
+
+}  // namespace arp::dp

@@ -1,0 +1,85 @@
+// Orientation matrix unit: the orientation register (a 3x3 rotation, head
+// frame -> world/cube frame, signed Q1.mat_frac), the latch policy that picks
+// which tracker sample applies to which pixel, and the fixed-point
+// matrix-times-vector of the lens direction.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ArpConfig.hpp"
+#include "FixedPoint.hpp"
+#include "LensVectorTable.hpp"
+#include "VideoTiming.hpp"
+
+namespace arp::dp {
+
+struct Quat {
+  double w = 1, x = 0, y = 0, z = 0;
+};
+
+// Unit quaternion from any non-zero finite one; InputError naming `source` otherwise.
+Quat normalised(const Quat& q, const std::string& source);
+
+// Yaw about +y (positive turns left), then pitch about +x (positive looks up),
+// then roll about +z (positive tilts the head to the left): q = yaw * pitch * roll.
+Quat from_yaw_pitch_roll_deg(double yaw, double pitch, double roll);
+
+struct Mat3q {
+  int32_t m[9];  // row-major
+};
+
+// The value the tracker interface writes into the orientation register:
+// R(q) rounded half-even to Q1.mat_frac, saturated to mat_frac+2 bits.
+Mat3q quantise_rotation(const Quat& unit_q, int mat_frac);
+
+struct RotateParams {
+  RoundShift shift;   // from Q(mat_frac+vec_frac) products to Q(rot_frac)
+  SignedRange out;    // rot_frac + 2 bits
+  RotateParams() = default;
+  RotateParams(const DatapathWidths& w)
+      : shift(w.mat_frac + w.vec_frac - w.rot_frac, w.rot_rounding), out(w.rot_frac + 2) {}
+};
+
+// Three multiply-accumulate rows; 64-bit accumulators hold any valid widths
+// (<= 30 x 30-bit products, three terms).
+inline Vec3q rotate(const Mat3q& M, const Vec3q& v, const RotateParams& p) {
+  const int64_t sx = int64_t{M.m[0]} * v.x + int64_t{M.m[1]} * v.y + int64_t{M.m[2]} * v.z;
+  const int64_t sy = int64_t{M.m[3]} * v.x + int64_t{M.m[4]} * v.y + int64_t{M.m[5]} * v.z;
+  const int64_t sz = int64_t{M.m[6]} * v.x + int64_t{M.m[7]} * v.y + int64_t{M.m[8]} * v.z;
+  return {static_cast<int32_t>(p.out.clamp(p.shift.apply(sx))),
+          static_cast<int32_t>(p.out.clamp(p.shift.apply(sy))),
+          static_cast<int32_t>(p.out.clamp(p.shift.apply(sz)))};
+}
+
+// A timed orientation from the tracker.
+struct OrientationSample {
+  int64_t time_ps = 0;
+  Quat q;
+};
+
+// The orientation register's input: samples in non-decreasing time order.
+// Sample-and-hold: at time t the register holds the last sample at or before
+// t; before the first sample it holds the first (its reset value).
+class OrientationStream {
+ public:
+  OrientationStream() = default;
+  // Validates (finite, non-zero, time order) and normalises; InputError names `source` and the sample index.
+  OrientationStream(std::vector<OrientationSample> samples, const std::string& source);
+  static OrientationStream constant(const Quat& q);
+
+  size_t size() const { return samples_.size(); }
+  const OrientationSample& operator[](size_t i) const { return samples_[i]; }
+  size_t index_at(int64_t t_ps) const;
+
+ private:
+  std::vector<OrientationSample> samples_;
+};
+
+// The pixel-clock cycle at which the orientation register is sampled for
+// pixel (x, y) of `eye`: the start of its frame, field or scanline, or the
+// pixel itself, minus the pipeline's lead.
+int64_t latch_cycle(const VideoTiming& t, LatchPolicy policy, int lead_cycles, int64_t frame, int eye, int x,
+                    int y);
+
+}  // namespace arp::dp

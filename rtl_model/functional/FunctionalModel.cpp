@@ -1,0 +1,161 @@
+#include "FunctionalModel.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "rtl_model/datapath/InputError.hpp"
+
+namespace arp {
+
+using namespace dp;
+
+namespace {
+
+const ArpConfig& validated(const ArpConfig& c) {
+  const auto issues = validate(c);
+  if (!issues.empty()) throw InputError("configuration", issues.front().key, issues.front().reason);
+  return c;
+}
+
+struct Segment {
+  int x0, x1;     // [x0, x1)
+  size_t sample;  // orientation sample in the register for these pixels
+};
+
+// Splits one scanline into runs that see the same orientation sample. Only
+// the per-pixel latch can produce more than one run.
+void line_segments(const VideoTiming& t, const PipelineConfig& p, const OrientationStream& o, int64_t frame,
+                   int eye, int y, int width, std::vector<Segment>& out) {
+  out.clear();
+  auto sample_at = [&](int x) {
+    return o.index_at(t.cycles_to_ps(latch_cycle(t, p.latch, p.latch_lead_cycles, frame, eye, x, y)));
+  };
+  const size_t first = sample_at(0), last = sample_at(width - 1);
+  if (first == last) {
+    out.push_back({0, width, first});
+    return;
+  }
+  int x0 = 0;
+  size_t cur = first;
+  while (x0 < width) {
+    // First x in (x0, width) whose sample differs from cur; the sample index never decreases along a line.
+    int lo = x0 + 1, hi = width;
+    while (lo < hi) {
+      const int mid = lo + (hi - lo) / 2;
+      if (sample_at(mid) != cur) hi = mid; else lo = mid + 1;
+    }
+    out.push_back({x0, lo, cur});
+    if (lo < width) cur = sample_at(lo);
+    x0 = lo;
+  }
+}
+
+}  // namespace
+
+FunctionalModel::FunctionalModel(const ArpConfig& cfg)
+    : cfg_(validated(cfg)),
+      timing_(cfg.timing),
+      lens_(cfg.lens, cfg.timing, cfg.widths.vec_frac),
+      addr_(cfg.widths, cfg.memory.face_size),
+      rot_(cfg.widths),
+      fmt_(cfg.memory),
+      comp_(fmt_, cfg.memory.background),
+      layout_(fmt_),
+      scan_(fmt_, cfg.pipeline) {}
+
+void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStream& orientation, int64_t frame,
+                             HmdFrame& out, const RenderOptions& opt) const {
+  const auto& f = mem.format();
+  if (mem.eyes() != cfg_.timing.eyes || mem.count() != cfg_.memory.count || f.face_size != fmt_.face_size ||
+      f.red_bits != fmt_.red_bits || f.green_bits != fmt_.green_bits || f.blue_bits != fmt_.blue_bits ||
+      f.depth_bits != fmt_.depth_bits)
+    throw InputError("display memories", "", "eyes, count or format differ from the configuration");
+  if (orientation.size() == 0) throw InputError("orientation", "", "no orientation samples");
+  if (frame < 0) throw InputError("frame", "", "frame index must not be negative");
+  const bool bilinear = cfg_.pipeline.aa == AaMode::Bilinear;
+  if (cfg_.widths.divider == DividerKind::Exact) {
+    if (bilinear) render_impl<DividerKind::Exact, AaMode::Bilinear>(mem, orientation, frame, out, opt);
+    else render_impl<DividerKind::Exact, AaMode::Off>(mem, orientation, frame, out, opt);
+  } else {
+    if (bilinear) render_impl<DividerKind::ReciprocalLut, AaMode::Bilinear>(mem, orientation, frame, out, opt);
+    else render_impl<DividerKind::ReciprocalLut, AaMode::Off>(mem, orientation, frame, out, opt);
+  }
+}
+
+template <DividerKind D, AaMode A>
+void FunctionalModel::render_impl(const DisplayMemorySet& mem, const OrientationStream& orientation,
+                                  int64_t frame, HmdFrame& out, const RenderOptions& opt) const {
+  const int W = lens_.width(), H = lens_.height(), E = lens_.eyes(), N = mem.count();
+  const int32_t S = fmt_.face_size;
+  const int T = cfg_.widths.texel_frac;
+  const auto& pc = cfg_.pipeline;
+
+  // The orientation register can only hold samples between the frame's first
+  // latch and the start of the next frame; quantise each once.
+  const int64_t lead = pc.latch_lead_cycles;
+  const size_t s_lo = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame) - lead));
+  const size_t s_hi = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1) - lead));
+  std::vector<Mat3q> mats;
+  for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
+
+  std::vector<const uint64_t* const*> tables(static_cast<size_t>(E) * N * 6);
+  for (int e = 0; e < E; ++e)
+    for (int m = 0; m < N; ++m)
+      for (int face = 0; face < 6; ++face) tables[(static_cast<size_t>(e) * N + m) * 6 + face] = mem.bank(e, m).front_tiles(face);
+  const int tpr = mem.bank(0, 0).tiles_per_row();
+  constexpr int TS = DisplayMemoryBank::kTileShift;
+  constexpr int TM = DisplayMemoryBank::kTile - 1;
+
+  out.resize(W, H, E, opt.photon_times);
+  out.display_bits = scan_.display_bits();
+  out.frame_index = frame;
+  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<Segment> segs;
+    uint64_t words[16];
+#pragma omp for schedule(dynamic, 16)
+    for (int line = 0; line < E * H; ++line) {
+      const int eye = line / H, y = line % H;
+      const auto* tab = &tables[static_cast<size_t>(eye) * N * 6];
+      auto compose_at = [&](int face, int32_t tx, int32_t ty) {
+        const size_t ti = static_cast<size_t>((ty >> TS) * tpr + (tx >> TS));
+        const int wi = ((ty & TM) << TS) + (tx & TM);
+        for (int m = 0; m < N; ++m) words[m] = tab[m * 6 + face][ti][wi];
+        return compose(words, N, comp_).color;
+      };
+      const int32_t* lx = lens_.row_x(eye, y);
+      const int32_t* ly = lens_.row_y(eye, y);
+      const int32_t* lz = lens_.row_z(eye, y);
+      uint32_t* dst = &out.pixels[out.index(eye, 0, y)];
+      line_segments(timing_, pc, orientation, frame, eye, y, W, segs);
+      for (const Segment& sg : segs) {
+        const Mat3q M = mats[sg.sample - s_lo];
+        for (int x = sg.x0; x < sg.x1; ++x) {
+          const Vec3q r = rotate(M, Vec3q{lx[x], ly[x], lz[x]}, rot_);
+          const CubeAddress a = generate_address(r, addr_);
+          uint32_t c;
+          if constexpr (A == AaMode::Off) {
+            c = compose_at(a.face, a.x, a.y);
+          } else {
+            const BilinearTaps t = bilinear_taps(a.u, a.v, T, S);
+            c = bilinear_blend(compose_at(a.face, t.x0, t.y0), compose_at(a.face, t.x1, t.y0),
+                               compose_at(a.face, t.x0, t.y1), compose_at(a.face, t.x1, t.y1), t.wx, t.wy, T,
+                               layout_);
+          }
+          dst[x] = scan_.to_display(c);
+        }
+      }
+      if (opt.photon_times) {
+        int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];
+        for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(timing_, pc, frame, eye, x, y);
+      }
+    }
+  }
+}
+
+}  // namespace arp

@@ -1,0 +1,57 @@
+// Functional model: whole HMD frames from the display memories and a stream
+// of timed orientations, untimed and fast, calling only the datapath
+// functions. It says what the hardware computes, bit for bit.
+#pragma once
+#include <cstdint>
+
+#include "HmdFrame.hpp"
+#include "rtl_model/datapath/AntiAliasingFilter.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
+#include "rtl_model/datapath/CompositionUnit.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
+#include "rtl_model/datapath/HmdScanOut.hpp"
+#include "rtl_model/datapath/LensVectorTable.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
+
+namespace arp {
+
+struct RenderOptions {
+  int threads = 0;            // 0: all hardware threads
+  bool photon_times = false;  // fill HmdFrame::photon_ps
+};
+
+class FunctionalModel {
+ public:
+  // Validates the configuration; InputError("configuration", key, reason) on the first violation.
+  explicit FunctionalModel(const dp::ArpConfig& cfg);
+
+  const dp::ArpConfig& config() const { return cfg_; }
+  const dp::VideoTiming& timing() const { return timing_; }
+  const dp::LensVectorTable& lens() const { return lens_; }
+  const dp::AddressGeneratorParams& address_params() const { return addr_; }
+  const dp::RotateParams& rotate_params() const { return rot_; }
+
+  // Renders frame `frame` (its timing decides which orientation samples
+  // apply). The memory set must have this configuration's eyes, count and format.
+  void render(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation, int64_t frame,
+              HmdFrame& out, const RenderOptions& opt = {}) const;
+
+ private:
+  template <dp::DividerKind D, dp::AaMode A>
+  void render_impl(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation, int64_t frame,
+                   HmdFrame& out, const RenderOptions& opt) const;
+
+  dp::ArpConfig cfg_;
+  dp::VideoTiming timing_;
+  dp::LensVectorTable lens_;
+  dp::AddressGeneratorParams addr_;
+  dp::RotateParams rot_;
+  dp::MemoryFormat fmt_;
+  dp::CompositionParams comp_;
+  dp::ChannelLayout layout_;
+  dp::HmdScanOut scan_;
+};
+
+}  // namespace arp
