@@ -23,8 +23,10 @@ int run_verify(VerifyArgs& a) {
   a.opt.directed = !a.no_directed;
   const auto t0 = std::chrono::steady_clock::now();
   if (!a.quiet)
-    a.opt.progress = [t0](const char* stage, double f) {
+    a.opt.progress = [t0, last = -1.0](const char* stage, double f) mutable {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (f < 1.0 && s - last < 0.25) return;  // a readable rate
+      last = s;
       const double eta = f > 0 ? s * (1.0 - f) / f : 0.0;
       std::fprintf(stderr, "\rverify: %-8s %5.1f%%  elapsed %5.1f s  ETA %5.1f s ", stage, 100.0 * f, s, eta);
       if (f >= 1.0) std::fprintf(stderr, "\n");

@@ -8,13 +8,8 @@ const char* face_name(int face) {
 }
 
 AddressGeneratorParams::AddressGeneratorParams(const DatapathWidths& w, int S)
-    : divider(w.divider),
-      div_rounding(w.div_rounding),
-      texel_rounding(w.texel_rounding),
-      quot_frac(w.quot_frac),
-      texel_frac(w.texel_frac),
-      face_size(S),
-      max_pos((int64_t{S} << w.texel_frac) - 1),
+    : AddressArith{w.divider, ReciprocalParams{}, RoundingSel(w.div_rounding), RoundingSel(w.texel_rounding),
+                   w.quot_frac, w.texel_frac, S, (int64_t{S} << w.texel_frac) - 1},
       table_(build_reciprocal_table(w.recip_index_bits, w.recip_frac_bits)) {
   recip.lut = table_.data();
   recip.index_bits = w.recip_index_bits;

@@ -32,26 +32,26 @@ struct CubeAddress {
   int64_t u, v;     // texel-space position s*S, t*S as Q.texel_frac (for bilinear)
 };
 
-// Everything the generator needs, built once from the configuration.
-class AddressGeneratorParams {
- public:
-  AddressGeneratorParams(const DatapathWidths& w, int face_size);
-  AddressGeneratorParams(const AddressGeneratorParams& o) : AddressGeneratorParams(o, 0) {}
-  AddressGeneratorParams& operator=(const AddressGeneratorParams&) = delete;
+// The generator's scalar parameters (plain data, cheap to copy into a loop).
+struct AddressArith {
   DividerKind divider;
-  ReciprocalParams recip;
+  ReciprocalParams recip;  // recip.lut points into the owning AddressGeneratorParams
   RoundingSel div_rounding, texel_rounding;
   int quot_frac, texel_frac;
   int64_t face_size;
   int64_t max_pos;  // S * 2^texel_frac - 1
+};
 
- private:
-  AddressGeneratorParams(const AddressGeneratorParams& o, int)
-      : divider(o.divider), recip(o.recip), div_rounding(o.div_rounding), texel_rounding(o.texel_rounding),
-        quot_frac(o.quot_frac), texel_frac(o.texel_frac), face_size(o.face_size), max_pos(o.max_pos),
-        table_(o.table_) {
+// Everything the generator needs, built once from the configuration; owns the reciprocal table.
+class AddressGeneratorParams : public AddressArith {
+ public:
+  AddressGeneratorParams(const DatapathWidths& w, int face_size);
+  AddressGeneratorParams(const AddressGeneratorParams& o) : AddressArith(o), table_(o.table_) {
     recip.lut = table_.data();  // the copy owns its own table
   }
+  AddressGeneratorParams& operator=(const AddressGeneratorParams&) = delete;
+
+ private:
   std::vector<uint32_t> table_;
 };
 
@@ -60,32 +60,33 @@ struct FaceSelect {
   int64_t sc, tc, ma;  // ma = |major component|
 };
 
+// Branch-free (selects only) so a line of pixels vectorises.
 inline FaceSelect select_face(const Vec3q& r) {
-  const int64_t ax = r.x < 0 ? -int64_t{r.x} : r.x;
-  const int64_t ay = r.y < 0 ? -int64_t{r.y} : r.y;
-  const int64_t az = r.z < 0 ? -int64_t{r.z} : r.z;
-  if (ax >= ay && ax >= az) {
-    return r.x >= 0 ? FaceSelect{kPosX, -int64_t{r.z}, -int64_t{r.y}, ax}
-                    : FaceSelect{kNegX, int64_t{r.z}, -int64_t{r.y}, ax};
-  }
-  if (ay >= az) {
-    return r.y >= 0 ? FaceSelect{kPosY, int64_t{r.x}, int64_t{r.z}, ay}
-                    : FaceSelect{kNegY, int64_t{r.x}, -int64_t{r.z}, ay};
-  }
-  return r.z >= 0 ? FaceSelect{kPosZ, int64_t{r.x}, -int64_t{r.y}, az}
-                  : FaceSelect{kNegZ, -int64_t{r.x}, -int64_t{r.y}, az};
+  const int64_t x = r.x, y = r.y, z = r.z;
+  const int64_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
+  const bool is_x = ax >= ay && ax >= az;
+  const bool is_y = !is_x && ay >= az;
+  const bool pos = is_x ? x >= 0 : (is_y ? y >= 0 : z >= 0);
+  // +X: -z,-y  -X: z,-y  +Y: x,z  -Y: x,-z  +Z: x,-y  -Z: -x,-y
+  const int64_t sc = is_x ? (pos ? -z : z) : (is_y ? x : (pos ? x : -x));
+  const int64_t tc = is_x ? -y : (is_y ? (pos ? z : -z) : -y);
+  const int64_t ma = is_x ? ax : (is_y ? ay : az);
+  const int axis = is_x ? 0 : (is_y ? 1 : 2);
+  return {static_cast<uint8_t>(2 * axis + (pos ? 0 : 1)), sc, tc, ma};
 }
 
 // Face coordinate quotient Q1.quot_frac -> texel-space position Q.texel_frac, clamped to the face.
-inline int64_t quotient_to_position(int64_t q, const AddressGeneratorParams& p) {
+inline int64_t quotient_to_position(int64_t q, const AddressArith& p) {
   const int64_t one = int64_t{1} << p.quot_frac;
-  q = q < -one ? -one : (q > one ? one : q);
+  q = q > -one ? q : -one;
+  q = q < one ? q : one;
   int64_t pos = rshift_round((q + one) * p.face_size, p.quot_frac + 1 - p.texel_frac, p.texel_rounding.half_sel,
                              p.texel_rounding.even);
-  return pos < 0 ? 0 : (pos > p.max_pos ? p.max_pos : pos);
+  pos = pos > 0 ? pos : 0;
+  return pos < p.max_pos ? pos : p.max_pos;
 }
 
-inline CubeAddress generate_address(const Vec3q& r, const AddressGeneratorParams& p) {
+inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p) {
   const FaceSelect f = select_face(r);
   int64_t qs = 0, qt = 0;
   if (f.ma > 0) {

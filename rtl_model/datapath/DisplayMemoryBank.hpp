@@ -59,6 +59,9 @@ class DisplayMemoryBank {
   // Per-face tile table of the front buffer (never null: unwritten tiles point at a shared empty tile).
   const uint64_t* const* front_tiles(int face) const { return table(front_, face); }
   int tiles_per_row() const { return tiles_per_row_; }
+  // Whether any texel of this face of the front buffer was written (an
+  // unwritten face reads empty everywhere and can never win composition).
+  bool front_face_written(int face) const { return !buffers_[front_].tables[face].empty(); }
 
   size_t tiles_allocated() const;
   size_t bytes_allocated() const;  // tile storage and per-face tables, both buffers

@@ -17,27 +17,28 @@ enum class Rounding : uint8_t {
 std::string to_string(Rounding r);
 bool parse_rounding(const std::string& s, Rounding& out);
 
-// Precomputed constants of a rounding right shift so the per-pixel cost is
-// one add, one and, one shift: r = (v + bias + (((v >> shift) & 1) & even)) >> shift.
+// Precomputed constants of a rounding shift so the per-pixel cost is a few
+// branch-free operations: r = ((v << left) + bias + (((v << left) >> right) & even)) >> right.
+// A negative shift amount is an exact left shift.
 struct RoundShift {
-  int shift = 0;
+  int left = 0, right = 0;
   int64_t bias = 0;
   int64_t even = 0;  // 1 for HalfEven, else 0
 
   RoundShift() = default;
-  RoundShift(int shift_bits, Rounding mode) : shift(shift_bits) {
-    if (shift <= 0) return;
-    const int64_t half = int64_t{1} << (shift - 1);
+  RoundShift(int shift_bits, Rounding mode)
+      : left(shift_bits < 0 ? -shift_bits : 0), right(shift_bits > 0 ? shift_bits : 0) {
+    if (right == 0) return;
+    const int64_t half = int64_t{1} << (right - 1);
     switch (mode) {
       case Rounding::Floor: bias = 0; break;
       case Rounding::HalfUp: bias = half; break;
       case Rounding::HalfEven: bias = half - 1; even = 1; break;
     }
   }
-  // shift <= 0 means a left shift by -shift (exact).
   constexpr int64_t apply(int64_t v) const {
-    if (shift <= 0) return static_cast<int64_t>(static_cast<uint64_t>(v) << (-shift));
-    return (v + bias + ((v >> shift) & even)) >> shift;
+    const int64_t w = static_cast<int64_t>(static_cast<uint64_t>(v) << left);
+    return (w + bias + ((w >> right) & even)) >> right;
   }
 };
 
@@ -47,7 +48,10 @@ struct SignedRange {
   SignedRange() = default;
   explicit SignedRange(int bits)
       : lo(-(int64_t{1} << (bits - 1))), hi((int64_t{1} << (bits - 1)) - 1) {}
-  constexpr int64_t clamp(int64_t v) const { return v < lo ? lo : (v > hi ? hi : v); }
+  constexpr int64_t clamp(int64_t v) const {
+    const int64_t a = v > lo ? v : lo;  // written as max then min so loops vectorise
+    return a < hi ? a : hi;
+  }
   constexpr bool contains(int64_t v) const { return v >= lo && v <= hi; }
 };
 

@@ -10,12 +10,15 @@
 
 namespace arp::dp {
 
-// v >> s with the given rounding (s may be <= 0: exact left shift).
+// v >> s with the given rounding (s may be <= 0: exact left shift), branch-free.
 // half_sel is 1 for the round-to-nearest modes, even is 1 for HalfEven.
-inline int64_t rshift_round(int64_t v, int s, int64_t half_sel, int64_t even) {
-  if (s <= 0) return static_cast<int64_t>(static_cast<uint64_t>(v) << (-s));
-  const int64_t bias = half_sel * ((int64_t{1} << (s - 1)) - even);
-  return (v + bias + ((v >> s) & even)) >> s;
+inline int64_t rshift_round(int64_t v, int64_t s, int64_t half_sel, int64_t even) {
+  const int64_t left = s < 0 ? -s : 0, right = s > 0 ? s : 0;
+  const int64_t w = static_cast<int64_t>(static_cast<uint64_t>(v) << left);
+  const int64_t on = right > 0 ? 1 : 0;  // no fraction bits dropped: nothing to round
+  const int64_t ev = even & on;
+  const int64_t half = on * (int64_t{1} << (right - on));  // 2^(right-1), written so GCC vectorises it
+  return (w + half_sel * (half - ev) + ((w >> right) & ev)) >> right;
 }
 
 struct RoundingSel {

@@ -64,7 +64,21 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
       fmt_(cfg.memory),
       comp_(fmt_, cfg.memory.background),
       layout_(fmt_),
-      scan_(fmt_, cfg.pipeline) {}
+      scan_(fmt_, cfg.pipeline) {
+  const auto& w = cfg_.widths;
+  if (w.divider == DividerKind::ReciprocalLut && w.rot_frac <= 15 && w.recip_frac_bits <= 30) {
+    const size_t domain = size_t{1} << (w.rot_frac + 1);  // |major| < 2^(rot_frac+1)
+    memo_y_.resize(domain);
+    memo_n_.resize(domain);
+    for (size_t m = 0; m < domain; ++m) {
+      const Reciprocal r = reciprocal(static_cast<int64_t>(m), addr_.recip);
+      memo_y_[m] = static_cast<uint32_t>(r.y);
+      memo_n_[m] = r.n;
+    }
+    memo_.y = memo_y_.data();
+    memo_.n = memo_n_.data();
+  }
+}
 
 void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStream& orientation, int64_t frame,
                              HmdFrame& out, const RenderOptions& opt) const {
@@ -101,13 +115,20 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   std::vector<Mat3q> mats;
   for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
 
-  std::vector<const uint64_t* const*> tables(static_cast<size_t>(E) * N * 6);
-  for (int e = 0; e < E; ++e)
-    for (int m = 0; m < N; ++m)
-      for (int face = 0; face < 6; ++face) tables[(static_cast<size_t>(e) * N + m) * 6 + face] = mem.bank(e, m).front_tiles(face);
-  const int tpr = mem.bank(0, 0).tiles_per_row();
-  constexpr int TS = DisplayMemoryBank::kTileShift;
-  constexpr int TM = DisplayMemoryBank::kTile - 1;
+  // Per eye, the memories holding anything (see passes::EyeSources).
+  std::vector<passes::EyeSources> sources(static_cast<size_t>(E));
+  for (int e = 0; e < E; ++e) {
+    passes::EyeSources& es = sources[static_cast<size_t>(e)];
+    es.tiles_per_row = mem.bank(e, 0).tiles_per_row();
+    for (int m = 0; m < N; ++m) {
+      const DisplayMemoryBank& b = mem.bank(e, m);
+      bool any = false;
+      for (int face = 0; face < 6; ++face) any = any || b.front_face_written(face);
+      if (!any) continue;
+      for (int face = 0; face < 6; ++face) es.tables[face][es.count] = b.front_tiles(face);
+      ++es.count;
+    }
+  }
 
   out.resize(W, H, E, opt.photon_times);
   out.display_bits = scan_.display_bits();
@@ -117,39 +138,34 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 #pragma omp parallel num_threads(threads)
   {
     std::vector<Segment> segs;
-    uint64_t words[16];
+    std::vector<int32_t> rx(static_cast<size_t>(W)), ry(rx.size()), rz(rx.size());
+    std::vector<uint8_t> face(rx.size());
+    std::vector<int64_t> u(rx.size()), v(rx.size());
+    std::vector<uint32_t> c00, c10, c01, c11, wx, wy;
+    if constexpr (A == AaMode::Bilinear) {
+      for (auto* b : {&c00, &c10, &c01, &c11, &wx, &wy}) b->resize(rx.size());
+    }
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < E * H; ++line) {
       const int eye = line / H, y = line % H;
-      const auto* tab = &tables[static_cast<size_t>(eye) * N * 6];
-      auto compose_at = [&](int face, int32_t tx, int32_t ty) {
-        const size_t ti = static_cast<size_t>((ty >> TS) * tpr + (tx >> TS));
-        const int wi = ((ty & TM) << TS) + (tx & TM);
-        for (int m = 0; m < N; ++m) words[m] = tab[m * 6 + face][ti][wi];
-        return compose(words, N, comp_).color;
-      };
-      const int32_t* lx = lens_.row_x(eye, y);
-      const int32_t* ly = lens_.row_y(eye, y);
-      const int32_t* lz = lens_.row_z(eye, y);
-      uint32_t* dst = &out.pixels[out.index(eye, 0, y)];
+      const passes::EyeSources& src = sources[static_cast<size_t>(eye)];
       line_segments(timing_, pc, orientation, frame, eye, y, W, segs);
-      for (const Segment& sg : segs) {
-        const Mat3q M = mats[sg.sample - s_lo];
-        for (int x = sg.x0; x < sg.x1; ++x) {
-          const Vec3q r = rotate(M, Vec3q{lx[x], ly[x], lz[x]}, rot_);
-          const CubeAddress a = generate_address(r, addr_);
-          uint32_t c;
-          if constexpr (A == AaMode::Off) {
-            c = compose_at(a.face, a.x, a.y);
-          } else {
-            const BilinearTaps t = bilinear_taps(a.u, a.v, T, S);
-            c = bilinear_blend(compose_at(a.face, t.x0, t.y0), compose_at(a.face, t.x1, t.y0),
-                               compose_at(a.face, t.x0, t.y1), compose_at(a.face, t.x1, t.y1), t.wx, t.wy, T,
-                               layout_);
-          }
-          dst[x] = scan_.to_display(c);
-        }
+      for (const Segment& sg : segs)
+        passes::rotate_line(mats[sg.sample - s_lo], lens_.row_x(eye, y), lens_.row_y(eye, y), lens_.row_z(eye, y),
+                            sg.x0, sg.x1, rot_, rx.data(), ry.data(), rz.data());
+      if constexpr (D == DividerKind::ReciprocalLut)
+        passes::address_line_lut(rx.data(), ry.data(), rz.data(), W, addr_, memo_, face.data(), u.data(), v.data());
+      else
+        passes::address_line_exact(rx.data(), ry.data(), rz.data(), W, addr_, face.data(), u.data(), v.data());
+      uint32_t* dst = &out.pixels[out.index(eye, 0, y)];
+      if constexpr (A == AaMode::Off) {
+        passes::compose_nearest_line(src, face.data(), u.data(), v.data(), W, T, comp_, dst);
+      } else {
+        passes::compose_bilinear_line(src, face.data(), u.data(), v.data(), W, T, S, comp_, c00.data(), c10.data(),
+                                      c01.data(), c11.data(), wx.data(), wy.data());
+        passes::blend_line(c00.data(), c10.data(), c01.data(), c11.data(), wx.data(), wy.data(), W, T, layout_, dst);
       }
+      for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(dst[x]);
       if (opt.photon_times) {
         int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];
         for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(timing_, pc, frame, eye, x, y);

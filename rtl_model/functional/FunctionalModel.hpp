@@ -3,8 +3,10 @@
 // functions. It says what the hardware computes, bit for bit.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "HmdFrame.hpp"
+#include "LinePasses.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/CompositionUnit.hpp"
@@ -52,6 +54,10 @@ class FunctionalModel {
   dp::CompositionParams comp_;
   dp::ChannelLayout layout_;
   dp::HmdScanOut scan_;
+  // dp::reciprocal tabulated over its whole input domain (see LinePasses.hpp).
+  std::vector<uint32_t> memo_y_;
+  std::vector<int32_t> memo_n_;
+  passes::ReciprocalMemo memo_;
 };
 
 }  // namespace arp

@@ -48,8 +48,14 @@ struct WorstCase {
   double golden_uv[2] = {0, 0}, datapath_uv[2] = {0, 0};
 };
 
+// Pixels where datapath and golden address the same face; pixels at a cube
+// edge where they pick different faces (a near-tie decided differently by
+// the fixed-point inputs) can show a different texel entirely and are
+// counted apart, with their own maximum.
 struct ColorStats {
   uint64_t pixels = 0;
+  uint64_t edge_pixels = 0;      // face differs
+  double edge_max_error = 0.0;
   double max_error = 0.0;        // display LSBs, largest channel difference
   double mean_error = 0.0;
   uint64_t exact = 0;            // pixels whose rounded golden colour equals the datapath's

@@ -1,0 +1,137 @@
+// Functional-model throughput (display pixels per second) on the default
+// stereo configuration, nearest and bilinear, 1 and 2 threads, with one or
+// all four display memories filled; and in the same run a STREAM-style copy,
+// the machine's memory-bandwidth bound. The summary prints each frame
+// benchmark's distance to that bound: the model must at least read each
+// pixel's lens vector (3 x 4 bytes) and write its colour (4 bytes).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+namespace {
+
+using namespace arp;
+
+constexpr double kCompulsoryBytesPerPixel = 16.0;
+
+// A head turning at 200 deg/s, sampled at 1 kHz, over the benchmarked frame.
+dp::OrientationStream turning_head() {
+  std::vector<dp::OrientationSample> s;
+  for (int i = 0; i <= 40; ++i) {
+    const double t = i * 1e-3;
+    s.push_back({static_cast<int64_t>(t * 1e12), dp::from_yaw_pitch_roll_deg(20.0 + 200.0 * t, 10.0, 5.0)});
+  }
+  return dp::OrientationStream(s, "benchmark");
+}
+
+struct Fixture {
+  dp::ArpConfig cfg;
+  std::unique_ptr<FunctionalModel> model;
+  std::unique_ptr<dp::DisplayMemorySet> mem;
+  dp::OrientationStream orientation = turning_head();
+  HmdFrame frame;
+};
+
+Fixture& fixture(bool bilinear, int filled) {
+  static std::map<std::pair<bool, int>, std::unique_ptr<Fixture>> cache;
+  auto& f = cache[{bilinear, filled}];
+  if (!f) {
+    f = std::make_unique<Fixture>();
+    f->cfg.pipeline.aa = bilinear ? dp::AaMode::Bilinear : dp::AaMode::Off;
+    f->model = std::make_unique<FunctionalModel>(f->cfg);
+    f->mem = std::make_unique<dp::DisplayMemorySet>(f->cfg.memory, f->cfg.timing.eyes);
+    const auto cm = host::make_calibration_pattern(f->cfg.memory.face_size);
+    for (int m = 0; m < filled; ++m)
+      host::load_into_memories(*f->mem, m, cm, host::far_depth(f->mem->format()) - static_cast<uint32_t>(m));
+  }
+  return *f;
+}
+
+void BM_FunctionalFrame(benchmark::State& state) {
+  const bool bilinear = state.range(0) != 0;
+  const int threads = static_cast<int>(state.range(1));
+  const int filled = static_cast<int>(state.range(2));
+  Fixture& f = fixture(bilinear, filled);
+  RenderOptions ro;
+  ro.threads = threads;
+  for (auto _ : state) {
+    f.model->render(*f.mem, f.orientation, 0, f.frame, ro);
+    benchmark::DoNotOptimize(f.frame.pixels.data());
+  }
+  const double px = static_cast<double>(f.frame.pixels.size());
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * px));
+  state.counters["Mpx/s"] = benchmark::Counter(px * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_FunctionalFrame)
+    ->ArgNames({"bilinear", "threads", "memories_filled"})
+    ->ArgsProduct({{0, 1}, {1, 2}, {1, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(0.5);
+
+// STREAM "copy": a[i] = b[i] over arrays far larger than the caches; bytes
+// counted as STREAM does (read + write).
+void BM_StreamCopy(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  const size_t n = size_t{64} << 20;  // 64 Mi doubles = 512 MiB per array
+  static std::vector<double> a, b;
+  if (a.size() != n) {
+    a.assign(n, 1.0);
+    b.assign(n, 2.0);
+  }
+  for (auto _ : state) {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int64_t i = 0; i < static_cast<int64_t>(n); ++i) a[static_cast<size_t>(i)] = b[static_cast<size_t>(i)];
+    benchmark::DoNotOptimize(a.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(2 * n * sizeof(double)));
+}
+BENCHMARK(BM_StreamCopy)->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+// Collects rates while printing as usual, for the bandwidth summary.
+class SummaryReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& r : runs) {
+      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
+      const std::string name = r.benchmark_name();
+      auto it = r.counters.find("items_per_second");
+      if (it != r.counters.end()) frames[name] = it->second.value;
+      auto bt = r.counters.find("bytes_per_second");
+      if (bt != r.counters.end()) stream = std::max(stream, bt->second.value);
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  std::map<std::string, double> frames;
+  double stream = 0.0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  SummaryReporter rep;
+  benchmark::RunSpecifiedBenchmarks(&rep);
+  benchmark::Shutdown();
+  if (rep.stream > 0.0 && !rep.frames.empty()) {
+    const double bound = rep.stream / kCompulsoryBytesPerPixel;
+    std::printf("\nmemory-bandwidth bound: STREAM copy %.2f GB/s / %.0f B per pixel = %.0f M pixels/s\n",
+                rep.stream * 1e-9, kCompulsoryBytesPerPixel, bound * 1e-6);
+    std::printf("%-64s %12s %10s\n", "benchmark", "M pixels/s", "of bound");
+    for (const auto& [name, rate] : rep.frames)
+      std::printf("%-64s %12.1f %9.1f%%\n", name.c_str(), rate * 1e-6, 100.0 * rate / bound);
+  }
+  return 0;
+}
