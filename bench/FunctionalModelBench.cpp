@@ -104,8 +104,11 @@ class SummaryReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const auto& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
-      const std::string name = r.benchmark_name();
+      if (r.error_occurred) continue;
+      // Single runs, or the median when repetitions are aggregated.
+      const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
+      if (r.run_type != Run::RT_Iteration && !median) continue;
+      std::string name = r.run_name.str();
       auto it = r.counters.find("items_per_second");
       if (it != r.counters.end()) frames[name] = it->second.value;
       auto bt = r.counters.find("bytes_per_second");

@@ -3,7 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <cmath>
+#include <cstdlib>
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
@@ -32,15 +33,20 @@ struct FrameArgs {
 };
 
 dp::Quat parse_quat(const std::string& s) {
-  std::stringstream ss(s);
+  // strtod, not a stream: "nan" and "inf" must parse so the quaternion check can name them.
   double v[4];
-  char sep;
+  const char* p = s.c_str();
   for (int i = 0; i < 4; ++i) {
-    if (!(ss >> v[i])) throw InputError("--quat", "component " + std::to_string(i), "expected four numbers w,x,y,z");
-    if (i < 3 && !(ss >> sep && sep == ',')) throw InputError("--quat", "", "expected four comma-separated numbers w,x,y,z");
+    char* end = nullptr;
+    v[i] = std::strtod(p, &end);
+    if (end == p) throw InputError("--quat", "component " + std::to_string(i), "expected four comma-separated numbers w,x,y,z");
+    p = end;
+    if (i < 3) {
+      if (*p != ',') throw InputError("--quat", "component " + std::to_string(i), "expected four comma-separated numbers w,x,y,z");
+      ++p;
+    }
   }
-  std::string rest;
-  if (ss >> rest) throw InputError("--quat", "", "unexpected text after four numbers: " + rest);
+  if (*p != '\0') throw InputError("--quat", "", std::string("unexpected text after four numbers: ") + p);
   return dp::normalised(dp::Quat{v[0], v[1], v[2], v[3]}, "--quat");
 }
 

@@ -137,14 +137,15 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
 #pragma omp parallel num_threads(threads)
   {
+    // Per-thread line buffers, allocated once per frame.
+    const size_t w = static_cast<size_t>(W);
     std::vector<Segment> segs;
-    std::vector<int32_t> rx(static_cast<size_t>(W)), ry(rx.size()), rz(rx.size());
-    std::vector<uint8_t> face(rx.size());
-    std::vector<int64_t> u(rx.size()), v(rx.size());
-    std::vector<uint32_t> c00, c10, c01, c11, wx, wy;
-    if constexpr (A == AaMode::Bilinear) {
-      for (auto* b : {&c00, &c10, &c01, &c11, &wx, &wy}) b->resize(rx.size());
-    }
+    std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
+    std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
+    std::vector<uint64_t> words(4 * w);
+    std::vector<uint32_t> col(4 * w), wx(w), wy(w);
+    auto ref = [&](int tap) { return passes::TexelRef{&refs[(2 * tap) * w], &refs[(2 * tap + 1) * w]}; };
+    const int taps = A == AaMode::Bilinear ? 4 : 1;
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < E * H; ++line) {
       const int eye = line / H, y = line % H;
@@ -157,15 +158,27 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
         passes::address_line_lut(rx.data(), ry.data(), rz.data(), W, addr_, memo_, face.data(), u.data(), v.data());
       else
         passes::address_line_exact(rx.data(), ry.data(), rz.data(), W, addr_, face.data(), u.data(), v.data());
+      if constexpr (A == AaMode::Off)
+        passes::nearest_refs_line(u.data(), v.data(), W, T, src.tiles_per_row, ref(0));
+      else
+        passes::bilinear_refs_line(u.data(), v.data(), W, T, S, src.tiles_per_row, ref(0), ref(1), ref(2), ref(3),
+                                   wx.data(), wy.data());
+      for (int k = 0; k < taps; ++k) {
+        uint32_t* c = &col[static_cast<size_t>(k) * w];
+        if (src.count == 1) {  // one memory: fetch, then composite vectorised
+          passes::fetch_line(src, face.data(), ref(k), W, &words[static_cast<size_t>(k) * w]);
+          passes::compose1_line(&words[static_cast<size_t>(k) * w], W, comp_, c);
+        } else {
+          passes::fetch_compose_line(src, face.data(), ref(k), W, comp_, c);
+        }
+      }
       uint32_t* dst = &out.pixels[out.index(eye, 0, y)];
       if constexpr (A == AaMode::Off) {
-        passes::compose_nearest_line(src, face.data(), u.data(), v.data(), W, T, comp_, dst);
+        for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(col[static_cast<size_t>(x)]);
       } else {
-        passes::compose_bilinear_line(src, face.data(), u.data(), v.data(), W, T, S, comp_, c00.data(), c10.data(),
-                                      c01.data(), c11.data(), wx.data(), wy.data());
-        passes::blend_line(c00.data(), c10.data(), c01.data(), c11.data(), wx.data(), wy.data(), W, T, layout_, dst);
+        passes::blend_line(&col[0], &col[w], &col[2 * w], &col[3 * w], wx.data(), wy.data(), W, T, layout_, dst);
+        for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(dst[x]);
       }
-      for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(dst[x]);
       if (opt.photon_times) {
         int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];
         for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(timing_, pc, frame, eye, x, y);

@@ -10,6 +10,11 @@ using namespace arp::dp;
 #define ARP_VECTOR_CLONES
 #endif
 
+namespace {
+constexpr int TS = DisplayMemoryBank::kTileShift;
+constexpr int TM = DisplayMemoryBank::kTile - 1;
+}  // namespace
+
 ARP_VECTOR_CLONES
 void rotate_line(const Mat3q& Mref, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
                  const RotateParams& pref, int32_t* __restrict rx, int32_t* __restrict ry, int32_t* __restrict rz) {
@@ -25,8 +30,8 @@ void rotate_line(const Mat3q& Mref, const int32_t* lx, const int32_t* ly, const 
 
 ARP_VECTOR_CLONES
 void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n, const AddressGeneratorParams& pref,
-                      const ReciprocalMemo& memo_ref, uint8_t* __restrict face, int64_t* __restrict u,
-                      int64_t* __restrict v) {
+                      const ReciprocalMemo& memo_ref, int32_t* __restrict face, int32_t* __restrict u,
+                      int32_t* __restrict v) {
   const AddressArith p = pref;  // a local copy: the stores cannot alias it
   const int rf = p.recip.recip_frac, qf = p.quot_frac;
   const RoundingSel rs = p.div_rounding;
@@ -40,124 +45,118 @@ void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, i
       const int64_t qs = zero ? 0 : multiply_reciprocal(f.sc, rc, rf, qf, rs);
       const int64_t qt = zero ? 0 : multiply_reciprocal(f.tc, rc, rf, qf, rs);
       face[i] = f.face;
-      u[i] = quotient_to_position(qs, p);
-      v[i] = quotient_to_position(qt, p);
+      u[i] = static_cast<int32_t>(quotient_to_position(qs, p));
+      v[i] = static_cast<int32_t>(quotient_to_position(qt, p));
     }
   } else {
     for (int i = 0; i < n; ++i) {
       const CubeAddress a = generate_address(Vec3q{rx[i], ry[i], rz[i]}, p);
       face[i] = a.face;
-      u[i] = a.u;
-      v[i] = a.v;
+      u[i] = static_cast<int32_t>(a.u);
+      v[i] = static_cast<int32_t>(a.v);
     }
   }
 }
 
 void address_line_exact(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n, const AddressGeneratorParams& p,
-                        uint8_t* face, int64_t* u, int64_t* v) {
+                        int32_t* face, int32_t* u, int32_t* v) {
   for (int i = 0; i < n; ++i) {
     const CubeAddress a = generate_address(Vec3q{rx[i], ry[i], rz[i]}, p);
     face[i] = a.face;
-    u[i] = a.u;
-    v[i] = a.v;
+    u[i] = static_cast<int32_t>(a.u);
+    v[i] = static_cast<int32_t>(a.v);
+  }
+}
+
+namespace {
+ARP_VECTOR_CLONES
+void nearest_refs_impl(const int32_t* __restrict u, const int32_t* __restrict v, int n, int T, int tpr,
+                       int32_t* __restrict tile, int32_t* __restrict word) {
+  for (int i = 0; i < n; ++i) {
+    const int32_t tx = u[i] >> T, ty = v[i] >> T;  // the nearest texel: CubeAddress::x, y
+    tile[i] = (ty >> TS) * tpr + (tx >> TS);
+    word[i] = ((ty & TM) << TS) + (tx & TM);
+  }
+}
+}  // namespace
+
+void nearest_refs_line(const int32_t* u, const int32_t* v, int n, int T, int tpr, TexelRef out) {
+  nearest_refs_impl(u, v, n, T, tpr, out.tile, out.word);
+}
+
+namespace {
+// Plain restrict pointer parameters: GCC ignores restrict on local copies, and
+// without it cannot prove the ten output streams independent.
+ARP_VECTOR_CLONES
+void bilinear_refs_impl(const int32_t* __restrict u, const int32_t* __restrict v, int n, int T, int32_t S, int tpr,
+                        int32_t* __restrict a_t, int32_t* __restrict a_w, int32_t* __restrict b_t,
+                        int32_t* __restrict b_w, int32_t* __restrict c_t, int32_t* __restrict c_w,
+                        int32_t* __restrict d_t, int32_t* __restrict d_w, uint32_t* __restrict wx,
+                        uint32_t* __restrict wy) {
+  for (int i = 0; i < n; ++i) {
+    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
+    const int32_t r0 = (t.y0 >> TS) * tpr, r1 = (t.y1 >> TS) * tpr;
+    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
+    a_t[i] = r0 + (t.x0 >> TS); a_w[i] = q0 + (t.x0 & TM);
+    b_t[i] = r0 + (t.x1 >> TS); b_w[i] = q0 + (t.x1 & TM);
+    c_t[i] = r1 + (t.x0 >> TS); c_w[i] = q1 + (t.x0 & TM);
+    d_t[i] = r1 + (t.x1 >> TS); d_w[i] = q1 + (t.x1 & TM);
+    wx[i] = t.wx;
+    wy[i] = t.wy;
+  }
+}
+}  // namespace
+
+void bilinear_refs_line(const int32_t* u, const int32_t* v, int n, int T, int32_t S, int tpr, TexelRef t00, TexelRef t10,
+                        TexelRef t01, TexelRef t11, uint32_t* wx, uint32_t* wy) {
+  bilinear_refs_impl(u, v, n, T, S, tpr, t00.tile, t00.word, t10.tile, t10.word, t01.tile, t01.word, t11.tile, t11.word,
+                     wx, wy);
+}
+
+void fetch_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, uint64_t* __restrict words) {
+  const uint64_t* const* tabs[6];
+  for (int f = 0; f < 6; ++f) tabs[f] = src.tables[f][0];
+  for (int i = 0; i < n; ++i) words[i] = tabs[face[i]][ref.tile[i]][ref.word[i]];
+}
+
+ARP_VECTOR_CLONES
+void compose1_line(const uint64_t* words, int n, const CompositionParams& cpref, uint32_t* __restrict out) {
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) out[i] = compose(&words[i], 1, cp).color;
+}
+
+namespace {
+// K is the memory count when small enough to unroll; K == 0: src.count at run time.
+template <int K>
+void fetch_compose_k(const EyeSources& src, const int32_t* face, TexelRef ref, int n, const CompositionParams& cp,
+                     uint32_t* out) {
+  const int count = K > 0 ? K : src.count;
+  uint64_t w[16];
+  for (int i = 0; i < n; ++i) {
+    const auto* const* tabs = src.tables[face[i]];
+    for (int k = 0; k < count; ++k) w[k] = tabs[k][ref.tile[i]][ref.word[i]];
+    out[i] = compose(w, count, cp).color;
+  }
+}
+}  // namespace
+
+void fetch_compose_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, const CompositionParams& cp,
+                        uint32_t* out) {
+  switch (src.count) {
+    case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
+    case 1: fetch_compose_k<1>(src, face, ref, n, cp, out); break;
+    case 2: fetch_compose_k<2>(src, face, ref, n, cp, out); break;
+    case 3: fetch_compose_k<3>(src, face, ref, n, cp, out); break;
+    case 4: fetch_compose_k<4>(src, face, ref, n, cp, out); break;
+    default: fetch_compose_k<0>(src, face, ref, n, cp, out); break;
   }
 }
 
 ARP_VECTOR_CLONES
 void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11, const uint32_t* wx,
-                const uint32_t* wy, int n, int texel_frac, const ChannelLayout& L, uint32_t* out) {
+                const uint32_t* wy, int n, int texel_frac, const ChannelLayout& Lref, uint32_t* __restrict out) {
+  const ChannelLayout L = Lref;
   for (int i = 0; i < n; ++i) out[i] = bilinear_blend(c00[i], c10[i], c01[i], c11[i], wx[i], wy[i], texel_frac, L);
-}
-
-namespace {
-
-constexpr int TS = DisplayMemoryBank::kTileShift;
-constexpr int TM = DisplayMemoryBank::kTile - 1;
-
-// K is the memory count when it is small enough to unroll; K == 0 means "src.count at run time".
-template <int K>
-void nearest_k(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n, int T,
-               const CompositionParams& cp, uint32_t* out) {
-  const int count = K > 0 ? K : src.count;
-  const int tpr = src.tiles_per_row;
-  uint64_t w[16];
-  for (int i = 0; i < n; ++i) {
-    const int32_t tx = static_cast<int32_t>(u[i] >> T), ty = static_cast<int32_t>(v[i] >> T);
-    const size_t ti = static_cast<size_t>((ty >> TS) * tpr + (tx >> TS));
-    const int wi = ((ty & TM) << TS) + (tx & TM);
-    const auto* const* tabs = src.tables[face[i]];
-    for (int k = 0; k < count; ++k) w[k] = tabs[k][ti][wi];
-    out[i] = compose(w, count, cp).color;
-  }
-}
-
-template <int K>
-void bilinear_k(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n, int T, int32_t S,
-                const CompositionParams& cp, uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11, uint32_t* wx,
-                uint32_t* wy) {
-  const int count = K > 0 ? K : src.count;
-  const int tpr = src.tiles_per_row;
-  uint64_t w00[16], w10[16], w01[16], w11[16];
-  for (int i = 0; i < n; ++i) {
-    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
-    const auto* const* tabs = src.tables[face[i]];
-    const size_t t00 = static_cast<size_t>((t.y0 >> TS) * tpr + (t.x0 >> TS));
-    const int i00 = ((t.y0 & TM) << TS) + (t.x0 & TM), i10 = ((t.y0 & TM) << TS) + (t.x1 & TM);
-    const int i01 = ((t.y1 & TM) << TS) + (t.x0 & TM), i11 = ((t.y1 & TM) << TS) + (t.x1 & TM);
-    if ((t.x0 >> TS) == (t.x1 >> TS) && (t.y0 >> TS) == (t.y1 >> TS)) {
-      for (int k = 0; k < count; ++k) {  // all four taps in one tile: one tile lookup per memory
-        const uint64_t* tile = tabs[k][t00];
-        w00[k] = tile[i00]; w10[k] = tile[i10]; w01[k] = tile[i01]; w11[k] = tile[i11];
-      }
-    } else {
-      const size_t t10 = static_cast<size_t>((t.y0 >> TS) * tpr + (t.x1 >> TS));
-      const size_t t01 = static_cast<size_t>((t.y1 >> TS) * tpr + (t.x0 >> TS));
-      const size_t t11 = static_cast<size_t>((t.y1 >> TS) * tpr + (t.x1 >> TS));
-      for (int k = 0; k < count; ++k) {
-        w00[k] = tabs[k][t00][i00]; w10[k] = tabs[k][t10][i10]; w01[k] = tabs[k][t01][i01]; w11[k] = tabs[k][t11][i11];
-      }
-    }
-    c00[i] = compose(w00, count, cp).color;
-    c10[i] = compose(w10, count, cp).color;
-    c01[i] = compose(w01, count, cp).color;
-    c11[i] = compose(w11, count, cp).color;
-    wx[i] = t.wx;
-    wy[i] = t.wy;
-  }
-}
-
-}  // namespace
-
-void compose_nearest_line(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n, int T,
-                          const CompositionParams& cp, uint32_t* out) {
-  switch (src.count) {
-    case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
-    case 1: nearest_k<1>(src, face, u, v, n, T, cp, out); break;
-    case 2: nearest_k<2>(src, face, u, v, n, T, cp, out); break;
-    case 3: nearest_k<3>(src, face, u, v, n, T, cp, out); break;
-    case 4: nearest_k<4>(src, face, u, v, n, T, cp, out); break;
-    default: nearest_k<0>(src, face, u, v, n, T, cp, out); break;
-  }
-}
-
-void compose_bilinear_line(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n, int T,
-                           int32_t S, const CompositionParams& cp, uint32_t* c00, uint32_t* c10, uint32_t* c01,
-                           uint32_t* c11, uint32_t* wx, uint32_t* wy) {
-  switch (src.count) {
-    case 0:
-      for (int i = 0; i < n; ++i) {
-        const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
-        c00[i] = c10[i] = c01[i] = c11[i] = cp.background;
-        wx[i] = t.wx;
-        wy[i] = t.wy;
-      }
-      break;
-    case 1: bilinear_k<1>(src, face, u, v, n, T, S, cp, c00, c10, c01, c11, wx, wy); break;
-    case 2: bilinear_k<2>(src, face, u, v, n, T, S, cp, c00, c10, c01, c11, wx, wy); break;
-    case 3: bilinear_k<3>(src, face, u, v, n, T, S, cp, c00, c10, c01, c11, wx, wy); break;
-    case 4: bilinear_k<4>(src, face, u, v, n, T, S, cp, c00, c10, c01, c11, wx, wy); break;
-    default: bilinear_k<0>(src, face, u, v, n, T, S, cp, c00, c10, c01, c11, wx, wy); break;
-  }
 }
 
 }  // namespace arp::passes

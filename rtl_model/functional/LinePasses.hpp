@@ -3,6 +3,10 @@
 // can vectorise it; the result is bit-identical to calling the stages pixel by
 // pixel (tests/FunctionalModelTest proves it). Passes that vectorise are
 // compiled for x86-64-v4 (AVX-512) and a portable baseline, chosen at run time.
+//
+// Per line: rotate -> address (face, texel-space u, v) -> tap addresses ->
+// texel fetch (scalar: pointer-chasing through the sparse tile tables) ->
+// composition -> bilinear blend -> scan-out.
 #pragma once
 #include <cstdint>
 
@@ -22,22 +26,6 @@ struct ReciprocalMemo {
   bool valid() const { return y != nullptr; }
 };
 
-// Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors.
-void rotate_line(const dp::Mat3q& M, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
-                 const dp::RotateParams& p, int32_t* rx, int32_t* ry, int32_t* rz);
-
-// Cube-face address generator over a whole line: face and texel-space position (Q.texel_frac).
-void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
-                      const dp::AddressGeneratorParams& p, const ReciprocalMemo& memo, uint8_t* face, int64_t* u,
-                      int64_t* v);
-void address_line_exact(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
-                        const dp::AddressGeneratorParams& p, uint8_t* face, int64_t* u, int64_t* v);
-
-// Bilinear blend of four composited colours per pixel.
-void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
-                const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const dp::ChannelLayout& L,
-                uint32_t* out);
-
 // The display memories one eye composites, in index order: those with any
 // face written. A face a memory never wrote reads through the shared empty
 // table, so leaving out only wholly unwritten memories changes no result.
@@ -47,13 +35,42 @@ struct EyeSources {
   int tiles_per_row = 0;
 };
 
-// Composition unit at each pixel's nearest texel (AA off): composited colour per pixel.
-void compose_nearest_line(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n,
-                          int texel_frac, const dp::CompositionParams& cp, uint32_t* out);
+// Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors.
+void rotate_line(const dp::Mat3q& M, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
+                 const dp::RotateParams& p, int32_t* rx, int32_t* ry, int32_t* rz);
 
-// Composition at the four bilinear taps of each pixel, and the tap weights.
-void compose_bilinear_line(const EyeSources& src, const uint8_t* face, const int64_t* u, const int64_t* v, int n,
-                           int texel_frac, int32_t face_size, const dp::CompositionParams& cp, uint32_t* c00,
-                           uint32_t* c10, uint32_t* c01, uint32_t* c11, uint32_t* wx, uint32_t* wy);
+// Cube-face address generator over a line: face and texel-space position
+// (Q.texel_frac; below 2^30 for every valid configuration, so 32 bits).
+void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
+                      const dp::AddressGeneratorParams& p, const ReciprocalMemo& memo, int32_t* face, int32_t* u,
+                      int32_t* v);
+void address_line_exact(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
+                        const dp::AddressGeneratorParams& p, int32_t* face, int32_t* u, int32_t* v);
+
+// Where a texel lives: tile number within its face and word within the tile.
+struct TexelRef {
+  int32_t* tile;
+  int32_t* word;
+};
+
+// Nearest texel of each pixel.
+void nearest_refs_line(const int32_t* u, const int32_t* v, int n, int texel_frac, int tiles_per_row, TexelRef out);
+// The four bilinear taps of each pixel (00, 10, 01, 11) and their weights.
+void bilinear_refs_line(const int32_t* u, const int32_t* v, int n, int texel_frac, int32_t face_size,
+                        int tiles_per_row, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, uint32_t* wx,
+                        uint32_t* wy);
+
+// Texel words of the eye's only memory (src.count == 1).
+void fetch_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, uint64_t* words);
+// Composition unit over a single memory's words.
+void compose1_line(const uint64_t* words, int n, const dp::CompositionParams& cp, uint32_t* out);
+// Fetch from every memory of the eye and composite (any src.count).
+void fetch_compose_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n,
+                        const dp::CompositionParams& cp, uint32_t* out);
+
+// Bilinear blend of four composited colours per pixel.
+void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
+                const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const dp::ChannelLayout& L,
+                uint32_t* out);
 
 }  // namespace arp::passes

@@ -1,0 +1,119 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "TestSupport.hpp"
+#include "apps/config/ConfigFile.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+
+using namespace arp;
+using nlohmann::json;
+
+namespace {
+InputError error_of(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const InputError& e) {
+    return e;
+  }
+  return InputError("", "", "no error");
+}
+dp::ArpConfig parse(const std::string& text) { return config::from_json(json::parse(text), "test.json"); }
+}  // namespace
+
+TEST(ConfigFile, DefaultsAreTheBriefsAndRoundTrip) {
+  const dp::ArpConfig d;
+  EXPECT_TRUE(dp::validate(d).empty());
+  EXPECT_EQ(d.timing.eyes, 2);
+  EXPECT_EQ(d.timing.h_total(), 800);
+  EXPECT_EQ(d.timing.v_total(), 525);
+  EXPECT_EQ(d.timing.pixel_clock_hz, 25'175'000);
+  EXPECT_EQ(d.memory.count, 4);
+  EXPECT_EQ(d.memory.face_size, 512);
+  EXPECT_EQ(d.memory.color_bits(), 24);
+  EXPECT_EQ(d.memory.depth_bits, 16);
+  EXPECT_EQ(d.widths.vec_frac, 14);
+  EXPECT_EQ(d.widths.mat_frac, 14);
+  EXPECT_EQ(d.pipeline.latch, dp::LatchPolicy::PerScanline);
+  const json j = config::to_json(d);
+  EXPECT_EQ(config::to_json(config::from_json(j, "round trip")), j);
+}
+
+TEST(ConfigFile, EveryKeyIsDocumented) {
+  std::ifstream in(std::string(ARPSIM_SOURCE_DIR) + "/docs/configuration.md");
+  ASSERT_TRUE(in) << "docs/configuration.md missing";
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string doc = ss.str();
+  const json j = config::to_json(dp::ArpConfig{});
+  for (auto s = j.begin(); s != j.end(); ++s)
+    for (auto k = s.value().begin(); k != s.value().end(); ++k)
+      EXPECT_NE(doc.find("`" + s.key() + "." + k.key() + "`"), std::string::npos) << s.key() << "." << k.key();
+}
+
+TEST(ConfigFile, PartialFilesOverrideOnlyTheirKeys) {
+  const dp::ArpConfig c = parse(R"({"datapath": {"vec_frac": 12, "divider": "exact"}, "pipeline": {"latch": "pixel"}})");
+  EXPECT_EQ(c.widths.vec_frac, 12);
+  EXPECT_EQ(c.widths.divider, dp::DividerKind::Exact);
+  EXPECT_EQ(c.pipeline.latch, dp::LatchPolicy::PerPixel);
+  EXPECT_EQ(c.widths.mat_frac, 14);
+}
+
+TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
+  auto e = error_of([] { parse(R"({"display": {"h_activ": 640}})"); });
+  EXPECT_EQ(e.source(), "test.json");
+  EXPECT_EQ(e.place(), "display.h_activ");
+  EXPECT_EQ(e.reason(), "unknown key");
+  e = error_of([] { parse(R"({"displays": {}})"); });
+  EXPECT_EQ(e.place(), "displays");
+  e = error_of([] { parse(R"({"datapath": {"vec_frac": 0}})"); });
+  EXPECT_EQ(e.place(), "datapath.vec_frac");
+  EXPECT_NE(e.reason().find("[1, 28]"), std::string::npos);
+  e = error_of([] { parse(R"({"datapath": {"mat_frac": 29}})"); });
+  EXPECT_EQ(e.place(), "datapath.mat_frac");
+  e = error_of([] { parse(R"({"datapath": {"vec_frac": "14"}})"); });
+  EXPECT_NE(e.reason().find("integer"), std::string::npos);
+  e = error_of([] { parse(R"({"datapath": {"vec_frac": 14.5}})"); });
+  EXPECT_NE(e.reason().find("integer"), std::string::npos);
+  e = error_of([] { parse(R"({"lens": {"fov_deg": 180}})"); });
+  EXPECT_EQ(e.place(), "lens.fov_deg");
+  e = error_of([] { parse(R"({"lens": {"fov_deg": 0}})"); });
+  EXPECT_EQ(e.place(), "lens.fov_deg");
+  e = error_of([] { parse(R"({"lens": {"fov_deg": -10}})"); });
+  EXPECT_EQ(e.place(), "lens.fov_deg");
+  e = error_of([] { parse(R"({"lens": {"k": [1, 0, 0]}})"); });
+  EXPECT_EQ(e.place(), "lens.k");
+  e = error_of([] { parse(R"({"lens": {"k": [1, -5, 0, 0]}})"); });
+  EXPECT_NE(e.reason().find("not positive"), std::string::npos);
+  e = error_of([] { parse(R"({"pipeline": {"latch": "line"}})"); });
+  EXPECT_NE(e.reason().find("frame, field, scanline, pixel"), std::string::npos);
+  e = error_of([] { parse(R"({"memory": {"red_bits": 16, "green_bits": 16, "blue_bits": 1}})"); });
+  EXPECT_NE(e.reason().find("32"), std::string::npos);
+  e = error_of([] { parse(R"({"memory": {"face_size": 99999999999}})"); });
+  EXPECT_EQ(e.place(), "memory.face_size");
+  e = error_of([] { parse(R"({"pipeline": {"texel_frac": 0}})"); });
+  EXPECT_EQ(e.place(), "pipeline.texel_frac");
+  e = error_of([] { parse(R"({"datapath": {"texel_frac": 0}})"); });
+  EXPECT_NE(e.reason().find("bilinear"), std::string::npos);
+  e = error_of([] { parse(R"([1, 2])"); });
+  EXPECT_NE(e.reason().find("object"), std::string::npos);
+}
+
+TEST(ConfigFile, SyntaxErrorsGiveLineAndColumn) {
+  test::TempDir d;
+  std::ofstream(d.file("bad.json")) << "{\n  \"datapath\": {\n    \"vec_frac\": 12,\n  }\n}\n";
+  const InputError e = error_of([&] { config::load_file(d.file("bad.json")); });
+  EXPECT_EQ(e.source(), d.file("bad.json"));
+  EXPECT_NE(e.place().find("line 4"), std::string::npos) << e.what();
+  const InputError missing = error_of([&] { config::load_file(d.file("none.json")); });
+  EXPECT_NE(missing.reason().find("cannot open"), std::string::npos);
+}
+
+TEST(ConfigFile, OverridesSetOneKeyEach) {
+  const dp::ArpConfig c = config::apply_overrides(dp::ArpConfig{}, {"datapath.rot_rounding=half_even", "memory.count=2"});
+  EXPECT_EQ(c.widths.rot_rounding, dp::Rounding::HalfEven);
+  EXPECT_EQ(c.memory.count, 2);
+  EXPECT_THROW(config::apply_overrides(dp::ArpConfig{}, {"vec_frac=3"}), InputError);
+  EXPECT_THROW(config::apply_overrides(dp::ArpConfig{}, {"datapath.vec_frac=99"}), InputError);
+}

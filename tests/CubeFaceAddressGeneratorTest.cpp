@@ -1,0 +1,150 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "testbench/golden/GoldenReference.hpp"
+
+using namespace arp::dp;
+
+namespace {
+Vec3q q14(double x, double y, double z) {
+  return {static_cast<int32_t>(quantise_real(x, 14, 16)), static_cast<int32_t>(quantise_real(y, 14, 16)),
+          static_cast<int32_t>(quantise_real(z, 14, 16))};
+}
+}  // namespace
+
+TEST(CubeFaceAddressGenerator, AxisDirectionsHitFaceCentres) {
+  const AddressGeneratorParams p(DatapathWidths{}, 512);
+  const struct { Vec3q v; int face; } cases[] = {{q14(1, 0, 0), kPosX}, {q14(-1, 0, 0), kNegX}, {q14(0, 1, 0), kPosY},
+                                                 {q14(0, -1, 0), kNegY}, {q14(0, 0, 1), kPosZ}, {q14(0, 0, -1), kNegZ}};
+  for (const auto& c : cases) {
+    const CubeAddress a = generate_address(c.v, p);
+    EXPECT_EQ(a.face, c.face);
+    EXPECT_EQ(a.x, 256);
+    EXPECT_EQ(a.y, 256);
+    EXPECT_EQ(a.fx, 0u);
+    EXPECT_EQ(a.u, 256 << 8);
+  }
+}
+
+TEST(CubeFaceAddressGenerator, FollowsTheOpenGLTableOnEveryFace) {
+  // Each face, a direction off-centre toward +s and +t per the GL table, must land at s, t > 0.5.
+  const AddressGeneratorParams p(DatapathWidths{}, 512);
+  const double a = 0.3, b = 0.2;
+  const struct { double x, y, z; int face; } cases[] = {
+      {1, -b, -a, kPosX}, {-1, -b, a, kNegX}, {a, 1, b, kPosY}, {a, -1, -b, kNegY}, {a, -b, 1, kPosZ}, {-a, -b, -1, kNegZ}};
+  for (const auto& c : cases) {
+    const double n = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+    const CubeAddress ad = generate_address(q14(c.x / n, c.y / n, c.z / n), p);
+    EXPECT_EQ(ad.face, c.face);
+    EXPECT_NEAR(ad.u / 256.0, (a + 1) / 2 * 512, 0.1) << face_name(c.face);
+    EXPECT_NEAR(ad.v / 256.0, (b + 1) / 2 * 512, 0.1) << face_name(c.face);
+  }
+}
+
+TEST(CubeFaceAddressGenerator, TieRuleXBeforeYBeforeZOnEdgesAndCorners) {
+  const AddressGeneratorParams p(DatapathWidths{}, 512);
+  EXPECT_EQ(generate_address(Vec3q{1000, 1000, 0}, p).face, kPosX);
+  EXPECT_EQ(generate_address(Vec3q{-1000, 1000, 0}, p).face, kNegX);
+  EXPECT_EQ(generate_address(Vec3q{0, 1000, 1000}, p).face, kPosY);
+  EXPECT_EQ(generate_address(Vec3q{0, -1000, 1000}, p).face, kNegY);
+  EXPECT_EQ(generate_address(Vec3q{1000, 0, -1000}, p).face, kPosX);
+  EXPECT_EQ(generate_address(Vec3q{1000, 1000, 1000}, p).face, kPosX);
+  EXPECT_EQ(generate_address(Vec3q{-1000, -1000, -1000}, p).face, kNegX);
+  // On an edge the two faces meet at their shared border: s or t at the face edge.
+  const CubeAddress e = generate_address(Vec3q{9459, 9459, 9459}, p);  // corner, major 1/sqrt3
+  EXPECT_EQ(e.face, kPosX);
+  EXPECT_EQ(e.x, 0);     // sc = -z = -|ma| -> s = 0
+  EXPECT_EQ(e.y, 0);     // tc = -y -> t = 0
+  // Golden uses the same rule.
+  EXPECT_EQ(arp::golden::address(glm::dvec3(1, 1, 1), 512).face, kPosX);
+  EXPECT_EQ(arp::golden::address(glm::dvec3(0, -1, 1), 512).face, kNegY);
+  EXPECT_EQ(arp::golden::address(glm::dvec3(-0.0, 0.0, -0.0), 512).face, kPosX);
+}
+
+TEST(CubeFaceAddressGenerator, ZeroVectorAddressesTheFaceCentreWithoutDividingByZero) {
+  const AddressGeneratorParams p(DatapathWidths{}, 512);
+  const CubeAddress a = generate_address(Vec3q{0, 0, 0}, p);
+  EXPECT_EQ(a.face, kPosX);
+  EXPECT_EQ(a.x, 256);
+  DatapathWidths w;
+  w.divider = DividerKind::Exact;
+  EXPECT_EQ(generate_address(Vec3q{0, 0, 0}, AddressGeneratorParams(w, 512)).x, 256);
+}
+
+TEST(ReciprocalUnit, LutWithNewtonStepIsAccurateOverTheWholeRange) {
+  // Every major component a Q1.14 unit vector can have (1/sqrt3 .. 1 and
+  // beyond, up to the format's edge), and the values below it.
+  for (int newton : {0, 1, 2}) {
+    const auto table = build_reciprocal_table(8, 16);
+    ReciprocalParams p;
+    p.lut = table.data();
+    p.index_bits = 8;
+    p.recip_frac = 16;
+    p.newton_steps = newton;
+    p.rounding = RoundingSel(Rounding::HalfUp);
+    double worst = 0.0;
+    for (int64_t m = 1; m < 32768; ++m) {
+      const Reciprocal r = reciprocal(m, p);
+      const double got = std::ldexp(static_cast<double>(r.y), 1 - r.n - 16);  // 1/m in units of 2^-0
+      worst = std::max(worst, std::abs(got * static_cast<double>(m) - 1.0));
+    }
+    // A 256-entry midpoint table: relative error <= half an interval, 2^-9,
+    // plus the entry's own rounding (2^-17); a Newton step squares it, leaving
+    // the Q1.16 rounding of the result.
+    const double bound = newton == 0 ? std::ldexp(1.0, -9) + std::ldexp(1.0, -17) : std::ldexp(1.0, -14);
+    EXPECT_LE(worst, bound) << "newton steps " << newton;
+  }
+}
+
+TEST(ReciprocalUnit, ExactDividerRoundsAsConfigured) {
+  const RoundingSel up(Rounding::HalfUp), even(Rounding::HalfEven), fl(Rounding::Floor);
+  // 3/2 = 1.5 in Q.0: half up 2, half even 2, floor 1; 5/2 = 2.5: even 2.
+  EXPECT_EQ(divide_exact(3, 2, 0, up), 2);
+  EXPECT_EQ(divide_exact(3, 2, 0, even), 2);
+  EXPECT_EQ(divide_exact(3, 2, 0, fl), 1);
+  EXPECT_EQ(divide_exact(5, 2, 0, even), 2);
+  EXPECT_EQ(divide_exact(-3, 2, 0, up), -1);
+  EXPECT_EQ(divide_exact(-3, 2, 0, fl), -2);
+  EXPECT_EQ(divide_exact(-5, 2, 0, even), -2);
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int64_t> dm(9459, 16390), ds(-16390, 16390);
+  for (int i = 0; i < 100000; ++i) {
+    const int64_t m = dm(rng), s = ds(rng);
+    const long double q = std::ldexp(static_cast<long double>(s), 16) / static_cast<long double>(m);
+    ASSERT_EQ(divide_exact(s, m, 16, fl), static_cast<int64_t>(std::floor(q)));
+    ASSERT_LE(std::abs(static_cast<long double>(divide_exact(s, m, 16, up)) - q), 0.5L);
+  }
+}
+
+TEST(CubeFaceAddressGenerator, LutAndExactDividersAgreeWithinOneTexelFraction) {
+  DatapathWidths w;
+  const AddressGeneratorParams lut(w, 512);
+  w.divider = DividerKind::Exact;
+  const AddressGeneratorParams ex(w, 512);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n01;
+  int64_t worst = 0;
+  for (int i = 0; i < 200000; ++i) {
+    glm::dvec3 d = glm::normalize(glm::dvec3(n01(rng), n01(rng), n01(rng)));
+    const Vec3q v = q14(d.x, d.y, d.z);
+    const CubeAddress a = generate_address(v, lut), b = generate_address(v, ex);
+    ASSERT_EQ(a.face, b.face);
+    worst = std::max({worst, std::abs(a.u - b.u), std::abs(a.v - b.v)});
+  }
+  EXPECT_LE(worst, 2);  // in 1/256 texel
+}
+
+TEST(CubeFaceAddressGenerator, PositionsClampToTheFaceAndNonPowerOfTwoFacesWork) {
+  const AddressGeneratorParams p(DatapathWidths{}, 300);
+  // s = 1 exactly (sc = +|ma|): clamped to the last texel, fraction at its top.
+  const CubeAddress a = generate_address(Vec3q{16384, -16384, -16384}, p);  // +X, sc = -z = +16384
+  EXPECT_EQ(a.face, kPosX);
+  EXPECT_EQ(a.x, 299);
+  EXPECT_EQ(a.fx, 255u);
+  EXPECT_EQ(a.y, 299);
+  const CubeAddress c = generate_address(Vec3q{16384, 0, 0}, p);
+  EXPECT_EQ(c.x, 150);
+}

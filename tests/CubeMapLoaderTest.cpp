@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "TestSupport.hpp"
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/CubeFaceBasis.hpp"
+#include "host/cubemap/CubeMapLoader.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "host/cubemap/ImageFiles.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+
+using namespace arp;
+using namespace arp::host;
+
+namespace {
+const char* kStems[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+
+void write_faces(const test::TempDir& d, const CubeMapImages& cm) {
+  for (size_t f = 0; f < 6; ++f) write_rgb8(d.file(std::string(kStems[f]) + ".png"), cm.faces[f]);
+}
+
+bool same(const RgbImage& a, const RgbImage& b) { return a.width == b.width && a.height == b.height && a.rgb == b.rgb; }
+
+std::string error_of(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(CubeMapLoader, SixFacesRoundTripThroughPng) {
+  test::TempDir d;
+  const CubeMapImages cm = make_calibration_pattern(64);
+  write_faces(d, cm);
+  const CubeMapImages back = load_six_faces(six_face_paths_in(d.path()), 64);
+  for (size_t f = 0; f < 6; ++f) EXPECT_TRUE(same(back.faces[f], cm.faces[f])) << f;
+}
+
+TEST(CubeMapLoader, HorizontalAndVerticalCrossesMatchTheFaces) {
+  test::TempDir d;
+  const int S = 32;
+  const CubeMapImages cm = make_calibration_pattern(S);
+  RgbImage h(4 * S, 3 * S), v(3 * S, 4 * S);
+  const int hc[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {3, 1}, {1, 1}};
+  const int vc[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 3}, {1, 1}};
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        const uint8_t* p = cm.faces[static_cast<size_t>(f)].px(x, y);
+        std::copy(p, p + 3, h.px(hc[f][0] * S + x, hc[f][1] * S + y));
+        const bool back = f == 4;  // the vertical cross holds the back face upside down
+        std::copy(p, p + 3, v.px(vc[f][0] * S + (back ? S - 1 - x : x), vc[f][1] * S + (back ? S - 1 - y : y)));
+      }
+  write_rgb8(d.file("h.png"), h);
+  write_rgb8(d.file("v.png"), v);
+  const CubeMapImages a = load_cross(d.file("h.png"), S), b = load_cross(d.file("v.png"), S);
+  for (size_t f = 0; f < 6; ++f) {
+    EXPECT_TRUE(same(a.faces[f], cm.faces[f])) << f;
+    EXPECT_TRUE(same(b.faces[f], cm.faces[f])) << f;
+  }
+}
+
+TEST(CubeMapLoader, EquirectangularLongitudeZeroIsTheFrontAndUpIsUp) {
+  test::TempDir d;
+  // Colour by region: top band red, bottom band blue, otherwise green rising with longitude.
+  RgbImage pano(256, 128);
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 256; ++x) {
+      uint8_t* p = pano.px(x, y);
+      p[0] = y < 20 ? 255 : 0;
+      p[2] = y >= 108 ? 255 : 0;
+      p[1] = (y >= 20 && y < 108) ? static_cast<uint8_t>(x) : 0;
+    }
+  write_rgb8(d.file("pano.png"), pano);
+  const CubeMapImages cm = load_equirect(d.file("pano.png"), 32);
+  auto centre = [&](int face) { return cm.faces[static_cast<size_t>(face)].px(16, 16); };
+  EXPECT_EQ(centre(2)[0], 255);               // +Y: up
+  EXPECT_EQ(centre(3)[2], 255);               // -Y: down
+  EXPECT_NEAR(centre(5)[1], 128, 2);          // -Z front: longitude 0, the panorama's middle column
+  EXPECT_NEAR(centre(0)[1], 128 + 64, 2);     // +X right: longitude +90
+  EXPECT_NEAR(centre(1)[1], 128 - 64, 2);     // -X left: longitude -90
+  // Left-to-right in the front face image runs with longitude.
+  EXPECT_LT(cm.faces[5].px(2, 16)[1], cm.faces[5].px(29, 16)[1]);
+}
+
+TEST(DisplayMemoryFill, TexelMappingGoesThroughDirections) {
+  const int S = 16;
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        int col, row;
+        memory_texel_to_image(f, x, y, S, col, row);
+        ASSERT_GE(col, 0);
+        ASSERT_LT(col, S);
+        ASSERT_GE(row, 0);
+        ASSERT_LT(row, S);
+        // The image pixel's inside-view direction equals the memory texel's direction.
+        const FaceBasis& b = face_bases()[static_cast<size_t>(f)];
+        const double a = 2.0 * (col + 0.5) / S - 1.0, c = 1.0 - 2.0 * (row + 0.5) / S;
+        const Dir3 img{b.forward.x + a * b.right.x + c * b.up.x, b.forward.y + a * b.right.y + c * b.up.y,
+                       b.forward.z + a * b.right.z + c * b.up.z};
+        const Dir3 mem = memory_texel_direction(f, x, y, S);
+        ASSERT_NEAR(img.x, mem.x, 1e-12);
+        ASSERT_NEAR(img.y, mem.y, 1e-12);
+        ASSERT_NEAR(img.z, mem.z, 1e-12);
+      }
+}
+
+TEST(CubeMapLoader, BadInputsNameTheFileAndTheReason) {
+  test::TempDir d;
+  const CubeMapImages cm = make_calibration_pattern(32);
+  EXPECT_NE(error_of([&] { read_rgb8(d.file("missing.png")); }).find("does not exist"), std::string::npos);
+  {
+    std::ofstream(d.file("corrupt.png"), std::ios::binary) << "\x89PNG\r\n\x1a\n this is not a png body at all";
+    const std::string e = error_of([&] { read_rgb8(d.file("corrupt.png")); });
+    EXPECT_NE(e.find("corrupt.png"), std::string::npos) << e;
+  }
+  {
+    std::ofstream(d.file("text.png")) << "hello";
+    EXPECT_NE(error_of([&] { read_rgb8(d.file("text.png")); }).find("text.png"), std::string::npos);
+  }
+  write_faces(d, cm);
+  EXPECT_NE(error_of([&] { load_six_faces(six_face_paths_in(d.path()), 64); }).find("memory.face_size"), std::string::npos);
+  write_rgb8(d.file("px.png"), RgbImage(32, 16));
+  EXPECT_NE(error_of([&] { load_six_faces(six_face_paths_in(d.path()), 32); }).find("must be square"), std::string::npos);
+  std::filesystem::remove(d.file("nz.png"));
+  EXPECT_NE(error_of([&] { six_face_paths_in(d.path()); }).find("nz"), std::string::npos);
+  write_rgb8(d.file("wide.png"), RgbImage(100, 30));
+  EXPECT_NE(error_of([&] { load_cross(d.file("wide.png"), 32); }).find("4:3"), std::string::npos);
+  write_rgb8(d.file("cross.png"), RgbImage(4 * 20, 3 * 20));
+  EXPECT_NE(error_of([&] { load_cross(d.file("cross.png"), 32); }).find("128x96"), std::string::npos);
+  EXPECT_NE(error_of([&] { load_equirect(d.file("wide.png"), 32); }).find("2:1"), std::string::npos);
+  EXPECT_NE(error_of([&] { six_face_paths_in(d.file("nope")); }).find("not a folder"), std::string::npos);
+}
+
+TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {
+  test::TempDir d;
+  const size_t before = d.entries();
+  EXPECT_THROW(write_rgb8(d.file("out.notaformat"), RgbImage(4, 4)), InputError);
+  EXPECT_THROW(write_rgb8(d.file("no/such/folder/out.png"), RgbImage(4, 4)), InputError);
+  EXPECT_EQ(d.entries(), before);  // nothing half-written left behind
+  write_rgb8(d.file("ok.exr"), RgbImage(4, 4));
+  EXPECT_EQ(d.entries(), before + 1);
+  EXPECT_EQ(read_rgb8(d.file("ok.exr")).width, 4);
+}
+
+TEST(CalibrationPattern, FacesAreDistinctAndDeterministic) {
+  const CubeMapImages a = make_calibration_pattern(128), b = make_calibration_pattern(128);
+  for (size_t f = 0; f < 6; ++f) {
+    EXPECT_TRUE(same(a.faces[f], b.faces[f]));
+    for (size_t g = f + 1; g < 6; ++g) EXPECT_FALSE(same(a.faces[f], a.faces[g]));
+  }
+  // A label is not mirror-symmetric, so a flipped face would show.
+  const RgbImage& front = a.faces[5];
+  bool asymmetric = false;
+  for (int y = 0; y < 128 && !asymmetric; ++y)
+    for (int x = 0; x < 64 && !asymmetric; ++x) asymmetric = front.px(x, y)[0] != front.px(127 - x, y)[0];
+  EXPECT_TRUE(asymmetric);
+}

@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
+
+using namespace arp::dp;
+
+TEST(DisplayMemoryBank, StorageIsSparse) {
+  DisplayMemoryBank b{MemoryFormat{}};
+  EXPECT_EQ(b.bytes_allocated(), 0u);  // nothing written, nothing stored
+  EXPECT_EQ(b.read(3, 100, 200), MemoryFormat{}.empty_word());
+  b.write(2, 40, 70, 0x123456, 1000);
+  EXPECT_EQ(b.tiles_allocated(), 1u);
+  b.write(2, 41, 71, 0x654321, 1000);  // same 32x32 tile
+  EXPECT_EQ(b.tiles_allocated(), 1u);
+  b.write(2, 500, 500, 1, 1);
+  EXPECT_EQ(b.tiles_allocated(), 2u);
+  // One face's tile table (16x16 pointers) plus two 8 KiB tiles.
+  EXPECT_EQ(b.bytes_allocated(), 2u * 32 * 32 * 8 + 256 * sizeof(void*));
+  DisplayMemorySet set(MemoryConfig{}, 2);
+  EXPECT_EQ(set.bytes_allocated(), 0u);  // 8 banks, 2 x 6 faces each, all free
+}
+
+TEST(DisplayMemoryBank, DoubleBufferSwapsOnlyAtVblankAfterCommit) {
+  DisplayMemoryBank b{MemoryFormat{}};
+  b.write(0, 1, 2, 0xABCDEF, 77);
+  EXPECT_EQ(b.read(0, 1, 2), MemoryFormat{}.empty_word());  // host writes the back buffer
+  EXPECT_EQ(texel_color(b.read_back(0, 1, 2)), 0xABCDEFu);
+  EXPECT_FALSE(b.vblank());  // not committed: no swap
+  EXPECT_EQ(b.read(0, 1, 2), MemoryFormat{}.empty_word());
+  b.commit();
+  EXPECT_EQ(b.read(0, 1, 2), MemoryFormat{}.empty_word());  // committed, still waiting for vblank
+  EXPECT_TRUE(b.vblank());
+  EXPECT_EQ(texel_color(b.read(0, 1, 2)), 0xABCDEFu);
+  EXPECT_EQ(texel_depth(b.read(0, 1, 2)), 77u);
+  EXPECT_FALSE(b.vblank());  // one commit, one swap
+  EXPECT_TRUE(b.front_face_written(0));
+  EXPECT_FALSE(b.front_face_written(1));
+  // The old front is now the back; clearing it frees its storage.
+  b.clear_back();
+  EXPECT_EQ(b.read_back(0, 1, 2), MemoryFormat{}.empty_word());
+  EXPECT_EQ(texel_color(b.read(0, 1, 2)), 0xABCDEFu);
+}
+
+TEST(DisplayMemoryBank, WritesOutsideTheCubeOrFormatAreRefused) {
+  DisplayMemoryBank b{MemoryFormat{}};
+  EXPECT_THROW(b.write(6, 0, 0, 0, 0), std::out_of_range);
+  EXPECT_THROW(b.write(0, 512, 0, 0, 0), std::out_of_range);
+  EXPECT_THROW(b.write(0, 0, -1, 0, 0), std::out_of_range);
+  EXPECT_THROW(b.write(0, 0, 0, 1u << 24, 0), std::out_of_range);  // 25-bit colour into 8:8:8
+  EXPECT_THROW(b.write(0, 0, 0, 0, 1u << 16), std::out_of_range);  // 17-bit depth into 16
+  EXPECT_EQ(b.tiles_allocated(), 0u);
+}
+
+TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {
+  MemoryFormat f;
+  f.face_size = 37;
+  DisplayMemoryBank b{f};
+  EXPECT_EQ(b.tiles_per_row(), 2);
+  b.write(5, 36, 36, 9, 9);
+  b.commit();
+  b.vblank();
+  EXPECT_EQ(texel_color(b.read(5, 36, 36)), 9u);
+  EXPECT_EQ(b.read(5, 35, 36), f.empty_word());
+}
+
+TEST(MemoryFormat, ColourPackingAndRounding) {
+  MemoryFormat f;
+  f.red_bits = 5;
+  f.green_bits = 6;
+  f.blue_bits = 5;
+  EXPECT_EQ(f.pack_rgb8(255, 255, 255), 0xFFFFu);
+  EXPECT_EQ(f.pack_rgb8(0, 0, 0), 0u);
+  EXPECT_EQ(f.pack_rgb8(255, 0, 0), 0xF800u);
+  EXPECT_EQ(f.pack_rgb8(0, 128, 0), 32u << 5);  // 128 * 63 / 255 = 31.6 -> 32
+  EXPECT_EQ(f.empty_depth(), 0xFFFFu);
+  MemoryFormat d32;
+  d32.depth_bits = 32;
+  EXPECT_EQ(d32.empty_depth(), 0xFFFFFFFFu);
+}

@@ -1,0 +1,265 @@
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+using namespace arp;
+using namespace arp::dp;
+
+namespace {
+
+// Calibration pattern far away in memory 0; nearer squares in memories 1 and 2
+// (overlapping at equal depth: the tie rule), memory 3 left empty.
+void fill(DisplayMemorySet& mem) {
+  const auto& fmt = mem.format();
+  const int S = fmt.face_size;
+  host::load_into_memories(mem, 0, host::make_calibration_pattern(S), host::far_depth(fmt));
+  const uint32_t near = fmt.empty_depth() / 3;
+  for (int e = 0; e < mem.eyes(); ++e)
+    for (int m = 1; m < std::min(3, mem.count()); ++m) {
+      auto& b = mem.bank(e, m);
+      for (int f = 0; f < 6; ++f)
+        for (int y = 0; y < S; y += 1)
+          for (int x = 0; x < S; ++x) {
+            const bool in = m == 1 ? ((x * 7 / S + y * 5 / S) % 2 == 0) : ((x * 3 / S) == 1 && f != 4);
+            if (in) b.write(f, x, y, fmt.pack_rgb8(m == 1 ? 250 : 30, 40 * m, 255 - 60 * f), near);
+          }
+      b.commit();
+      b.vblank();
+    }
+}
+
+// The datapath applied pixel by pixel in the plainest way: the reference the
+// functional model's vectorised passes must equal bit for bit.
+HmdFrame scalar_reference(const ArpConfig& c, const DisplayMemorySet& mem, const OrientationStream& o, int64_t frame) {
+  const VideoTiming t(c.timing);
+  const LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
+  const AddressGeneratorParams ap(c.widths, c.memory.face_size);
+  const RotateParams rp(c.widths);
+  const MemoryFormat fmt(c.memory);
+  const CompositionParams cp(fmt, c.memory.background);
+  const ChannelLayout L(fmt);
+  const HmdScanOut scan(fmt, c.pipeline);
+  HmdFrame f;
+  f.resize(lens.width(), lens.height(), lens.eyes(), false);
+  f.display_bits = c.pipeline.display_bits;
+  std::vector<uint64_t> w(static_cast<size_t>(mem.count()));
+  for (int e = 0; e < lens.eyes(); ++e)
+    for (int y = 0; y < lens.height(); ++y)
+      for (int x = 0; x < lens.width(); ++x) {
+        const int64_t lc = latch_cycle(t, c.pipeline.latch, c.pipeline.latch_lead_cycles, frame, e, x, y);
+        const Mat3q M = quantise_rotation(o[o.index_at(t.cycles_to_ps(lc))].q, c.widths.mat_frac);
+        const CubeAddress a = generate_address(rotate(M, lens.at(e, x, y), rp), ap);
+        auto at = [&](int tx, int ty) {
+          for (int m = 0; m < mem.count(); ++m) w[static_cast<size_t>(m)] = mem.bank(e, m).read(a.face, tx, ty);
+          return compose(w.data(), mem.count(), cp).color;
+        };
+        uint32_t col;
+        if (c.pipeline.aa == AaMode::Off) {
+          col = at(a.x, a.y);
+        } else {
+          const BilinearTaps tp = bilinear_taps(a.u, a.v, c.widths.texel_frac, c.memory.face_size);
+          col = bilinear_blend(at(tp.x0, tp.y0), at(tp.x1, tp.y0), at(tp.x0, tp.y1), at(tp.x1, tp.y1), tp.wx, tp.wy,
+                               c.widths.texel_frac, L);
+        }
+        f.pixels[f.index(e, x, y)] = scan.to_display(col);
+      }
+  return f;
+}
+
+// A head turning fast (about 1000 deg/s about a tilted axis), 1 kHz samples.
+OrientationStream fast_turn(const VideoTiming& t, int64_t frame) {
+  std::vector<OrientationSample> s;
+  const int64_t t0 = t.cycles_to_ps(t.frame_start_cycle(frame)) - 2'000'000'000;
+  for (int i = 0; i < 24; ++i)
+    s.push_back({t0 + int64_t{i} * 1'000'000'000, from_yaw_pitch_roll_deg(30.0 + 1.0 * i, 20.0 - 0.3 * i, 5.0 + 0.2 * i)});
+  return OrientationStream(s, "test");
+}
+
+ArpConfig small(ArpConfig c) {
+  c.timing.h_active = 160;
+  c.timing.v_active = 120;
+  c.timing.h_front_porch = 8;
+  c.timing.h_sync = 16;
+  c.timing.h_back_porch = 16;
+  c.timing.v_front_porch = 2;
+  c.timing.v_sync = 2;
+  c.timing.v_back_porch = 6;
+  c.timing.pixel_clock_hz = 1'400'000;
+  return c;
+}
+
+void expect_bit_identical(const ArpConfig& c, const std::string& what) {
+  DisplayMemorySet mem(c.memory, c.timing.eyes);
+  fill(mem);
+  const FunctionalModel model(c);
+  const OrientationStream o = fast_turn(model.timing(), 1);
+  const HmdFrame ref = scalar_reference(c, mem, o, 1);
+  for (int threads : {1, 2}) {
+    HmdFrame f;
+    RenderOptions ro;
+    ro.threads = threads;
+    model.render(mem, o, 1, f, ro);
+    ASSERT_EQ(f.pixels.size(), ref.pixels.size());
+    size_t diff = 0;
+    for (size_t i = 0; i < f.pixels.size(); ++i) diff += f.pixels[i] != ref.pixels[i];
+    EXPECT_EQ(diff, 0u) << what << ", " << threads << " thread(s)";
+  }
+}
+
+}  // namespace
+
+TEST(FunctionalModel, BitIdenticalToPixelByPixelDatapathAtDefaults) { expect_bit_identical(ArpConfig{}, "defaults"); }
+
+TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
+  std::map<std::string, ArpConfig> cases;
+  ArpConfig c = small(ArpConfig{});
+  cases["small bilinear"] = c;
+  c.pipeline.aa = AaMode::Off;
+  cases["nearest"] = c;
+  c = small(ArpConfig{});
+  c.widths.divider = DividerKind::Exact;
+  cases["exact divider"] = c;
+  c = small(ArpConfig{});
+  c.widths.vec_frac = c.widths.mat_frac = c.widths.rot_frac = 20;  // too wide for the tabulated reciprocal
+  c.widths.recip_index_bits = 10;
+  c.widths.recip_frac_bits = 24;
+  c.widths.quot_frac = 24;
+  c.widths.texel_frac = 12;
+  cases["wide, no reciprocal table"] = c;
+  c = small(ArpConfig{});
+  c.widths.vec_frac = 7;
+  c.widths.mat_frac = 6;
+  c.widths.rot_frac = 8;
+  c.widths.recip_index_bits = 3;
+  c.widths.recip_frac_bits = 8;
+  c.widths.newton_steps = 0;
+  c.widths.quot_frac = 9;
+  c.widths.texel_frac = 3;
+  c.widths.rot_rounding = c.widths.div_rounding = c.widths.texel_rounding = Rounding::HalfEven;
+  cases["narrow, half-even"] = c;
+  c = small(ArpConfig{});
+  c.memory = MemoryConfig{3, 100, 5, 6, 5, 12, {0, 0, 40}};
+  c.pipeline.display_bits = 6;
+  c.widths.newton_steps = 2;
+  cases["565 colour, 100-texel faces, 3 memories"] = c;
+  c = small(ArpConfig{});
+  c.timing.eyes = 1;
+  c.pipeline.latch = LatchPolicy::PerPixel;
+  c.pipeline.latch_lead_cycles = 37;
+  c.lens.k = {1.0, 0.22, 0.24, 0.0};
+  cases["mono, per-pixel latch, distortion"] = c;
+  c = small(ArpConfig{});
+  c.timing.eye_scan = EyeScan::SideBySide;
+  c.timing.fields_per_frame = 2;
+  c.pipeline.latch = LatchPolicy::PerField;
+  c.lens.center_offset_px = 9;
+  cases["side-by-side, interlaced, per-field latch"] = c;
+  c = small(ArpConfig{});
+  c.pipeline.latch = LatchPolicy::PerFrame;
+  c.memory.count = 16;
+  c.memory.face_size = 64;
+  cases["16 memories, per-frame latch"] = c;
+  for (const auto& [name, cfg] : cases) expect_bit_identical(cfg, name);
+}
+
+namespace {
+// The calibration colour that covers most of an eye's image.
+int dominant_face(const HmdFrame& f, const MemoryFormat& fmt) {
+  std::array<int, 6> counts{};
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x)
+      for (int face = 0; face < 6; ++face) {
+        const auto& c = host::calibration_face_colors()[static_cast<size_t>(face)];
+        counts[static_cast<size_t>(face)] += f.at(0, x, y) == fmt.pack_rgb8(c[0], c[1], c[2]);
+      }
+  return static_cast<int>(std::max_element(counts.begin(), counts.end()) - counts.begin());
+}
+}  // namespace
+
+TEST(FunctionalModel, CalibrationFramesShowTheExpectedFaces) {
+  const ArpConfig c;
+  const FunctionalModel model(c);
+  DisplayMemorySet mem(c.memory, 2);
+  host::load_into_memories(mem, 0, host::make_calibration_pattern(512), host::far_depth(mem.format()));
+  const struct { double yaw, pitch; int face; } cases[] = {
+      {0, 0, kNegZ}, {90, 0, kNegX}, {180, 0, kPosZ}, {270, 0, kPosX}, {-90, 0, kPosX}, {0, 90, kPosY}, {0, -90, kNegY}};
+  for (const auto& k : cases) {
+    HmdFrame f;
+    model.render(mem, OrientationStream::constant(from_yaw_pitch_roll_deg(k.yaw, k.pitch, 0)), 0, f);
+    EXPECT_EQ(dominant_face(f, mem.format()), k.face) << "yaw " << k.yaw << " pitch " << k.pitch;
+    // Infinitely far content, no lens offset: both eyes see the same image.
+    EXPECT_TRUE(std::equal(f.pixels.begin(), f.pixels.begin() + 640 * 480, f.pixels.begin() + 640 * 480));
+  }
+}
+
+TEST(FunctionalModel, LatchPolicyDecidesWhereANewOrientationTakesEffect) {
+  ArpConfig c = small(ArpConfig{});
+  c.pipeline.aa = AaMode::Off;
+  DisplayMemorySet mem(c.memory, 2);
+  host::load_into_memories(mem, 0, host::make_calibration_pattern(512), host::far_depth(mem.format()));
+  const VideoTiming t(c.timing);
+  // The head snaps from yaw 0 to yaw 40 at pixel (70, 50) of frame 0.
+  const int64_t change = t.cycles_to_ps(t.pixel_cycle(0, 0, 70, 50));
+  const OrientationStream o({{0, from_yaw_pitch_roll_deg(0, 0, 0)}, {change, from_yaw_pitch_roll_deg(40, 0, 0)}}, "t");
+  const OrientationStream before = OrientationStream::constant(from_yaw_pitch_roll_deg(0, 0, 0));
+  const OrientationStream after = OrientationStream::constant(from_yaw_pitch_roll_deg(40, 0, 0));
+  auto render = [&](LatchPolicy p, const OrientationStream& s) {
+    c.pipeline.latch = p;
+    HmdFrame f;
+    FunctionalModel(c).render(mem, s, 0, f);
+    return f;
+  };
+  const HmdFrame b = render(LatchPolicy::PerFrame, before), a = render(LatchPolicy::PerFrame, after);
+  auto same_row_part = [](const HmdFrame& x, const HmdFrame& y, int row, int x0, int x1) {
+    for (int i = x0; i < x1; ++i)
+      if (x.at(0, i, row) != y.at(0, i, row)) return false;
+    return true;
+  };
+  const HmdFrame pf = render(LatchPolicy::PerFrame, o);
+  EXPECT_EQ(pf.pixels, b.pixels);  // latched once at the frame start
+  const HmdFrame pl = render(LatchPolicy::PerScanline, o);
+  EXPECT_TRUE(same_row_part(pl, b, 50, 0, 160));  // line 50 latched before the change
+  EXPECT_TRUE(same_row_part(pl, a, 51, 0, 160));
+  EXPECT_TRUE(same_row_part(pl, b, 0, 0, 160));
+  const HmdFrame pp = render(LatchPolicy::PerPixel, o);
+  EXPECT_TRUE(same_row_part(pp, b, 50, 0, 70));
+  EXPECT_TRUE(same_row_part(pp, a, 50, 70, 160));
+  EXPECT_FALSE(same_row_part(pp, b, 50, 70, 160));
+}
+
+TEST(FunctionalModel, PhotonTimesFollowTheScan) {
+  const ArpConfig c;
+  const FunctionalModel model(c);
+  DisplayMemorySet mem(c.memory, 2);
+  HmdFrame f;
+  RenderOptions ro;
+  ro.photon_times = true;
+  model.render(mem, OrientationStream::constant(Quat{}), 2, f, ro);
+  const VideoTiming t(c.timing);
+  EXPECT_EQ(f.photon_ps[f.index(0, 0, 0)], t.cycles_to_ps(840000));
+  EXPECT_EQ(f.photon_ps[f.index(1, 639, 479)], t.cycles_to_ps(840000 + 479 * 800 + 639));
+  for (int y = 0; y < 480; ++y)
+    for (int x = 1; x < 640; ++x) ASSERT_GT(f.photon_ps[f.index(0, x, y)], f.photon_ps[f.index(0, x - 1, y)]);
+  // An empty scene shows the background everywhere.
+  for (uint32_t p : f.pixels) ASSERT_EQ(p, 0u);
+}
+
+TEST(FunctionalModel, RejectsMismatchedMemoriesAndBadConfigurations) {
+  const ArpConfig c;
+  const FunctionalModel model(c);
+  MemoryConfig other = c.memory;
+  other.face_size = 256;
+  DisplayMemorySet wrong(other, 2);
+  HmdFrame f;
+  EXPECT_THROW(model.render(wrong, OrientationStream::constant(Quat{}), 0, f), InputError);
+  DisplayMemorySet mono(c.memory, 1);
+  EXPECT_THROW(model.render(mono, OrientationStream::constant(Quat{}), 0, f), InputError);
+  ArpConfig bad = c;
+  bad.lens.fov_deg = 180.0;
+  EXPECT_THROW(FunctionalModel{bad}, InputError);
+}

@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rtl_model/datapath/InputError.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+#include "testbench/golden/GoldenReference.hpp"
+
+using namespace arp::dp;
+
+TEST(OrientationMatrixUnit, IdentityAndQuarterTurnsAreExact) {
+  const Mat3q I = quantise_rotation(Quat{1, 0, 0, 0}, 14);
+  const int32_t want[9] = {16384, 0, 0, 0, 16384, 0, 0, 0, 16384};
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(I.m[i], want[i]);
+  // Yaw +90 turns the view left: forward (0,0,-1) becomes (-1,0,0).
+  const Mat3q Y = quantise_rotation(normalised(from_yaw_pitch_roll_deg(90, 0, 0), "t"), 14);
+  const Vec3q f = rotate(Y, Vec3q{0, 0, -16384}, RotateParams(DatapathWidths{}));
+  EXPECT_EQ(f.x, -16384);
+  EXPECT_EQ(f.y, 0);
+  EXPECT_EQ(f.z, 0);
+  // Pitch +90 looks up.
+  const Mat3q P = quantise_rotation(normalised(from_yaw_pitch_roll_deg(0, 90, 0), "t"), 14);
+  const Vec3q u = rotate(P, Vec3q{0, 0, -16384}, RotateParams(DatapathWidths{}));
+  EXPECT_EQ(u.y, 16384);
+}
+
+TEST(OrientationMatrixUnit, MatrixEntriesSaturateWhenTheFormatCannotHoldOne) {
+  // With a total width of mat_frac+2 bits, 1.0 is representable; rotated
+  // outputs saturate at the format's edge rather than wrap.
+  DatapathWidths w;
+  w.rot_frac = 14;
+  const RotateParams p(w);
+  Mat3q big{};
+  for (int i = 0; i < 9; ++i) big.m[i] = 32767;  // every entry at the top of Q1.14
+  const Vec3q r = rotate(big, Vec3q{32767, 32767, 32767}, p);
+  EXPECT_EQ(r.x, 32767);
+  Mat3q neg{};
+  for (int i = 0; i < 9; ++i) neg.m[i] = -32768;
+  const Vec3q s = rotate(neg, Vec3q{32767, 32767, 32767}, p);
+  EXPECT_EQ(s.x, -32768);
+}
+
+TEST(OrientationMatrixUnit, RotationAgreesWithGoldenWithinTheQuantisationBound) {
+  const DatapathWidths w;
+  const RotateParams p(w);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> n01;
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    const Quat q = normalised(Quat{n01(rng), n01(rng), n01(rng), n01(rng)}, "t");
+    glm::dvec3 d(n01(rng), n01(rng), n01(rng));
+    d = glm::normalize(d);
+    const Vec3q dq{static_cast<int32_t>(quantise_real(d.x, 14, 16)), static_cast<int32_t>(quantise_real(d.y, 14, 16)),
+                   static_cast<int32_t>(quantise_real(d.z, 14, 16))};
+    const Vec3q r = rotate(quantise_rotation(q, 14), dq, p);
+    const glm::dvec3 g = arp::golden::rotation(glm::dquat(q.w, q.x, q.y, q.z)) * d;
+    for (int k = 0; k < 3; ++k) {
+      const int32_t c = k == 0 ? r.x : (k == 1 ? r.y : r.z);
+      worst = std::max(worst, std::abs(std::ldexp(c, -14) - g[k]));
+    }
+  }
+  // Three products each off by <= (|m| + |v|) half-LSB, plus the final rounding: < 4 LSB.
+  EXPECT_LT(worst, 4.0 * std::ldexp(1.0, -14));
+}
+
+TEST(OrientationMatrixUnit, BadQuaternionsAreRejectedWithTheSourceNamed) {
+  const double nan = std::nan("");
+  EXPECT_THROW(normalised(Quat{0, 0, 0, 0}, "q"), arp::InputError);
+  EXPECT_THROW(normalised(Quat{nan, 0, 0, 1}, "q"), arp::InputError);
+  EXPECT_THROW(normalised(Quat{1, INFINITY, 0, 0}, "q"), arp::InputError);
+  try {
+    normalised(Quat{0, 0, 0, 0}, "--quat");
+    FAIL();
+  } catch (const arp::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--quat"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("zero"), std::string::npos);
+  }
+  const Quat n = normalised(Quat{2, 0, 0, 0}, "q");
+  EXPECT_DOUBLE_EQ(n.w, 1.0);
+  const Quat tiny = normalised(Quat{1e-10, 0, 0, 1e-10}, "q");  // tiny but non-zero is fine
+  EXPECT_NEAR(tiny.w, std::sqrt(0.5), 1e-12);
+}
+
+TEST(OrientationStream, SampleAndHoldWithValidation) {
+  const OrientationStream s({{100, Quat{1, 0, 0, 0}}, {200, Quat{0, 1, 0, 0}}, {200, Quat{0, 0, 1, 0}}, {300, Quat{0, 0, 0, 2}}},
+                            "trace");
+  EXPECT_EQ(s.index_at(0), 0u);    // before the first sample: its value (reset)
+  EXPECT_EQ(s.index_at(100), 0u);
+  EXPECT_EQ(s.index_at(199), 0u);
+  EXPECT_EQ(s.index_at(200), 2u);  // equal times: the later sample wins
+  EXPECT_EQ(s.index_at(1'000'000), 3u);
+  EXPECT_DOUBLE_EQ(s[3].q.z, 1.0);  // normalised
+  try {
+    OrientationStream({{100, Quat{}}, {50, Quat{}}}, "trace.csv");
+    FAIL();
+  } catch (const arp::InputError& e) {
+    EXPECT_EQ(e.source(), "trace.csv");
+    EXPECT_EQ(e.place(), "sample 1");
+  }
+  EXPECT_THROW(OrientationStream({{0, Quat{0, 0, 0, 0}}}, "t"), arp::InputError);
+  EXPECT_THROW(OrientationStream({}, "t"), arp::InputError);
+}
+
+TEST(LatchPolicy, EachPolicySamplesAtItsBoundary) {
+  const VideoTiming t{VideoTimingConfig{}};
+  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerFrame, 0, 2, 0, 100, 300), 840000);
+  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerField, 0, 2, 0, 100, 300), 840000);
+  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerScanline, 0, 2, 0, 100, 300), 840000 + 300 * 800);
+  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerPixel, 0, 2, 0, 100, 300), 840000 + 300 * 800 + 100);
+  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerPixel, 25, 2, 0, 100, 300), 840000 + 300 * 800 + 75);  // pipeline lead
+  VideoTimingConfig ic;
+  ic.fields_per_frame = 2;
+  const VideoTiming ti{ic};
+  EXPECT_EQ(latch_cycle(ti, LatchPolicy::PerField, 0, 0, 0, 5, 7), 210000);
+  EXPECT_EQ(latch_cycle(ti, LatchPolicy::PerFrame, 0, 0, 0, 5, 7), 0);
+}
