@@ -48,8 +48,11 @@ struct Reciprocal {
   int n;
 };
 
-inline Reciprocal reciprocal(int64_t m, const ReciprocalParams& p) {
-  const int n = 64 - __builtin_clzll(static_cast<uint64_t>(m | 1));  // m == 0 is handled by the caller
+inline Reciprocal reciprocal(int64_t m_in, const ReciprocalParams& p) {
+  // m == 0 has no reciprocal; callers never use its result (a zero vector
+  // addresses the face centre) but the arithmetic stays defined: 1/1.
+  const int64_t m = m_in > 0 ? m_in : 1;
+  const int n = 64 - __builtin_clzll(static_cast<uint64_t>(m));
   const int64_t frac_part = m - (int64_t{1} << (n - 1));
   const int below = n - 1 - p.index_bits;
   const int64_t idx = below >= 0 ? (frac_part >> below) : (frac_part << (-below));

@@ -115,18 +115,25 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   std::vector<Mat3q> mats;
   for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
 
-  // Per eye, the memories holding anything (see passes::EyeSources).
+  // Per eye, the memories holding anything, each with its tile pointers
+  // flattened over the six faces (see passes::EyeSources).
+  const int tpr = mem.bank(0, 0).tiles_per_row(), tpf = tpr * tpr;
   std::vector<passes::EyeSources> sources(static_cast<size_t>(E));
+  std::vector<std::vector<const uint64_t*>> flat;
+  flat.reserve(static_cast<size_t>(E) * N);
   for (int e = 0; e < E; ++e) {
     passes::EyeSources& es = sources[static_cast<size_t>(e)];
-    es.tiles_per_row = mem.bank(e, 0).tiles_per_row();
+    es.tiles_per_row = tpr;
+    es.tiles_per_face = tpf;
     for (int m = 0; m < N; ++m) {
       const DisplayMemoryBank& b = mem.bank(e, m);
       bool any = false;
       for (int face = 0; face < 6; ++face) any = any || b.front_face_written(face);
       if (!any) continue;
-      for (int face = 0; face < 6; ++face) es.tables[face][es.count] = b.front_tiles(face);
-      ++es.count;
+      flat.emplace_back(static_cast<size_t>(6) * tpf);
+      for (int face = 0; face < 6; ++face)
+        std::copy(b.front_tiles(face), b.front_tiles(face) + tpf, flat.back().begin() + static_cast<ptrdiff_t>(face) * tpf);
+      es.flat[es.count++] = flat.back().data();
     }
   }
 
@@ -137,8 +144,10 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
 #pragma omp parallel num_threads(threads)
   {
-    // Per-thread line buffers, allocated once per frame.
-    const size_t w = static_cast<size_t>(W);
+    // Per-thread buffers for one chunk of a line: small enough (about 14 KiB)
+    // that every pass works out of L1.
+    constexpr int C = 128;
+    const size_t w = C;
     std::vector<Segment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
     std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
@@ -151,33 +160,41 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
       const int eye = line / H, y = line % H;
       const passes::EyeSources& src = sources[static_cast<size_t>(eye)];
       line_segments(timing_, pc, orientation, frame, eye, y, W, segs);
-      for (const Segment& sg : segs)
-        passes::rotate_line(mats[sg.sample - s_lo], lens_.row_x(eye, y), lens_.row_y(eye, y), lens_.row_z(eye, y),
-                            sg.x0, sg.x1, rot_, rx.data(), ry.data(), rz.data());
-      if constexpr (D == DividerKind::ReciprocalLut)
-        passes::address_line_lut(rx.data(), ry.data(), rz.data(), W, addr_, memo_, face.data(), u.data(), v.data());
-      else
-        passes::address_line_exact(rx.data(), ry.data(), rz.data(), W, addr_, face.data(), u.data(), v.data());
-      if constexpr (A == AaMode::Off)
-        passes::nearest_refs_line(u.data(), v.data(), W, T, src.tiles_per_row, ref(0));
-      else
-        passes::bilinear_refs_line(u.data(), v.data(), W, T, S, src.tiles_per_row, ref(0), ref(1), ref(2), ref(3),
-                                   wx.data(), wy.data());
-      for (int k = 0; k < taps; ++k) {
-        uint32_t* c = &col[static_cast<size_t>(k) * w];
-        if (src.count == 1) {  // one memory: fetch, then composite vectorised
-          passes::fetch_line(src, face.data(), ref(k), W, &words[static_cast<size_t>(k) * w]);
-          passes::compose1_line(&words[static_cast<size_t>(k) * w], W, comp_, c);
-        } else {
-          passes::fetch_compose_line(src, face.data(), ref(k), W, comp_, c);
+      uint32_t* dst_line = &out.pixels[out.index(eye, 0, y)];
+      for (int c0 = 0; c0 < W; c0 += C) {
+        const int n = std::min(C, W - c0);
+        for (const Segment& sg : segs) {
+          const int a = std::max(sg.x0, c0), b = std::min(sg.x1, c0 + n);
+          if (a < b)
+            passes::rotate_line(mats[sg.sample - s_lo], lens_.row_x(eye, y) + c0, lens_.row_y(eye, y) + c0,
+                                lens_.row_z(eye, y) + c0, a - c0, b - c0, rot_, rx.data(), ry.data(), rz.data());
         }
-      }
-      uint32_t* dst = &out.pixels[out.index(eye, 0, y)];
-      if constexpr (A == AaMode::Off) {
-        for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(col[static_cast<size_t>(x)]);
-      } else {
-        passes::blend_line(&col[0], &col[w], &col[2 * w], &col[3 * w], wx.data(), wy.data(), W, T, layout_, dst);
-        for (int x = 0; x < W; ++x) dst[x] = scan_.to_display(dst[x]);
+        if constexpr (D == DividerKind::ReciprocalLut)
+          passes::address_line_lut(rx.data(), ry.data(), rz.data(), n, addr_, memo_, face.data(), u.data(), v.data());
+        else
+          passes::address_line_exact(rx.data(), ry.data(), rz.data(), n, addr_, face.data(), u.data(), v.data());
+        if constexpr (A == AaMode::Off)
+          passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref(0));
+        else
+          passes::bilinear_refs_line(face.data(), u.data(), v.data(), n, T, S, src, ref(0), ref(1), ref(2), ref(3),
+                                     wx.data(), wy.data());
+        if (src.count == 1) {  // one memory: fetch, then composite vectorised
+          if constexpr (A == AaMode::Off)
+            passes::fetch_line(src, ref(0), n, words.data());
+          else
+            passes::fetch4_line(src, ref(0), ref(1), ref(2), ref(3), n, &words[0], &words[w], &words[2 * w], &words[3 * w]);
+          for (int k = 0; k < taps; ++k)
+            passes::compose1_line(&words[static_cast<size_t>(k) * w], n, comp_, &col[static_cast<size_t>(k) * w]);
+        } else {
+          for (int k = 0; k < taps; ++k) passes::fetch_compose_line(src, ref(k), n, comp_, &col[static_cast<size_t>(k) * w]);
+        }
+        uint32_t* dst = dst_line + c0;
+        if constexpr (A == AaMode::Off) {
+          for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(col[static_cast<size_t>(x)]);
+        } else {
+          passes::blend_line(&col[0], &col[w], &col[2 * w], &col[3 * w], wx.data(), wy.data(), n, T, layout_, dst);
+          for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(dst[x]);
+        }
       }
       if (opt.photon_times) {
         int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];

@@ -70,32 +70,35 @@ void address_line_exact(const int32_t* rx, const int32_t* ry, const int32_t* rz,
 
 namespace {
 ARP_VECTOR_CLONES
-void nearest_refs_impl(const int32_t* __restrict u, const int32_t* __restrict v, int n, int T, int tpr,
-                       int32_t* __restrict tile, int32_t* __restrict word) {
+void nearest_refs_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
+                       int T, int tpr, int tpf, int32_t* __restrict tile, int32_t* __restrict word) {
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;  // the nearest texel: CubeAddress::x, y
-    tile[i] = (ty >> TS) * tpr + (tx >> TS);
+    tile[i] = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS);
     word[i] = ((ty & TM) << TS) + (tx & TM);
   }
 }
 }  // namespace
 
-void nearest_refs_line(const int32_t* u, const int32_t* v, int n, int T, int tpr, TexelRef out) {
-  nearest_refs_impl(u, v, n, T, tpr, out.tile, out.word);
+void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int T, const EyeSources& src,
+                       TexelRef out) {
+  nearest_refs_impl(face, u, v, n, T, src.tiles_per_row, src.tiles_per_face, out.tile, out.word);
 }
 
 namespace {
 // Plain restrict pointer parameters: GCC ignores restrict on local copies, and
 // without it cannot prove the ten output streams independent.
 ARP_VECTOR_CLONES
-void bilinear_refs_impl(const int32_t* __restrict u, const int32_t* __restrict v, int n, int T, int32_t S, int tpr,
+void bilinear_refs_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
+                        int T, int32_t S, int tpr, int tpf,
                         int32_t* __restrict a_t, int32_t* __restrict a_w, int32_t* __restrict b_t,
                         int32_t* __restrict b_w, int32_t* __restrict c_t, int32_t* __restrict c_w,
                         int32_t* __restrict d_t, int32_t* __restrict d_w, uint32_t* __restrict wx,
                         uint32_t* __restrict wy) {
   for (int i = 0; i < n; ++i) {
     const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
-    const int32_t r0 = (t.y0 >> TS) * tpr, r1 = (t.y1 >> TS) * tpr;
+    const int32_t base = face[i] * tpf;
+    const int32_t r0 = base + (t.y0 >> TS) * tpr, r1 = base + (t.y1 >> TS) * tpr;
     const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
     a_t[i] = r0 + (t.x0 >> TS); a_w[i] = q0 + (t.x0 & TM);
     b_t[i] = r0 + (t.x1 >> TS); b_w[i] = q0 + (t.x1 & TM);
@@ -107,16 +110,42 @@ void bilinear_refs_impl(const int32_t* __restrict u, const int32_t* __restrict v
 }
 }  // namespace
 
-void bilinear_refs_line(const int32_t* u, const int32_t* v, int n, int T, int32_t S, int tpr, TexelRef t00, TexelRef t10,
-                        TexelRef t01, TexelRef t11, uint32_t* wx, uint32_t* wy) {
-  bilinear_refs_impl(u, v, n, T, S, tpr, t00.tile, t00.word, t10.tile, t10.word, t01.tile, t01.word, t11.tile, t11.word,
+void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int T, int32_t S,
+                        const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, uint32_t* wx,
+                        uint32_t* wy) {
+  bilinear_refs_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, t00.tile, t00.word, t10.tile, t10.word, t01.tile, t01.word, t11.tile, t11.word,
                      wx, wy);
 }
 
-void fetch_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, uint64_t* __restrict words) {
-  const uint64_t* const* tabs[6];
-  for (int f = 0; f < 6; ++f) tabs[f] = src.tables[f][0];
-  for (int i = 0; i < n; ++i) words[i] = tabs[face[i]][ref.tile[i]][ref.word[i]];
+void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* __restrict words) {
+  const uint64_t* const* table = src.flat[0];
+  for (int i = 0; i < n; ++i) words[i] = table[ref.tile[i]][ref.word[i]];
+}
+
+void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n,
+                 uint64_t* __restrict w00, uint64_t* __restrict w10, uint64_t* __restrict w01,
+                 uint64_t* __restrict w11) {
+  const uint64_t* const* table = src.flat[0];
+  constexpr int kAhead = 16;
+  for (int i = 0; i < n; ++i) {
+    if (i + kAhead < n) {
+      __builtin_prefetch(table[t00.tile[i + kAhead]] + t00.word[i + kAhead]);
+      __builtin_prefetch(table[t01.tile[i + kAhead]] + t01.word[i + kAhead]);
+    }
+    const int32_t a = t00.tile[i];
+    const uint64_t* p = table[a];
+    if (t10.tile[i] == a && t01.tile[i] == a && t11.tile[i] == a) {
+      w00[i] = p[t00.word[i]];
+      w10[i] = p[t10.word[i]];
+      w01[i] = p[t01.word[i]];
+      w11[i] = p[t11.word[i]];
+    } else {
+      w00[i] = p[t00.word[i]];
+      w10[i] = table[t10.tile[i]][t10.word[i]];
+      w01[i] = table[t01.tile[i]][t01.word[i]];
+      w11[i] = table[t11.tile[i]][t11.word[i]];
+    }
+  }
 }
 
 ARP_VECTOR_CLONES
@@ -128,27 +157,24 @@ void compose1_line(const uint64_t* words, int n, const CompositionParams& cpref,
 namespace {
 // K is the memory count when small enough to unroll; K == 0: src.count at run time.
 template <int K>
-void fetch_compose_k(const EyeSources& src, const int32_t* face, TexelRef ref, int n, const CompositionParams& cp,
-                     uint32_t* out) {
+void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   const int count = K > 0 ? K : src.count;
   uint64_t w[16];
   for (int i = 0; i < n; ++i) {
-    const auto* const* tabs = src.tables[face[i]];
-    for (int k = 0; k < count; ++k) w[k] = tabs[k][ref.tile[i]][ref.word[i]];
+    for (int k = 0; k < count; ++k) w[k] = src.flat[k][ref.tile[i]][ref.word[i]];
     out[i] = compose(w, count, cp).color;
   }
 }
 }  // namespace
 
-void fetch_compose_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, const CompositionParams& cp,
-                        uint32_t* out) {
+void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   switch (src.count) {
     case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
-    case 1: fetch_compose_k<1>(src, face, ref, n, cp, out); break;
-    case 2: fetch_compose_k<2>(src, face, ref, n, cp, out); break;
-    case 3: fetch_compose_k<3>(src, face, ref, n, cp, out); break;
-    case 4: fetch_compose_k<4>(src, face, ref, n, cp, out); break;
-    default: fetch_compose_k<0>(src, face, ref, n, cp, out); break;
+    case 1: fetch_compose_k<1>(src, ref, n, cp, out); break;
+    case 2: fetch_compose_k<2>(src, ref, n, cp, out); break;
+    case 3: fetch_compose_k<3>(src, ref, n, cp, out); break;
+    case 4: fetch_compose_k<4>(src, ref, n, cp, out); break;
+    default: fetch_compose_k<0>(src, ref, n, cp, out); break;
   }
 }
 

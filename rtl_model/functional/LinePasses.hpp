@@ -28,11 +28,13 @@ struct ReciprocalMemo {
 
 // The display memories one eye composites, in index order: those with any
 // face written. A face a memory never wrote reads through the shared empty
-// table, so leaving out only wholly unwritten memories changes no result.
+// tile, so leaving out only wholly unwritten memories changes no result.
+// Each memory's tile pointers are flattened over its six faces (tile
+// face * tiles_per_face + row * tiles_per_row + column), one load per texel.
 struct EyeSources {
   int count = 0;
-  const uint64_t* const* tables[6][16];
-  int tiles_per_row = 0;
+  const uint64_t* const* flat[16];
+  int tiles_per_row = 0, tiles_per_face = 0;
 };
 
 // Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors.
@@ -47,26 +49,29 @@ void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, i
 void address_line_exact(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
                         const dp::AddressGeneratorParams& p, int32_t* face, int32_t* u, int32_t* v);
 
-// Where a texel lives: tile number within its face and word within the tile.
+// Where a texel lives: tile number in the flattened six-face table, word within the tile.
 struct TexelRef {
   int32_t* tile;
   int32_t* word;
 };
 
 // Nearest texel of each pixel.
-void nearest_refs_line(const int32_t* u, const int32_t* v, int n, int texel_frac, int tiles_per_row, TexelRef out);
+void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
+                       const EyeSources& src, TexelRef out);
 // The four bilinear taps of each pixel (00, 10, 01, 11) and their weights.
-void bilinear_refs_line(const int32_t* u, const int32_t* v, int n, int texel_frac, int32_t face_size,
-                        int tiles_per_row, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, uint32_t* wx,
-                        uint32_t* wy);
+void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
+                        int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
+                        TexelRef t11, uint32_t* wx, uint32_t* wy);
 
 // Texel words of the eye's only memory (src.count == 1).
-void fetch_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n, uint64_t* words);
+void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words);
+// The four bilinear taps' words from the only memory: one tile lookup when all four share a tile.
+void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n, uint64_t* w00,
+                 uint64_t* w10, uint64_t* w01, uint64_t* w11);
 // Composition unit over a single memory's words.
 void compose1_line(const uint64_t* words, int n, const dp::CompositionParams& cp, uint32_t* out);
 // Fetch from every memory of the eye and composite (any src.count).
-void fetch_compose_line(const EyeSources& src, const int32_t* face, TexelRef ref, int n,
-                        const dp::CompositionParams& cp, uint32_t* out);
+void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const dp::CompositionParams& cp, uint32_t* out);
 
 // Bilinear blend of four composited colours per pixel.
 void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,

@@ -1,0 +1,42 @@
+// Renders N default stereo frames with the functional model and nothing else,
+// for counting cycles with perf (bench/cycles-per-pixel.sh): on a shared
+// machine whose clock and neighbours vary, cycles per pixel are steadier
+// than wall-clock rates. Usage: arp_frame_loop BILINEAR(0|1) THREADS MEMORIES_FILLED FRAMES
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+int main(int argc, char** argv) {
+  using namespace arp;
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: %s BILINEAR(0|1) THREADS MEMORIES_FILLED(1..4) FRAMES\n", argv[0]);
+    return 2;
+  }
+  const bool bilinear = std::atoi(argv[1]) != 0;
+  const int threads = std::atoi(argv[2]), filled = std::atoi(argv[3]), frames = std::atoi(argv[4]);
+  if (threads < 1 || filled < 1 || filled > 4 || frames < 0) {
+    std::fprintf(stderr, "%s: threads >= 1, memories 1..4, frames >= 0\n", argv[0]);
+    return 2;
+  }
+  dp::ArpConfig c;
+  c.pipeline.aa = bilinear ? dp::AaMode::Bilinear : dp::AaMode::Off;
+  const FunctionalModel model(c);
+  dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
+  const auto cm = host::make_calibration_pattern(c.memory.face_size);
+  for (int m = 0; m < filled; ++m)
+    host::load_into_memories(mem, m, cm, host::far_depth(mem.format()) - static_cast<uint32_t>(m));
+  std::vector<dp::OrientationSample> s;  // 200 deg/s, 1 kHz samples
+  for (int i = 0; i <= 40; ++i)
+    s.push_back({int64_t{i} * 1'000'000'000, dp::from_yaw_pitch_roll_deg(20.0 + 0.2 * i, 10.0, 5.0)});
+  const dp::OrientationStream o(s, "frame loop");
+  HmdFrame f;
+  RenderOptions ro;
+  ro.threads = threads;
+  for (int i = 0; i < frames; ++i) model.render(mem, o, 0, f, ro);
+  std::printf("%d frames of %zu pixels\n", frames, f.pixels.size());
+  return 0;
+}
