@@ -148,3 +148,33 @@ TEST(CubeFaceAddressGenerator, PositionsClampToTheFaceAndNonPowerOfTwoFacesWork)
   const CubeAddress c = generate_address(Vec3q{16384, 0, 0}, p);
   EXPECT_EQ(c.x, 150);
 }
+
+TEST(ReciprocalUnit, AlignedReciprocalGivesTheSameQuotientsAsTheNormalisedOne) {
+  // Every |ma| of the format, |sc| <= |ma| at both ends, zero and spread
+  // between, for each rounding mode and several unit configurations
+  // (including quotient shifts that become left shifts).
+  std::mt19937_64 rng(17);
+  const struct { int rot_frac, index_bits, recip_frac, newton, quot_frac; } units[] = {
+      {14, 8, 16, 1, 16}, {14, 4, 8, 0, 9}, {10, 6, 20, 2, 30}, {7, 3, 5, 0, 2}, {15, 10, 16, 1, 16}};
+  for (const auto& u : units)
+    for (Rounding mode : {Rounding::Floor, Rounding::HalfUp, Rounding::HalfEven}) {
+      const auto table = build_reciprocal_table(u.index_bits, u.recip_frac);
+      ReciprocalParams p;
+      p.lut = table.data();
+      p.index_bits = u.index_bits;
+      p.recip_frac = u.recip_frac;
+      p.newton_steps = u.newton;
+      p.rounding = RoundingSel(mode);
+      const int n_max = u.rot_frac + 1;
+      for (int64_t m = 1; m < (int64_t{1} << n_max); ++m) {
+        const Reciprocal r = reciprocal(m, p);
+        const int64_t ya = aligned_reciprocal(r, n_max);
+        std::uniform_int_distribution<int64_t> d(-m, m);
+        for (int64_t sc : {m, -m, int64_t{0}, int64_t{1}, int64_t{-1}, d(rng), d(rng), d(rng)}) {
+          ASSERT_EQ(multiply_aligned_reciprocal(sc, ya, u.recip_frac, n_max, u.quot_frac, p.rounding),
+                    multiply_reciprocal(sc, r, u.recip_frac, u.quot_frac, p.rounding))
+              << "m=" << m << " sc=" << sc << " mode=" << to_string(mode) << " rot_frac=" << u.rot_frac;
+        }
+      }
+    }
+}

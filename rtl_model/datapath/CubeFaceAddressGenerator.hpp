@@ -38,6 +38,7 @@ struct AddressArith {
   ReciprocalParams recip;  // recip.lut points into the owning AddressGeneratorParams
   RoundingSel div_rounding, texel_rounding;
   int quot_frac, texel_frac;
+  int n_max;  // bit length of the widest |ma|: rot_frac + 1
   int64_t face_size;
   int64_t max_pos;  // S * 2^texel_frac - 1
 };
@@ -91,9 +92,9 @@ inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p) {
   int64_t qs = 0, qt = 0;
   if (f.ma > 0) {
     if (p.divider == DividerKind::ReciprocalLut) {
-      const Reciprocal rc = reciprocal(f.ma, p.recip);
-      qs = multiply_reciprocal(f.sc, rc, p.recip.recip_frac, p.quot_frac, p.div_rounding);
-      qt = multiply_reciprocal(f.tc, rc, p.recip.recip_frac, p.quot_frac, p.div_rounding);
+      const int64_t ya = aligned_reciprocal(reciprocal(f.ma, p.recip), p.n_max);
+      qs = multiply_aligned_reciprocal(f.sc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
+      qt = multiply_aligned_reciprocal(f.tc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
     } else {
       qs = divide_exact(f.sc, f.ma, p.quot_frac, p.div_rounding);
       qt = divide_exact(f.tc, f.ma, p.quot_frac, p.div_rounding);

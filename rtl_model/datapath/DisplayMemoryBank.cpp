@@ -15,10 +15,10 @@ uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
 }
 
 DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f)
-    : fmt_(f), tiles_per_row_((f.face_size + kTile - 1) / kTile), empty_tile_(new uint64_t[kTile * kTile]) {
-  std::fill(empty_tile_.get(), empty_tile_.get() + kTile * kTile, fmt_.empty_word());
-  empty_table_.assign(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, empty_tile_.get());
-}
+    : fmt_(f),
+      tiles_per_row_((f.face_size + kTile - 1) / kTile),
+      empty_tile_(size_t{1} << kTileWordShift, f.empty_word()),
+      empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {}
 
 void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t depth) {
   const int S = fmt_.face_size;
@@ -30,22 +30,23 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   if (fmt_.depth_bits < 32 && (depth >> fmt_.depth_bits) != 0)
     throw std::out_of_range("depth code wider than the memory's depth format");
   Buffer& b = buffers_[back_];
-  auto& t = b.tables[face];
-  if (t.empty()) t = empty_table_;
-  uint64_t*& tile = t[static_cast<size_t>((y >> kTileShift) * tiles_per_row_ + (x >> kTileShift))];
-  if (tile == empty_tile_.get()) {
-    b.owned.emplace_back(new uint64_t[kTile * kTile]);
-    tile = b.owned.back().get();
-    std::fill(tile, tile + kTile * kTile, fmt_.empty_word());
+  constexpr size_t kWords = size_t{1} << kTileWordShift;
+  if (b.pool.empty()) b.pool.assign(kWords, fmt_.empty_word());  // tile 0: empty
+  auto& t = b.index[face];
+  if (t.empty()) t = empty_index_;
+  int32_t& tile = t[static_cast<size_t>((y >> kTileShift) * tiles_per_row_ + (x >> kTileShift))];
+  if (tile == 0) {
+    tile = static_cast<int32_t>(b.pool.size() >> kTileWordShift);
+    b.pool.resize(b.pool.size() + kWords, fmt_.empty_word());
   }
-  tile[((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1))] = (uint64_t{depth} << 32) | color;
+  b.pool[(static_cast<size_t>(tile) << kTileWordShift) + static_cast<size_t>(((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1)))] =
+      (uint64_t{depth} << 32) | color;
 }
 
 void DisplayMemoryBank::clear_back() {
   Buffer& b = buffers_[back_];
-  for (auto& t : b.tables) std::vector<uint64_t*>().swap(t);
-  b.owned.clear();
-  b.owned.shrink_to_fit();
+  for (auto& t : b.index) std::vector<int32_t>().swap(t);
+  std::vector<uint64_t>().swap(b.pool);
 }
 
 bool DisplayMemoryBank::vblank() {
@@ -55,12 +56,19 @@ bool DisplayMemoryBank::vblank() {
   return true;
 }
 
-size_t DisplayMemoryBank::tiles_allocated() const { return buffers_[0].owned.size() + buffers_[1].owned.size(); }
+size_t DisplayMemoryBank::tiles_allocated() const {
+  size_t n = 0;
+  for (const auto& b : buffers_)
+    if (!b.pool.empty()) n += (b.pool.size() >> kTileWordShift) - 1;
+  return n;
+}
 
 size_t DisplayMemoryBank::bytes_allocated() const {
-  size_t bytes = tiles_allocated() * kTile * kTile * sizeof(uint64_t);
-  for (const auto& b : buffers_)
-    for (const auto& t : b.tables) bytes += t.size() * sizeof(uint64_t*);
+  size_t bytes = 0;
+  for (const auto& b : buffers_) {
+    bytes += b.pool.capacity() * sizeof(uint64_t);
+    for (const auto& t : b.index) bytes += t.capacity() * sizeof(int32_t);
+  }
   return bytes;
 }
 

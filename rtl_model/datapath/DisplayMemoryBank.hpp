@@ -2,6 +2,10 @@
 // buffered. The host writes the back buffer and commits; the swap happens at
 // vertical blank. Storage is sparse in 32x32 tiles: a face or tile never
 // written costs no memory and reads as "empty" (depth code 2^depth_bits - 1).
+// Each buffer keeps its tiles in one pool addressed by 32-bit tile numbers
+// (tile 0 is the empty tile), so a texel is two plain indexed loads --
+// pool[index[tile] * 1024 + word] -- which the functional model's passes
+// can issue as vector gathers.
 // A texel is one 64-bit word: colour in the low 32 bits (R:G:B packed,
 // red highest), depth in the high 32 bits.
 #pragma once
@@ -38,6 +42,7 @@ class DisplayMemoryBank {
  public:
   static constexpr int kTileShift = 5;
   static constexpr int kTile = 1 << kTileShift;
+  static constexpr int kTileWordShift = 2 * kTileShift;  // 1024 words a tile
 
   explicit DisplayMemoryBank(const MemoryFormat& f);
   DisplayMemoryBank(const DisplayMemoryBank&) = delete;
@@ -56,34 +61,40 @@ class DisplayMemoryBank {
 
   // Pipeline port (front buffer).
   uint64_t read(int face, int x, int y) const { return fetch(front_, face, x, y); }
-  // Per-face tile table of the front buffer (never null: unwritten tiles point at a shared empty tile).
-  const uint64_t* const* front_tiles(int face) const { return table(front_, face); }
+  // The front buffer's tile pool: tile t holds words [t * 1024, (t + 1) * 1024); tile 0 is empty.
+  const uint64_t* front_pool() const { return pool(front_); }
+  // The front buffer's tile numbers of one face, row-major by tile (never null; 0 where never written).
+  const int32_t* front_tile_index(int face) const { return index(front_, face); }
   int tiles_per_row() const { return tiles_per_row_; }
   // Whether any texel of this face of the front buffer was written (an
   // unwritten face reads empty everywhere and can never win composition).
-  bool front_face_written(int face) const { return !buffers_[front_].tables[face].empty(); }
+  bool front_face_written(int face) const { return !buffers_[front_].index[face].empty(); }
 
-  size_t tiles_allocated() const;
-  size_t bytes_allocated() const;  // tile storage and per-face tables, both buffers
+  size_t tiles_allocated() const;  // written tiles, both buffers
+  size_t bytes_allocated() const;  // tile pools (capacity) and per-face tile tables, both buffers
 
  private:
   struct Buffer {
-    std::array<std::vector<uint64_t*>, 6> tables;  // empty vector: face never written
-    std::vector<std::unique_ptr<uint64_t[]>> owned;
+    std::array<std::vector<int32_t>, 6> index;  // empty vector: face never written
+    std::vector<uint64_t> pool;                 // empty until the first write; then tile 0 is the empty tile
   };
-  const uint64_t* const* table(int buf, int face) const {
-    const auto& t = buffers_[buf].tables[face];
-    return t.empty() ? empty_table_.data() : t.data();
+  const int32_t* index(int buf, int face) const {
+    const auto& t = buffers_[buf].index[face];
+    return t.empty() ? empty_index_.data() : t.data();
+  }
+  const uint64_t* pool(int buf) const {
+    const auto& p = buffers_[buf].pool;
+    return p.empty() ? empty_tile_.data() : p.data();
   }
   uint64_t fetch(int buf, int face, int x, int y) const {
-    const uint64_t* tile = table(buf, face)[(y >> kTileShift) * tiles_per_row_ + (x >> kTileShift)];
-    return tile[((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1))];
+    const int32_t t = index(buf, face)[(y >> kTileShift) * tiles_per_row_ + (x >> kTileShift)];
+    return pool(buf)[(static_cast<size_t>(t) << kTileWordShift) + static_cast<size_t>(((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1)))];
   }
 
   MemoryFormat fmt_;
   int tiles_per_row_;
-  std::unique_ptr<uint64_t[]> empty_tile_;
-  std::vector<uint64_t*> empty_table_;
+  std::vector<uint64_t> empty_tile_;   // what tile 0 reads as before a buffer has a pool
+  std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   std::array<Buffer, 2> buffers_;
   int front_ = 0, back_ = 1;
   bool committed_ = false;

@@ -66,10 +66,27 @@ inline Reciprocal reciprocal(int64_t m_in, const ReciprocalParams& p) {
   return {y, n};
 }
 
-// sc / m as signed Q1.quot_frac using the reciprocal: one multiply and shift.
+// sc / m as signed Q1.quot_frac using the reciprocal: one multiply and a
+// shift that depends on m's leading-one position n.
 inline int64_t multiply_reciprocal(int64_t sc, const Reciprocal& r, int recip_frac, int quot_frac,
                                    const RoundingSel& rs) {
   return rshift_round(sc * r.y, recip_frac + r.n - 1 - quot_frac, rs.half_sel, rs.even);
+}
+
+// The reciprocal unit's output stage: the normalised reciprocal shifted back
+// by the leading-one position (a denormalising shifter), so it has a fixed
+// binary point: y' = y * 2^(n_max - n), n_max = rot_frac + 1 (the widest |ma|).
+inline int64_t aligned_reciprocal(const Reciprocal& r, int n_max) {
+  return static_cast<int64_t>(static_cast<uint64_t>(r.y) << (n_max - r.n));
+}
+
+// sc / m from the aligned reciprocal: one multiply and a fixed shift. Equal to
+// multiply_reciprocal bit for bit: rounding v * 2^k at a shift k larger
+// rounds v identically in every mode (floor, half up, and half even, whose
+// tie bit moves with the value), and |sc| <= m keeps sc * y' below 2^61.
+inline int64_t multiply_aligned_reciprocal(int64_t sc, int64_t aligned, int recip_frac, int n_max, int quot_frac,
+                                           const RoundingSel& rs) {
+  return rshift_round(sc * aligned, recip_frac + n_max - 1 - quot_frac, rs.half_sel, rs.even);
 }
 
 // sc / m as signed Q1.quot_frac by exact integer division with the rounding mode.

@@ -66,17 +66,14 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
       layout_(fmt_),
       scan_(fmt_, cfg.pipeline) {
   const auto& w = cfg_.widths;
-  if (w.divider == DividerKind::ReciprocalLut && w.rot_frac <= 15 && w.recip_frac_bits <= 30) {
+  // Tabulate the reciprocal unit when its domain is small and its aligned
+  // output fits 32 bits (y' < 2^(recip_frac + 1 + n_max - 1)).
+  if (w.divider == DividerKind::ReciprocalLut && w.rot_frac <= 15 && w.recip_frac_bits + w.rot_frac + 1 <= 31) {
     const size_t domain = size_t{1} << (w.rot_frac + 1);  // |major| < 2^(rot_frac+1)
-    memo_y_.resize(domain);
-    memo_n_.resize(domain);
-    for (size_t m = 0; m < domain; ++m) {
-      const Reciprocal r = reciprocal(static_cast<int64_t>(m), addr_.recip);
-      memo_y_[m] = static_cast<uint32_t>(r.y);
-      memo_n_[m] = r.n;
-    }
-    memo_.y = memo_y_.data();
-    memo_.n = memo_n_.data();
+    memo_.resize(domain);
+    for (size_t m = 0; m < domain; ++m)
+      memo_[m] = static_cast<uint32_t>(aligned_reciprocal(reciprocal(static_cast<int64_t>(m), addr_.recip), addr_.n_max));
+    memo_view_.aligned = memo_.data();
   }
 }
 
@@ -119,7 +116,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   // flattened over the six faces (see passes::EyeSources).
   const int tpr = mem.bank(0, 0).tiles_per_row(), tpf = tpr * tpr;
   std::vector<passes::EyeSources> sources(static_cast<size_t>(E));
-  std::vector<std::vector<const uint64_t*>> flat;
+  std::vector<std::vector<int32_t>> flat;
   flat.reserve(static_cast<size_t>(E) * N);
   for (int e = 0; e < E; ++e) {
     passes::EyeSources& es = sources[static_cast<size_t>(e)];
@@ -132,8 +129,11 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
       if (!any) continue;
       flat.emplace_back(static_cast<size_t>(6) * tpf);
       for (int face = 0; face < 6; ++face)
-        std::copy(b.front_tiles(face), b.front_tiles(face) + tpf, flat.back().begin() + static_cast<ptrdiff_t>(face) * tpf);
-      es.flat[es.count++] = flat.back().data();
+        std::copy(b.front_tile_index(face), b.front_tile_index(face) + tpf,
+                  flat.back().begin() + static_cast<ptrdiff_t>(face) * tpf);
+      es.pool[es.count] = b.front_pool();
+      es.tiles[es.count] = flat.back().data();
+      ++es.count;
     }
   }
 
@@ -170,7 +170,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
                                 lens_.row_z(eye, y) + c0, a - c0, b - c0, rot_, rx.data(), ry.data(), rz.data());
         }
         if constexpr (D == DividerKind::ReciprocalLut)
-          passes::address_line_lut(rx.data(), ry.data(), rz.data(), n, addr_, memo_, face.data(), u.data(), v.data());
+          passes::address_line_lut(rx.data(), ry.data(), rz.data(), n, addr_, memo_view_, face.data(), u.data(), v.data());
         else
           passes::address_line_exact(rx.data(), ry.data(), rz.data(), n, addr_, face.data(), u.data(), v.data());
         if constexpr (A == AaMode::Off)

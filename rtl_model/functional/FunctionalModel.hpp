@@ -55,9 +55,8 @@ class FunctionalModel {
   dp::ChannelLayout layout_;
   dp::HmdScanOut scan_;
   // dp::reciprocal tabulated over its whole input domain (see LinePasses.hpp).
-  std::vector<uint32_t> memo_y_;
-  std::vector<int32_t> memo_n_;
-  passes::ReciprocalMemo memo_;
+  std::vector<uint32_t> memo_;  // the aligned reciprocal of every |ma|
+  passes::ReciprocalMemo memo_view_;
 };
 
 }  // namespace arp

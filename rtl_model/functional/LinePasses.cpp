@@ -33,17 +33,16 @@ void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, i
                       const ReciprocalMemo& memo_ref, int32_t* __restrict face, int32_t* __restrict u,
                       int32_t* __restrict v) {
   const AddressArith p = pref;  // a local copy: the stores cannot alias it
-  const int rf = p.recip.recip_frac, qf = p.quot_frac;
+  const int rf = p.recip.recip_frac, qf = p.quot_frac, nm = p.n_max;
   const RoundingSel rs = p.div_rounding;
   const ReciprocalMemo memo = memo_ref;
   if (memo.valid()) {
     for (int i = 0; i < n; ++i) {
       const FaceSelect f = select_face(Vec3q{rx[i], ry[i], rz[i]});
-      const int32_t mi = static_cast<int32_t>(f.ma);  // < 2^16: a 32-bit index gathers
-      const Reciprocal rc{memo.y[mi], memo.n[mi]};
+      const int64_t ya = memo.aligned[static_cast<int32_t>(f.ma)];  // ma < 2^16: a 32-bit index gathers
       const bool zero = f.ma == 0;  // a zero vector addresses the face centre
-      const int64_t qs = zero ? 0 : multiply_reciprocal(f.sc, rc, rf, qf, rs);
-      const int64_t qt = zero ? 0 : multiply_reciprocal(f.tc, rc, rf, qf, rs);
+      const int64_t qs = zero ? 0 : multiply_aligned_reciprocal(f.sc, ya, rf, nm, qf, rs);
+      const int64_t qt = zero ? 0 : multiply_aligned_reciprocal(f.tc, ya, rf, nm, qf, rs);
       face[i] = f.face;
       u[i] = static_cast<int32_t>(quotient_to_position(qs, p));
       v[i] = static_cast<int32_t>(quotient_to_position(qt, p));
@@ -117,35 +116,30 @@ void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v,
                      wx, wy);
 }
 
-void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* __restrict words) {
-  const uint64_t* const* table = src.flat[0];
-  for (int i = 0; i < n; ++i) words[i] = table[ref.tile[i]][ref.word[i]];
+namespace {
+constexpr int TW = DisplayMemoryBank::kTileWordShift;
+
+inline uint64_t texel(const uint64_t* pool, const int32_t* tiles, int32_t tile, int32_t word) {
+  return pool[(static_cast<int64_t>(tiles[tile]) << TW) + word];
 }
 
-void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n,
-                 uint64_t* __restrict w00, uint64_t* __restrict w10, uint64_t* __restrict w01,
-                 uint64_t* __restrict w11) {
-  const uint64_t* const* table = src.flat[0];
-  constexpr int kAhead = 16;
-  for (int i = 0; i < n; ++i) {
-    if (i + kAhead < n) {
-      __builtin_prefetch(table[t00.tile[i + kAhead]] + t00.word[i + kAhead]);
-      __builtin_prefetch(table[t01.tile[i + kAhead]] + t01.word[i + kAhead]);
-    }
-    const int32_t a = t00.tile[i];
-    const uint64_t* p = table[a];
-    if (t10.tile[i] == a && t01.tile[i] == a && t11.tile[i] == a) {
-      w00[i] = p[t00.word[i]];
-      w10[i] = p[t10.word[i]];
-      w01[i] = p[t01.word[i]];
-      w11[i] = p[t11.word[i]];
-    } else {
-      w00[i] = p[t00.word[i]];
-      w10[i] = table[t10.tile[i]][t10.word[i]];
-      w01[i] = table[t01.tile[i]][t01.word[i]];
-      w11[i] = table[t11.tile[i]][t11.word[i]];
-    }
-  }
+ARP_VECTOR_CLONES
+void fetch_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles, const int32_t* __restrict tile,
+                const int32_t* __restrict word, int n, uint64_t* __restrict out) {
+  for (int i = 0; i < n; ++i) out[i] = texel(pool, tiles, tile[i], word[i]);
+}
+}  // namespace
+
+void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words) {
+  fetch_impl(src.pool[0], src.tiles[0], ref.tile, ref.word, n, words);
+}
+
+void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n, uint64_t* w00,
+                 uint64_t* w10, uint64_t* w01, uint64_t* w11) {
+  fetch_impl(src.pool[0], src.tiles[0], t00.tile, t00.word, n, w00);
+  fetch_impl(src.pool[0], src.tiles[0], t10.tile, t10.word, n, w10);
+  fetch_impl(src.pool[0], src.tiles[0], t01.tile, t01.word, n, w01);
+  fetch_impl(src.pool[0], src.tiles[0], t11.tile, t11.word, n, w11);
 }
 
 ARP_VECTOR_CLONES
@@ -161,7 +155,7 @@ void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const Compositi
   const int count = K > 0 ? K : src.count;
   uint64_t w[16];
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < count; ++k) w[k] = src.flat[k][ref.tile[i]][ref.word[i]];
+    for (int k = 0; k < count; ++k) w[k] = texel(src.pool[k], src.tiles[k], ref.tile[i], ref.word[i]);
     out[i] = compose(w, count, cp).color;
   }
 }

@@ -19,21 +19,23 @@
 namespace arp::passes {
 
 // The reciprocal unit tabulated over its whole input domain: entry m is
-// exactly dp::reciprocal(m). Built only when the domain is small (rot_frac <= 15).
+// exactly dp::aligned_reciprocal(dp::reciprocal(m)). Built only when the
+// domain is small (rot_frac <= 15) and entries fit 32 bits.
 struct ReciprocalMemo {
-  const uint32_t* y = nullptr;
-  const int32_t* n = nullptr;  // 32-bit: byte gathers do not vectorise
-  bool valid() const { return y != nullptr; }
+  const uint32_t* aligned = nullptr;
+  bool valid() const { return aligned != nullptr; }
 };
 
 // The display memories one eye composites, in index order: those with any
-// face written. A face a memory never wrote reads through the shared empty
-// tile, so leaving out only wholly unwritten memories changes no result.
-// Each memory's tile pointers are flattened over its six faces (tile
-// face * tiles_per_face + row * tiles_per_row + column), one load per texel.
+// face written. A face a memory never wrote reads tile 0 (the empty tile),
+// so leaving out only wholly unwritten memories changes no result. Each
+// memory's tile numbers are flattened over its six faces (tile
+// face * tiles_per_face + row * tiles_per_row + column); a texel is
+// pool[tiles[tile] * 1024 + word].
 struct EyeSources {
   int count = 0;
-  const uint64_t* const* flat[16];
+  const uint64_t* pool[16];
+  const int32_t* tiles[16];
   int tiles_per_row = 0, tiles_per_face = 0;
 };
 
@@ -65,7 +67,7 @@ void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v,
 
 // Texel words of the eye's only memory (src.count == 1).
 void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words);
-// The four bilinear taps' words from the only memory: one tile lookup when all four share a tile.
+// The four bilinear taps' words from the only memory.
 void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n, uint64_t* w00,
                  uint64_t* w10, uint64_t* w01, uint64_t* w11);
 // Composition unit over a single memory's words.
