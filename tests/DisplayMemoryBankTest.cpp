@@ -17,11 +17,23 @@ TEST(DisplayMemoryBank, StorageIsSparse) {
   b.write(2, 500, 500, 1, 1);
   EXPECT_EQ(b.tiles_allocated(), 2u);
   // One face's tile table (16x16 tile numbers) plus the pool: the empty tile
-  // and two 8 KiB tiles (growth may have reserved up to one more).
+  // and two 8 KiB tiles (growth may have reserved one more).
   EXPECT_GE(b.bytes_allocated(), 3u * 32 * 32 * 8 + 256 * sizeof(int32_t));
   EXPECT_LE(b.bytes_allocated(), 4u * 32 * 32 * 8 + 256 * sizeof(int32_t));
   DisplayMemorySet set(MemoryConfig{}, 2);
   EXPECT_EQ(set.bytes_allocated(), 0u);  // 8 banks, 2 x 6 faces each, all free
+}
+
+TEST(DisplayMemoryBank, AFullCubeCostsLittleMoreThanItsTiles) {
+  DisplayMemoryBank b{MemoryFormat{}};
+  for (int f = 0; f < 6; ++f)
+    for (int y = 0; y < 512; y += 32)
+      for (int x = 0; x < 512; x += 32) b.write(f, x, y, 1, 1);
+  const size_t tiles = 6 * 256;
+  EXPECT_EQ(b.tiles_allocated(), tiles);
+  const size_t data = (tiles + 1) * 32 * 32 * 8;
+  EXPECT_GE(b.bytes_allocated(), data);
+  EXPECT_LE(b.bytes_allocated(), data * 5 / 4 + 6 * 256 * 4 + 32 * 32 * 8);  // growth slack <= a quarter
 }
 
 TEST(DisplayMemoryBank, DoubleBufferSwapsOnlyAtVblankAfterCommit) {

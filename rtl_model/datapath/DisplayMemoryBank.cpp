@@ -37,6 +37,8 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   int32_t& tile = t[static_cast<size_t>((y >> kTileShift) * tiles_per_row_ + (x >> kTileShift))];
   if (tile == 0) {
     tile = static_cast<int32_t>(b.pool.size() >> kTileWordShift);
+    if (b.pool.size() + kWords > b.pool.capacity())  // grow by a quarter, not double: bounded slack
+      b.pool.reserve(std::max(b.pool.size() + kWords, (b.pool.size() / kWords * 5 / 4 + 1) * kWords));
     b.pool.resize(b.pool.size() + kWords, fmt_.empty_word());
   }
   b.pool[(static_cast<size_t>(tile) << kTileWordShift) + static_cast<size_t>(((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1)))] =
