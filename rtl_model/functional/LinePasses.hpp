@@ -61,15 +61,22 @@ struct TexelRef {
 void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                        const EyeSources& src, TexelRef out);
 // The four bilinear taps of each pixel (00, 10, 01, 11) and their weights.
+// cross[i] is non-zero where the quad straddles a tile edge.
 void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                         int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
-                        TexelRef t11, uint32_t* wx, uint32_t* wy);
+                        TexelRef t11, uint32_t* wx, uint32_t* wy, int32_t* cross);
 
 // Texel words of the eye's only memory (src.count == 1).
 void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words);
-// The four bilinear taps' words from the only memory.
-void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, int n, uint64_t* w00,
-                 uint64_t* w10, uint64_t* w01, uint64_t* w11);
+// The four bilinear taps' words from the only memory: the tile number is
+// gathered once per quad and the four texels read relative to it; quads
+// that straddle a tile edge are then read again tap by tap.
+void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, const int32_t* cross,
+                 int n, uint64_t* w00, uint64_t* w10, uint64_t* w01, uint64_t* w11);
+// Composition over a single memory at each tap, then the bilinear blend.
+void compose1_blend_line(const uint64_t* w00, const uint64_t* w10, const uint64_t* w01, const uint64_t* w11,
+                         const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const dp::ChannelLayout& L,
+                         const dp::CompositionParams& cp, uint32_t* out);
 // Composition unit over a single memory's words.
 void compose1_line(const uint64_t* words, int n, const dp::CompositionParams& cp, uint32_t* out);
 // Fetch from every memory of the eye and composite (any src.count).
