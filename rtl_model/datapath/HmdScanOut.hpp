@@ -15,6 +15,8 @@ class HmdScanOut {
  public:
   HmdScanOut(const MemoryFormat& f, const PipelineConfig& p);
   int display_bits() const { return bits_; }
+  // True when memory and display widths match: to_display is the identity.
+  bool identity() const { return identity_; }
   // Display pixel, packed R:G:B with display_bits each (red highest).
   uint32_t to_display(uint32_t color) const {
     if (identity_) return color;

@@ -151,8 +151,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     std::vector<Segment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
     std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
-    std::vector<int32_t> cross(w);     // bilinear quads across a tile edge
-    std::vector<uint64_t> words(4 * w);
+    std::vector<int32_t> cross(w);     // bilinear quads across a tile edge, then their list
     std::vector<uint32_t> col(4 * w), wx(w), wy(w);
     auto ref = [&](int tap) { return passes::TexelRef{&refs[(2 * tap) * w], &refs[(2 * tap + 1) * w]}; };
     const int taps = A == AaMode::Bilinear ? 4 : 1;
@@ -174,29 +173,27 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
           passes::address_line_lut(rx.data(), ry.data(), rz.data(), n, addr_, memo_view_, face.data(), u.data(), v.data());
         else
           passes::address_line_exact(rx.data(), ry.data(), rz.data(), n, addr_, face.data(), u.data(), v.data());
-        if constexpr (A == AaMode::Off)
-          passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref(0));
-        else
-          passes::bilinear_refs_line(face.data(), u.data(), v.data(), n, T, S, src, ref(0), ref(1), ref(2), ref(3),
-                                     wx.data(), wy.data(), cross.data());
         uint32_t* dst = dst_line + c0;
-        if (src.count == 1) {  // one memory: fetch, then composite (and blend) vectorised
-          if constexpr (A == AaMode::Off) {
-            passes::fetch_line(src, ref(0), n, words.data());
-            passes::compose1_line(words.data(), n, comp_, dst);
-          } else {
-            passes::fetch4_line(src, ref(0), ref(1), ref(2), ref(3), cross.data(), n, &words[0], &words[w], &words[2 * w], &words[3 * w]);
-            passes::compose1_blend_line(&words[0], &words[w], &words[2 * w], &words[3 * w], wx.data(), wy.data(), n, T,
-                                        layout_, comp_, dst);
-          }
+        if (src.count == 1) {  // one memory: the fused single-memory passes
+          if constexpr (A == AaMode::Off)
+            passes::nearest_single_memory_line(src, face.data(), u.data(), v.data(), n, T, comp_, dst);
+          else
+            passes::bilinear_single_memory_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_,
+                                                cross.data(), dst);
         } else {
+          if constexpr (A == AaMode::Off)
+            passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref(0));
+          else
+            passes::bilinear_refs_line(face.data(), u.data(), v.data(), n, T, S, src, ref(0), ref(1), ref(2), ref(3),
+                                       wx.data(), wy.data(), cross.data());
           for (int k = 0; k < taps; ++k) passes::fetch_compose_line(src, ref(k), n, comp_, &col[static_cast<size_t>(k) * w]);
           if constexpr (A == AaMode::Off)
             std::copy(col.begin(), col.begin() + n, dst);
           else
             passes::blend_line(&col[0], &col[w], &col[2 * w], &col[3 * w], wx.data(), wy.data(), n, T, layout_, dst);
         }
-        for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(dst[x]);
+        if (!scan_.identity())
+          for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(dst[x]);
       }
       if (opt.photon_times) {
         int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];

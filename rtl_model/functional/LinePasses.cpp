@@ -1,5 +1,7 @@
 #include "LinePasses.hpp"
 
+#include <algorithm>
+
 namespace arp::passes {
 
 using namespace arp::dp;
@@ -124,63 +126,7 @@ inline uint64_t texel(const uint64_t* pool, const int32_t* tiles, int32_t tile, 
   return pool[(static_cast<int64_t>(tiles[tile]) << TW) + word];
 }
 
-ARP_VECTOR_CLONES
-void fetch_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles, const int32_t* __restrict tile,
-                const int32_t* __restrict word, int n, uint64_t* __restrict out) {
-  for (int i = 0; i < n; ++i) out[i] = texel(pool, tiles, tile[i], word[i]);
-}
 }  // namespace
-
-void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words) {
-  fetch_impl(src.pool[0], src.tiles[0], ref.tile, ref.word, n, words);
-}
-
-namespace {
-ARP_VECTOR_CLONES
-void fetch_quad_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles, const int32_t* __restrict t00,
-                     const int32_t* __restrict i00, const int32_t* __restrict i10, const int32_t* __restrict i01,
-                     const int32_t* __restrict i11, int n, uint64_t* __restrict w00, uint64_t* __restrict w10,
-                     uint64_t* __restrict w01, uint64_t* __restrict w11) {
-  for (int i = 0; i < n; ++i) {
-    const int64_t base = static_cast<int64_t>(tiles[t00[i]]) << TW;
-    w00[i] = pool[base + i00[i]];
-    w10[i] = pool[base + i10[i]];  // right only if tap 10 shares tap 00's tile: fixed up below
-    w01[i] = pool[base + i01[i]];
-    w11[i] = pool[base + i11[i]];
-  }
-}
-}  // namespace
-
-void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, const int32_t* cross,
-                 int n, uint64_t* w00, uint64_t* w10, uint64_t* w01, uint64_t* w11) {
-  const uint64_t* pool = src.pool[0];
-  const int32_t* tiles = src.tiles[0];
-  fetch_quad_impl(pool, tiles, t00.tile, t00.word, t10.word, t01.word, t11.word, n, w00, w10, w01, w11);
-  for (int i = 0; i < n; ++i) {  // quads across a tile edge (about 6 %): each tap from its own tile
-    if (!cross[i]) continue;
-    const int32_t a = t00.tile[i];
-    if (t10.tile[i] != a) w10[i] = texel(pool, tiles, t10.tile[i], t10.word[i]);
-    if (t01.tile[i] != a) w01[i] = texel(pool, tiles, t01.tile[i], t01.word[i]);
-    if (t11.tile[i] != a) w11[i] = texel(pool, tiles, t11.tile[i], t11.word[i]);
-  }
-}
-
-ARP_VECTOR_CLONES
-void compose1_blend_line(const uint64_t* w00, const uint64_t* w10, const uint64_t* w01, const uint64_t* w11,
-                         const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const ChannelLayout& Lref,
-                         const CompositionParams& cpref, uint32_t* __restrict out) {
-  const ChannelLayout L = Lref;
-  const CompositionParams cp = cpref;
-  for (int i = 0; i < n; ++i)
-    out[i] = bilinear_blend(compose(&w00[i], 1, cp).color, compose(&w10[i], 1, cp).color, compose(&w01[i], 1, cp).color,
-                            compose(&w11[i], 1, cp).color, wx[i], wy[i], texel_frac, L);
-}
-
-ARP_VECTOR_CLONES
-void compose1_line(const uint64_t* words, int n, const CompositionParams& cpref, uint32_t* __restrict out) {
-  const CompositionParams cp = cpref;
-  for (int i = 0; i < n; ++i) out[i] = compose(&words[i], 1, cp).color;
-}
 
 namespace {
 // K is the memory count when small enough to unroll; K == 0: src.count at run time.
@@ -211,6 +157,94 @@ void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, c
                 const uint32_t* wy, int n, int texel_frac, const ChannelLayout& Lref, uint32_t* __restrict out) {
   const ChannelLayout L = Lref;
   for (int i = 0; i < n; ++i) out[i] = bilinear_blend(c00[i], c10[i], c01[i], c11[i], wx[i], wy[i], texel_frac, L);
+}
+
+namespace {
+ARP_VECTOR_CLONES
+void bilinear_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
+                          const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
+                          int n, int T, int32_t S, int tpr, int tpf, const ChannelLayout& Lref,
+                          const CompositionParams& cpref, int32_t* __restrict cross, uint32_t* __restrict out) {
+  const ChannelLayout L = Lref;
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) {
+    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
+    const int32_t tile = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
+    const int64_t base = static_cast<int64_t>(tiles[tile]) << TW;
+    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
+    // Right for every tap only when the quad lies in one tile; the others are redone below.
+    const uint64_t w00 = pool[base + q0 + (t.x0 & TM)], w10 = pool[base + q0 + (t.x1 & TM)];
+    const uint64_t w01 = pool[base + q1 + (t.x0 & TM)], w11 = pool[base + q1 + (t.x1 & TM)];
+    out[i] = bilinear_blend(compose(&w00, 1, cp).color, compose(&w10, 1, cp).color, compose(&w01, 1, cp).color,
+                            compose(&w11, 1, cp).color, t.wx, t.wy, T, L);
+    cross[i] = ((t.x0 >> TS) ^ (t.x1 >> TS)) | ((t.y0 >> TS) ^ (t.y1 >> TS));
+  }
+}
+
+ARP_VECTOR_CLONES
+void nearest_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
+                         const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
+                         int n, int T, int tpr, int tpf, const CompositionParams& cpref, uint32_t* __restrict out) {
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) {
+    const int32_t tx = u[i] >> T, ty = v[i] >> T;
+    const uint64_t w = texel(pool, tiles, face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), ((ty & TM) << TS) + (tx & TM));
+    out[i] = compose(&w, 1, cp).color;
+  }
+}
+}  // namespace
+
+namespace {
+// The straddling quads, gathered by index: every tap from its own tile.
+ARP_VECTOR_CLONES
+void bilinear_list_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
+                        const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
+                        const int32_t* __restrict idx, int m, int T, int32_t S, int tpr, int tpf,
+                        const ChannelLayout& Lref, const CompositionParams& cpref, uint32_t* __restrict res) {
+  const ChannelLayout L = Lref;
+  const CompositionParams cp = cpref;
+  for (int j = 0; j < m; ++j) {
+    const int i = idx[j];
+    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
+    const int32_t fb = face[i] * tpf;
+    const int32_t r0 = fb + (t.y0 >> TS) * tpr, r1 = fb + (t.y1 >> TS) * tpr;
+    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
+    const uint64_t w00 = texel(pool, tiles, r0 + (t.x0 >> TS), q0 + (t.x0 & TM));
+    const uint64_t w10 = texel(pool, tiles, r0 + (t.x1 >> TS), q0 + (t.x1 & TM));
+    const uint64_t w01 = texel(pool, tiles, r1 + (t.x0 >> TS), q1 + (t.x0 & TM));
+    const uint64_t w11 = texel(pool, tiles, r1 + (t.x1 >> TS), q1 + (t.x1 & TM));
+    res[j] = bilinear_blend(compose(&w00, 1, cp).color, compose(&w10, 1, cp).color, compose(&w01, 1, cp).color,
+                            compose(&w11, 1, cp).color, t.wx, t.wy, T, L);
+  }
+}
+}  // namespace
+
+void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                 int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, int32_t* cross,
+                                 uint32_t* out) {
+  const uint64_t* pool = src.pool[0];
+  const int32_t* tiles = src.tiles[0];
+  const int tpr = src.tiles_per_row, tpf = src.tiles_per_face;
+  bilinear_single_impl(pool, tiles, face, u, v, n, T, S, tpr, tpf, L, cp, cross, out);
+  // Quads across a tile edge (about 6 %): list them without branches (cross
+  // is reused for the list), recompute them vectorised, write them back.
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const bool c = cross[i] != 0;
+    cross[m] = i;
+    m += c ? 1 : 0;
+  }
+  uint32_t res[256];
+  for (int j0 = 0; j0 < m; j0 += 256) {
+    const int k = std::min(256, m - j0);
+    bilinear_list_impl(pool, tiles, face, u, v, cross + j0, k, T, S, tpr, tpf, L, cp, res);
+    for (int j = 0; j < k; ++j) out[cross[j0 + j]] = res[j];
+  }
+}
+
+void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                int T, const CompositionParams& cp, uint32_t* out) {
+  nearest_single_impl(src.pool[0], src.tiles[0], face, u, v, n, T, src.tiles_per_row, src.tiles_per_face, cp, out);
 }
 
 }  // namespace arp::passes

@@ -4,9 +4,10 @@
 // pixel (tests/FunctionalModelTest proves it). Passes that vectorise are
 // compiled for x86-64-v4 (AVX-512) and a portable baseline, chosen at run time.
 //
-// Per line: rotate -> address (face, texel-space u, v) -> tap addresses ->
-// texel fetch (scalar: pointer-chasing through the sparse tile tables) ->
-// composition -> bilinear blend -> scan-out.
+// Per strip of a line: rotate -> address (face, texel-space u, v) -> then,
+// for an eye whose scene sits in one memory, one fused loop (tap addresses,
+// texel gathers, composition, blend); for several memories, tap addresses ->
+// fetch and composite per tap -> blend. Scan-out last.
 #pragma once
 #include <cstdint>
 
@@ -66,19 +67,18 @@ void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v,
                         int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
                         TexelRef t11, uint32_t* wx, uint32_t* wy, int32_t* cross);
 
-// Texel words of the eye's only memory (src.count == 1).
-void fetch_line(const EyeSources& src, TexelRef ref, int n, uint64_t* words);
-// The four bilinear taps' words from the only memory: the tile number is
-// gathered once per quad and the four texels read relative to it; quads
-// that straddle a tile edge are then read again tap by tap.
-void fetch4_line(const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, const int32_t* cross,
-                 int n, uint64_t* w00, uint64_t* w10, uint64_t* w01, uint64_t* w11);
-// Composition over a single memory at each tap, then the bilinear blend.
-void compose1_blend_line(const uint64_t* w00, const uint64_t* w10, const uint64_t* w01, const uint64_t* w11,
-                         const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const dp::ChannelLayout& L,
-                         const dp::CompositionParams& cp, uint32_t* out);
-// Composition unit over a single memory's words.
-void compose1_line(const uint64_t* words, int n, const dp::CompositionParams& cp, uint32_t* out);
+// The whole bilinear path for an eye with a single memory, fused into one
+// vectorised loop (tap addresses, one tile-number gather per quad, four texel
+// gathers, composition, blend); pixels whose quad straddles a tile edge are
+// then listed and recomputed tap by tap (vectorised over the list). out is
+// the memory-colour code per pixel; cross is scratch of n entries.
+void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                 int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
+                                 const dp::CompositionParams& cp, int32_t* cross, uint32_t* out);
+// The nearest-texel path for an eye with a single memory, fused likewise.
+void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                int texel_frac, const dp::CompositionParams& cp, uint32_t* out);
+
 // Fetch from every memory of the eye and composite (any src.count).
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const dp::CompositionParams& cp, uint32_t* out);
 
