@@ -18,8 +18,9 @@ TEST(DisplayMemoryBank, StorageIsSparse) {
   EXPECT_EQ(b.tiles_allocated(), 2u);
   // One face's tile table (16x16 tile numbers) plus the pool: the empty tile
   // and two 8 KiB tiles (growth may have reserved one more).
-  EXPECT_GE(b.bytes_allocated(), 3u * 32 * 32 * 8 + 256 * sizeof(int32_t));
-  EXPECT_LE(b.bytes_allocated(), 4u * 32 * 32 * 8 + 256 * sizeof(int32_t));
+  const size_t tile = DisplayMemoryBank::kTileWords * 8;  // 33 x 33 words: texels and apron
+  EXPECT_GE(b.bytes_allocated(), 3 * tile + 256 * sizeof(int32_t));
+  EXPECT_LE(b.bytes_allocated(), 4 * tile + 256 * sizeof(int32_t));
   DisplayMemorySet set(MemoryConfig{}, 2);
   EXPECT_EQ(set.bytes_allocated(), 0u);  // 8 banks, 2 x 6 faces each, all free
 }
@@ -31,9 +32,10 @@ TEST(DisplayMemoryBank, AFullCubeCostsLittleMoreThanItsTiles) {
       for (int x = 0; x < 512; x += 32) b.write(f, x, y, 1, 1);
   const size_t tiles = 6 * 256;
   EXPECT_EQ(b.tiles_allocated(), tiles);
-  const size_t data = (tiles + 1) * 32 * 32 * 8;
+  const size_t tile = DisplayMemoryBank::kTileWords * 8;
+  const size_t data = (tiles + 1) * tile;
   EXPECT_GE(b.bytes_allocated(), data);
-  EXPECT_LE(b.bytes_allocated(), data * 5 / 4 + 6 * 256 * 4 + 32 * 32 * 8);  // growth slack <= a quarter
+  EXPECT_LE(b.bytes_allocated(), data * 5 / 4 + 6 * 256 * 4 + tile);  // growth slack <= a quarter
 }
 
 TEST(DisplayMemoryBank, DoubleBufferSwapsOnlyAtVblankAfterCommit) {
@@ -66,6 +68,36 @@ TEST(DisplayMemoryBank, WritesOutsideTheCubeOrFormatAreRefused) {
   EXPECT_THROW(b.write(0, 0, 0, 1u << 24, 0), std::out_of_range);  // 25-bit colour into 8:8:8
   EXPECT_THROW(b.write(0, 0, 0, 0, 1u << 16), std::out_of_range);  // 17-bit depth into 16
   EXPECT_EQ(b.tiles_allocated(), 0u);
+}
+
+TEST(DisplayMemoryBank, ApronsMirrorTheNeighbouringTilesWhicheverIsWrittenFirst) {
+  // Every bilinear quad must find its four taps in the tile of its top-left
+  // tap: the apron of tile (tx, ty) holds column 0 of (tx+1, ty), row 0 of
+  // (tx, ty+1) and texel (0, 0) of (tx+1, ty+1). Write in two orders.
+  for (bool neighbours_first : {false, true}) {
+    DisplayMemoryBank b{MemoryFormat{}};
+    auto write_neighbours = [&] {
+      for (int i = 0; i < 32; ++i) {
+        b.write(1, 64, 32 + i, 1000 + i, 7);  // column 0 of tile (2, 1)
+        b.write(1, 32 + i, 64, 2000 + i, 7);  // row 0 of tile (1, 2)
+      }
+      b.write(1, 64, 64, 3000, 7);  // texel (0, 0) of tile (2, 2)
+    };
+    if (neighbours_first) write_neighbours();
+    b.write(1, 40, 40, 5, 5);  // tile (1, 1) itself
+    if (!neighbours_first) write_neighbours();
+    b.commit();
+    b.vblank();
+    const int32_t t = b.front_tile_index(1)[1 * b.tiles_per_row() + 1];
+    ASSERT_NE(t, 0);
+    const uint64_t* tile = b.front_pool() + static_cast<size_t>(t) * DisplayMemoryBank::kTileWords;
+    for (int i = 0; i < 32; ++i) {
+      EXPECT_EQ(texel_color(tile[DisplayMemoryBank::tile_word(32, i)]), 1000u + i) << neighbours_first;
+      EXPECT_EQ(texel_color(tile[DisplayMemoryBank::tile_word(i, 32)]), 2000u + i) << neighbours_first;
+    }
+    EXPECT_EQ(texel_color(tile[DisplayMemoryBank::tile_word(32, 32)]), 3000u);
+    EXPECT_EQ(texel_color(b.read(1, 40, 40)), 5u);
+  }
 }
 
 TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {

@@ -17,8 +17,42 @@ uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
 DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f)
     : fmt_(f),
       tiles_per_row_((f.face_size + kTile - 1) / kTile),
-      empty_tile_(size_t{1} << kTileWordShift, f.empty_word()),
+      empty_tile_(kTileWords, f.empty_word()),
       empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {}
+
+int32_t DisplayMemoryBank::back_tile(int face, int tx, int ty) {
+  Buffer& b = buffers_[back_];
+  constexpr size_t kWords = kTileWords;
+  if (b.pool.empty()) b.pool.assign(kWords, fmt_.empty_word());  // tile 0: empty
+  auto& t = b.index[face];
+  if (t.empty()) t = empty_index_;
+  const size_t slot = static_cast<size_t>(ty * tiles_per_row_ + tx);
+  if (t[slot] != 0) return t[slot];
+  const int32_t tile = static_cast<int32_t>(b.pool.size() / kWords);
+  if (b.pool.size() + kWords > b.pool.capacity())  // grow by a quarter, not double: bounded slack
+    b.pool.reserve(std::max(b.pool.size() + kWords, (b.pool.size() / kWords * 5 / 4 + 1) * kWords));
+  b.pool.resize(b.pool.size() + kWords, fmt_.empty_word());
+  t[slot] = tile;
+  // The new tile's apron copies what its right, bottom and bottom-right neighbours already hold.
+  const size_t base = static_cast<size_t>(tile) * kWords;
+  auto neighbour = [&](int nx, int ny) -> int32_t {
+    return (nx < tiles_per_row_ && ny < tiles_per_row_) ? t[static_cast<size_t>(ny * tiles_per_row_ + nx)] : 0;
+  };
+  if (const int32_t r = neighbour(tx + 1, ty))
+    for (int ly = 0; ly < kTile; ++ly)
+      b.pool[base + static_cast<size_t>(tile_word(kTile, ly))] = b.pool[static_cast<size_t>(r) * kWords + static_cast<size_t>(tile_word(0, ly))];
+  if (const int32_t d = neighbour(tx, ty + 1))
+    for (int lx = 0; lx < kTile; ++lx)
+      b.pool[base + static_cast<size_t>(tile_word(lx, kTile))] = b.pool[static_cast<size_t>(d) * kWords + static_cast<size_t>(tile_word(lx, 0))];
+  if (const int32_t c = neighbour(tx + 1, ty + 1))
+    b.pool[base + static_cast<size_t>(tile_word(kTile, kTile))] = b.pool[static_cast<size_t>(c) * kWords];
+  return tile;
+}
+
+void DisplayMemoryBank::put(int face, int tx, int ty, int lx, int ly, uint64_t word) {
+  const int32_t tile = back_tile(face, tx, ty);
+  buffers_[back_].pool[static_cast<size_t>(tile) * kTileWords + static_cast<size_t>(tile_word(lx, ly))] = word;
+}
 
 void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t depth) {
   const int S = fmt_.face_size;
@@ -29,20 +63,13 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
     throw std::out_of_range("colour code wider than the memory's colour format");
   if (fmt_.depth_bits < 32 && (depth >> fmt_.depth_bits) != 0)
     throw std::out_of_range("depth code wider than the memory's depth format");
-  Buffer& b = buffers_[back_];
-  constexpr size_t kWords = size_t{1} << kTileWordShift;
-  if (b.pool.empty()) b.pool.assign(kWords, fmt_.empty_word());  // tile 0: empty
-  auto& t = b.index[face];
-  if (t.empty()) t = empty_index_;
-  int32_t& tile = t[static_cast<size_t>((y >> kTileShift) * tiles_per_row_ + (x >> kTileShift))];
-  if (tile == 0) {
-    tile = static_cast<int32_t>(b.pool.size() >> kTileWordShift);
-    if (b.pool.size() + kWords > b.pool.capacity())  // grow by a quarter, not double: bounded slack
-      b.pool.reserve(std::max(b.pool.size() + kWords, (b.pool.size() / kWords * 5 / 4 + 1) * kWords));
-    b.pool.resize(b.pool.size() + kWords, fmt_.empty_word());
-  }
-  b.pool[(static_cast<size_t>(tile) << kTileWordShift) + static_cast<size_t>(((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1)))] =
-      (uint64_t{depth} << 32) | color;
+  const uint64_t word = (uint64_t{depth} << 32) | color;
+  const int tx = x >> kTileShift, ty = y >> kTileShift, lx = x & (kTile - 1), ly = y & (kTile - 1);
+  put(face, tx, ty, lx, ly, word);
+  // The texel also stands in the aprons of the tiles to its left, above, and above-left.
+  if (lx == 0 && tx > 0) put(face, tx - 1, ty, kTile, ly, word);
+  if (ly == 0 && ty > 0) put(face, tx, ty - 1, lx, kTile, word);
+  if (lx == 0 && ly == 0 && tx > 0 && ty > 0) put(face, tx - 1, ty - 1, kTile, kTile, word);
 }
 
 void DisplayMemoryBank::clear_back() {
@@ -61,7 +88,7 @@ bool DisplayMemoryBank::vblank() {
 size_t DisplayMemoryBank::tiles_allocated() const {
   size_t n = 0;
   for (const auto& b : buffers_)
-    if (!b.pool.empty()) n += (b.pool.size() >> kTileWordShift) - 1;
+    if (!b.pool.empty()) n += b.pool.size() / kTileWords - 1;
   return n;
 }
 

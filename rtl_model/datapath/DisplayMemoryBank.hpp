@@ -4,8 +4,11 @@
 // written costs no memory and reads as "empty" (depth code 2^depth_bits - 1).
 // Each buffer keeps its tiles in one pool addressed by 32-bit tile numbers
 // (tile 0 is the empty tile), so a texel is two plain indexed loads --
-// pool[index[tile] * 1024 + word] -- which the functional model's passes
-// can issue as vector gathers.
+// pool[index[tile] * 1089 + word] -- which the functional model's passes
+// can issue as vector gathers. A stored tile is 33 x 33 words: its 32 x 32
+// texels plus an apron, a copy of the right neighbour's first column and the
+// bottom neighbour's first row, so the four taps of any bilinear quad lie in
+// the tile of its top-left tap. Writes keep the aprons up to date.
 // A texel is one 64-bit word: colour in the low 32 bits (R:G:B packed,
 // red highest), depth in the high 32 bits.
 #pragma once
@@ -42,7 +45,10 @@ class DisplayMemoryBank {
  public:
   static constexpr int kTileShift = 5;
   static constexpr int kTile = 1 << kTileShift;
-  static constexpr int kTileWordShift = 2 * kTileShift;  // 1024 words a tile
+  static constexpr int kTileStride = kTile + 1;                    // words a stored row: 32 texels + apron
+  static constexpr int kTileWords = kTileStride * kTileStride;     // 1089 words a stored tile
+  // Word of local texel (lx, ly), 0 <= lx, ly <= 32 (32: the apron).
+  static constexpr int tile_word(int lx, int ly) { return ly * kTileStride + lx; }
 
   explicit DisplayMemoryBank(const MemoryFormat& f);
   DisplayMemoryBank(const DisplayMemoryBank&) = delete;
@@ -61,7 +67,7 @@ class DisplayMemoryBank {
 
   // Pipeline port (front buffer).
   uint64_t read(int face, int x, int y) const { return fetch(front_, face, x, y); }
-  // The front buffer's tile pool: tile t holds words [t * 1024, (t + 1) * 1024); tile 0 is empty.
+  // The front buffer's tile pool: tile t holds words [t * 1089, (t + 1) * 1089); tile 0 is empty.
   const uint64_t* front_pool() const { return pool(front_); }
   // The front buffer's tile numbers of one face, row-major by tile (never null; 0 where never written).
   const int32_t* front_tile_index(int face) const { return index(front_, face); }
@@ -88,8 +94,11 @@ class DisplayMemoryBank {
   }
   uint64_t fetch(int buf, int face, int x, int y) const {
     const int32_t t = index(buf, face)[(y >> kTileShift) * tiles_per_row_ + (x >> kTileShift)];
-    return pool(buf)[(static_cast<size_t>(t) << kTileWordShift) + static_cast<size_t>(((y & (kTile - 1)) << kTileShift) + (x & (kTile - 1)))];
+    return pool(buf)[static_cast<size_t>(t) * kTileWords + static_cast<size_t>(tile_word(x & (kTile - 1), y & (kTile - 1)))];
   }
+  // The pool number of tile (tx, ty) of a face in the back buffer, allocating it (with its apron) if new.
+  int32_t back_tile(int face, int tx, int ty);
+  void put(int face, int tx, int ty, int lx, int ly, uint64_t word);
 
   MemoryFormat fmt_;
   int tiles_per_row_;

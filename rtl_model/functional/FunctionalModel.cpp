@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <climits>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,10 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   std::vector<Mat3q> mats;
   for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
 
+  // Word offsets of tiles are int32: the largest buffer (6 faces of 16384^2
+  // texels, plus the empty tile) ends below 2^31 words.
+  static_assert((int64_t{6} * 512 * 512 + 1) * DisplayMemoryBank::kTileWords < INT32_MAX,
+                "tile word offsets must fit int32 for the largest face_size");
   // Per eye, the memories holding anything, each with its tile pointers
   // flattened over the six faces (see passes::EyeSources).
   const int tpr = mem.bank(0, 0).tiles_per_row(), tpf = tpr * tpr;
@@ -128,11 +133,13 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
       for (int face = 0; face < 6; ++face) any = any || b.front_face_written(face);
       if (!any) continue;
       flat.emplace_back(static_cast<size_t>(6) * tpf);
-      for (int face = 0; face < 6; ++face)
-        std::copy(b.front_tile_index(face), b.front_tile_index(face) + tpf,
-                  flat.back().begin() + static_cast<ptrdiff_t>(face) * tpf);
+      for (int face = 0; face < 6; ++face) {
+        const int32_t* tiles = b.front_tile_index(face);
+        for (int k = 0; k < tpf; ++k)  // tile numbers -> word offsets into the pool
+          flat.back()[static_cast<size_t>(face * tpf + k)] = tiles[k] * DisplayMemoryBank::kTileWords;
+      }
       es.pool[es.count] = b.front_pool();
-      es.tiles[es.count] = flat.back().data();
+      es.offset[es.count] = flat.back().data();
       ++es.count;
     }
   }
@@ -151,7 +158,6 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     std::vector<Segment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
     std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
-    std::vector<int32_t> cross(w);     // bilinear quads across a tile edge, then their list
     std::vector<uint32_t> col(4 * w), wx(w), wy(w);
     auto ref = [&](int tap) { return passes::TexelRef{&refs[(2 * tap) * w], &refs[(2 * tap + 1) * w]}; };
     const int taps = A == AaMode::Bilinear ? 4 : 1;
@@ -178,14 +184,13 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
           if constexpr (A == AaMode::Off)
             passes::nearest_single_memory_line(src, face.data(), u.data(), v.data(), n, T, comp_, dst);
           else
-            passes::bilinear_single_memory_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_,
-                                                cross.data(), dst);
+            passes::bilinear_single_memory_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_, dst);
         } else {
           if constexpr (A == AaMode::Off)
             passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref(0));
           else
             passes::bilinear_refs_line(face.data(), u.data(), v.data(), n, T, S, src, ref(0), ref(1), ref(2), ref(3),
-                                       wx.data(), wy.data(), cross.data());
+                                       wx.data(), wy.data());
           for (int k = 0; k < taps; ++k) passes::fetch_compose_line(src, ref(k), n, comp_, &col[static_cast<size_t>(k) * w]);
           if constexpr (A == AaMode::Off)
             std::copy(col.begin(), col.begin() + n, dst);

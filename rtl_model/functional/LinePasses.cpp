@@ -15,6 +15,7 @@ using namespace arp::dp;
 namespace {
 constexpr int TS = DisplayMemoryBank::kTileShift;
 constexpr int TM = DisplayMemoryBank::kTile - 1;
+constexpr int TR = DisplayMemoryBank::kTileStride;  // words a stored tile row (texels + apron)
 }  // namespace
 
 ARP_VECTOR_CLONES
@@ -76,7 +77,7 @@ void nearest_refs_impl(const int32_t* __restrict face, const int32_t* __restrict
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;  // the nearest texel: CubeAddress::x, y
     tile[i] = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS);
-    word[i] = ((ty & TM) << TS) + (tx & TM);
+    word[i] = (ty & TM) * TR + (tx & TM);
   }
 }
 }  // namespace
@@ -95,35 +96,32 @@ void bilinear_refs_impl(const int32_t* __restrict face, const int32_t* __restric
                         int32_t* __restrict a_t, int32_t* __restrict a_w, int32_t* __restrict b_t,
                         int32_t* __restrict b_w, int32_t* __restrict c_t, int32_t* __restrict c_w,
                         int32_t* __restrict d_t, int32_t* __restrict d_w, uint32_t* __restrict wx,
-                        uint32_t* __restrict wy, int32_t* __restrict cross) {
+                        uint32_t* __restrict wy) {
   for (int i = 0; i < n; ++i) {
     const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
     const int32_t base = face[i] * tpf;
     const int32_t r0 = base + (t.y0 >> TS) * tpr, r1 = base + (t.y1 >> TS) * tpr;
-    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
+    const int32_t q0 = (t.y0 & TM) * TR, q1 = (t.y1 & TM) * TR;
     a_t[i] = r0 + (t.x0 >> TS); a_w[i] = q0 + (t.x0 & TM);
     b_t[i] = r0 + (t.x1 >> TS); b_w[i] = q0 + (t.x1 & TM);
     c_t[i] = r1 + (t.x0 >> TS); c_w[i] = q1 + (t.x0 & TM);
     d_t[i] = r1 + (t.x1 >> TS); d_w[i] = q1 + (t.x1 & TM);
     wx[i] = t.wx;
     wy[i] = t.wy;
-    cross[i] = ((t.x0 >> TS) ^ (t.x1 >> TS)) | ((t.y0 >> TS) ^ (t.y1 >> TS));  // integer ops: the loop vectorises
   }
 }
 }  // namespace
 
 void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int T, int32_t S,
                         const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, uint32_t* wx,
-                        uint32_t* wy, int32_t* cross) {
+                        uint32_t* wy) {
   bilinear_refs_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, t00.tile, t00.word, t10.tile, t10.word, t01.tile, t01.word, t11.tile, t11.word,
-                     wx, wy, cross);
+                     wx, wy);
 }
 
 namespace {
-constexpr int TW = DisplayMemoryBank::kTileWordShift;
-
-inline uint64_t texel(const uint64_t* pool, const int32_t* tiles, int32_t tile, int32_t word) {
-  return pool[(static_cast<int64_t>(tiles[tile]) << TW) + word];
+inline uint64_t texel(const uint64_t* pool, const int32_t* offset, int32_t tile, int32_t word) {
+  return pool[static_cast<int64_t>(offset[tile]) + word];
 }
 
 }  // namespace
@@ -135,7 +133,7 @@ void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const Compositi
   const int count = K > 0 ? K : src.count;
   uint64_t w[16];
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < count; ++k) w[k] = texel(src.pool[k], src.tiles[k], ref.tile[i], ref.word[i]);
+    for (int k = 0; k < count; ++k) w[k] = texel(src.pool[k], src.offset[k], ref.tile[i], ref.word[i]);
     out[i] = compose(w, count, cp).color;
   }
 }
@@ -161,90 +159,47 @@ void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, c
 
 namespace {
 ARP_VECTOR_CLONES
-void bilinear_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
+void bilinear_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
                           const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
                           int n, int T, int32_t S, int tpr, int tpf, const ChannelLayout& Lref,
-                          const CompositionParams& cpref, int32_t* __restrict cross, uint32_t* __restrict out) {
+                          const CompositionParams& cpref, uint32_t* __restrict out) {
   const ChannelLayout L = Lref;
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
     const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
+    // All four taps lie in the tile of (x0, y0): x1 - x0 and y1 - y0 are 0 or
+    // 1, and a stored tile's apron holds its right and bottom neighbours' edges.
     const int32_t tile = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
-    const int64_t base = static_cast<int64_t>(tiles[tile]) << TW;
-    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
-    // Right for every tap only when the quad lies in one tile; the others are redone below.
-    const uint64_t w00 = pool[base + q0 + (t.x0 & TM)], w10 = pool[base + q0 + (t.x1 & TM)];
-    const uint64_t w01 = pool[base + q1 + (t.x0 & TM)], w11 = pool[base + q1 + (t.x1 & TM)];
+    const int64_t w0 = static_cast<int64_t>(offset[tile]) + (t.y0 & TM) * TR + (t.x0 & TM);
+    const int32_t dx = t.x1 - t.x0, dy = (t.y1 - t.y0) * TR;
+    const uint64_t w00 = pool[w0], w10 = pool[w0 + dx], w01 = pool[w0 + dy], w11 = pool[w0 + dy + dx];
     out[i] = bilinear_blend(compose(&w00, 1, cp).color, compose(&w10, 1, cp).color, compose(&w01, 1, cp).color,
                             compose(&w11, 1, cp).color, t.wx, t.wy, T, L);
-    cross[i] = ((t.x0 >> TS) ^ (t.x1 >> TS)) | ((t.y0 >> TS) ^ (t.y1 >> TS));
   }
 }
 
 ARP_VECTOR_CLONES
-void nearest_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
+void nearest_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
                          const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
                          int n, int T, int tpr, int tpf, const CompositionParams& cpref, uint32_t* __restrict out) {
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;
-    const uint64_t w = texel(pool, tiles, face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), ((ty & TM) << TS) + (tx & TM));
+    const uint64_t w = texel(pool, offset, face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), (ty & TM) * TR + (tx & TM));
     out[i] = compose(&w, 1, cp).color;
   }
 }
 }  // namespace
 
-namespace {
-// The straddling quads, gathered by index: every tap from its own tile.
-ARP_VECTOR_CLONES
-void bilinear_list_impl(const uint64_t* __restrict pool, const int32_t* __restrict tiles,
-                        const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
-                        const int32_t* __restrict idx, int m, int T, int32_t S, int tpr, int tpf,
-                        const ChannelLayout& Lref, const CompositionParams& cpref, uint32_t* __restrict res) {
-  const ChannelLayout L = Lref;
-  const CompositionParams cp = cpref;
-  for (int j = 0; j < m; ++j) {
-    const int i = idx[j];
-    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
-    const int32_t fb = face[i] * tpf;
-    const int32_t r0 = fb + (t.y0 >> TS) * tpr, r1 = fb + (t.y1 >> TS) * tpr;
-    const int32_t q0 = (t.y0 & TM) << TS, q1 = (t.y1 & TM) << TS;
-    const uint64_t w00 = texel(pool, tiles, r0 + (t.x0 >> TS), q0 + (t.x0 & TM));
-    const uint64_t w10 = texel(pool, tiles, r0 + (t.x1 >> TS), q0 + (t.x1 & TM));
-    const uint64_t w01 = texel(pool, tiles, r1 + (t.x0 >> TS), q1 + (t.x0 & TM));
-    const uint64_t w11 = texel(pool, tiles, r1 + (t.x1 >> TS), q1 + (t.x1 & TM));
-    res[j] = bilinear_blend(compose(&w00, 1, cp).color, compose(&w10, 1, cp).color, compose(&w01, 1, cp).color,
-                            compose(&w11, 1, cp).color, t.wx, t.wy, T, L);
-  }
-}
-}  // namespace
-
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
-                                 int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, int32_t* cross,
-                                 uint32_t* out) {
-  const uint64_t* pool = src.pool[0];
-  const int32_t* tiles = src.tiles[0];
-  const int tpr = src.tiles_per_row, tpf = src.tiles_per_face;
-  bilinear_single_impl(pool, tiles, face, u, v, n, T, S, tpr, tpf, L, cp, cross, out);
-  // Quads across a tile edge (about 6 %): list them without branches (cross
-  // is reused for the list), recompute them vectorised, write them back.
-  int m = 0;
-  for (int i = 0; i < n; ++i) {
-    const bool c = cross[i] != 0;
-    cross[m] = i;
-    m += c ? 1 : 0;
-  }
-  uint32_t res[256];
-  for (int j0 = 0; j0 < m; j0 += 256) {
-    const int k = std::min(256, m - j0);
-    bilinear_list_impl(pool, tiles, face, u, v, cross + j0, k, T, S, tpr, tpf, L, cp, res);
-    for (int j = 0; j < k; ++j) out[cross[j0 + j]] = res[j];
-  }
+                                 int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  bilinear_single_impl(src.pool[0], src.offset[0], face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, L, cp,
+                       out);
 }
 
 void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                 int T, const CompositionParams& cp, uint32_t* out) {
-  nearest_single_impl(src.pool[0], src.tiles[0], face, u, v, n, T, src.tiles_per_row, src.tiles_per_face, cp, out);
+  nearest_single_impl(src.pool[0], src.offset[0], face, u, v, n, T, src.tiles_per_row, src.tiles_per_face, cp, out);
 }
 
 }  // namespace arp::passes

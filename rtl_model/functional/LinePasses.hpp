@@ -30,13 +30,14 @@ struct ReciprocalMemo {
 // The display memories one eye composites, in index order: those with any
 // face written. A face a memory never wrote reads tile 0 (the empty tile),
 // so leaving out only wholly unwritten memories changes no result. Each
-// memory's tile numbers are flattened over its six faces (tile
-// face * tiles_per_face + row * tiles_per_row + column); a texel is
-// pool[tiles[tile] * 1024 + word].
+// memory's tiles are flattened over its six faces (tile face * tiles_per_face
+// + row * tiles_per_row + column) and given as word offsets into its pool
+// (tile number * 1089, below 2^31 for every valid face size), so a texel is
+// pool[offset[tile] + word] with word = row * 33 + column (DisplayMemoryBank).
 struct EyeSources {
   int count = 0;
   const uint64_t* pool[16];
-  const int32_t* tiles[16];
+  const int32_t* offset[16];
   int tiles_per_row = 0, tiles_per_face = 0;
 };
 
@@ -62,19 +63,17 @@ struct TexelRef {
 void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                        const EyeSources& src, TexelRef out);
 // The four bilinear taps of each pixel (00, 10, 01, 11) and their weights.
-// cross[i] is non-zero where the quad straddles a tile edge.
 void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                         int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
-                        TexelRef t11, uint32_t* wx, uint32_t* wy, int32_t* cross);
+                        TexelRef t11, uint32_t* wx, uint32_t* wy);
 
 // The whole bilinear path for an eye with a single memory, fused into one
-// vectorised loop (tap addresses, one tile-number gather per quad, four texel
-// gathers, composition, blend); pixels whose quad straddles a tile edge are
-// then listed and recomputed tap by tap (vectorised over the list). out is
-// the memory-colour code per pixel; cross is scratch of n entries.
+// vectorised loop: tap addresses, one tile-number gather per quad (the
+// tiles' aprons put all four taps in one tile), four texel gathers,
+// composition, blend. out is the memory-colour code per pixel.
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
-                                 const dp::CompositionParams& cp, int32_t* cross, uint32_t* out);
+                                 const dp::CompositionParams& cp, uint32_t* out);
 // The nearest-texel path for an eye with a single memory, fused likewise.
 void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                 int texel_frac, const dp::CompositionParams& cp, uint32_t* out);
