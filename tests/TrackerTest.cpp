@@ -1,0 +1,262 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <vector>
+
+#include "TestSupport.hpp"
+#include "rtl_model/datapath/InputError.hpp"
+#include "tracker/OculusReport.hpp"
+#include "tracker/SyntheticMotion.hpp"
+#include "tracker/TraceFile.hpp"
+
+using namespace arp::tracker;
+
+namespace {
+// An encoder written independently of the decoder: three 21-bit two's
+// complement fields at bits 63-43, 42-22, 21-1 of a big-endian 64-bit word.
+void pack21(uint8_t* out, int32_t x, int32_t y, int32_t z) {
+  const uint64_t m = 0x1FFFFF;
+  const uint64_t v = ((static_cast<uint64_t>(x) & m) << 43) | ((static_cast<uint64_t>(y) & m) << 22) |
+                     ((static_cast<uint64_t>(z) & m) << 1);
+  for (int i = 0; i < 8; ++i) out[i] = static_cast<uint8_t>(v >> (56 - 8 * i));
+}
+void put16(uint8_t* p, int v) { p[0] = static_cast<uint8_t>(v & 0xFF); p[1] = static_cast<uint8_t>((v >> 8) & 0xFF); }
+}  // namespace
+
+TEST(OculusReport, TwentyOneBitFieldsAtTheirExtremes) {
+  const int32_t lo = -(1 << 20), hi = (1 << 20) - 1;
+  const int32_t cases[][3] = {{0, 0, 0}, {1, -1, 2}, {lo, hi, lo}, {hi, lo, hi}, {-1, -1, -1}, {123456, -654321, 1000}};
+  for (const auto& c : cases) {
+    uint8_t b[8];
+    pack21(b, c[0], c[1], c[2]);
+    const auto v = unpack_21bit_triplet(b);
+    EXPECT_EQ(v[0], c[0]);
+    EXPECT_EQ(v[1], c[1]);
+    EXPECT_EQ(v[2], c[2]);
+  }
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int32_t> d(lo, hi);
+  for (int i = 0; i < 10000; ++i) {
+    const int32_t x = d(rng), y = d(rng), z = d(rng);
+    uint8_t b[8];
+    pack21(b, x, y, z);
+    const auto v = unpack_21bit_triplet(b);
+    ASSERT_EQ(v, (std::array<int32_t, 3>{x, y, z}));
+  }
+}
+
+TEST(OculusReport, Dk1ReportDecodesByteExactly) {
+  uint8_t r[64] = {};
+  r[0] = 1;
+  r[1] = 3;
+  put16(r + 2, 0xBEEF);
+  put16(r + 4, 0x1234);
+  put16(r + 6, -1234);
+  for (int s = 0; s < 3; ++s) {
+    pack21(r + 8 + 16 * s, 98066 + s, -s, 12 * s);   // about 9.81 m/s^2 on x
+    pack21(r + 16 + 16 * s, -(1 << 20), (1 << 20) - 1, s);
+  }
+  put16(r + 56, -5);
+  put16(r + 58, 0);
+  put16(r + 60, 32767);
+  ImuReport rep;
+  std::string err;
+  ASSERT_TRUE(decode_report(RiftModel::DK1, r, sizeof r, rep, err)) << err;
+  EXPECT_EQ(rep.sample_count, 3);
+  EXPECT_EQ(rep.timestamp, 0xBEEFu);
+  EXPECT_EQ(rep.last_command_id, 0x1234);
+  EXPECT_EQ(rep.temperature, -1234);
+  for (int s = 0; s < 3; ++s) {
+    EXPECT_EQ(rep.samples[s].accel[0], 98066 + s);
+    EXPECT_EQ(rep.samples[s].accel[1], -s);
+    EXPECT_EQ(rep.samples[s].gyro[0], -(1 << 20));
+    EXPECT_EQ(rep.samples[s].gyro[1], (1 << 20) - 1);
+  }
+  EXPECT_NEAR(accel_m_s2(rep.samples[0].accel[0]), 9.8066, 1e-9);
+  EXPECT_EQ(rep.magnetometer[0], -5);
+  EXPECT_EQ(rep.magnetometer[2], 32767);
+}
+
+TEST(OculusReport, Dk2ReportDecodesByteExactly) {
+  uint8_t r[64] = {};
+  r[0] = 11;
+  put16(r + 1, 0x0102);
+  r[3] = 2;
+  put16(r + 4, 60000);
+  put16(r + 6, 3150);
+  const uint32_t ts = 0xDEADBEEF;
+  for (int i = 0; i < 4; ++i) r[8 + i] = static_cast<uint8_t>(ts >> (8 * i));
+  pack21(r + 12, 1, 2, 3);
+  pack21(r + 20, 4, 5, 6);
+  pack21(r + 28, -7, -8, -9);
+  pack21(r + 36, 10, 11, 12);
+  put16(r + 44, 100);
+  put16(r + 46, -200);
+  put16(r + 48, 300);
+  ImuReport rep;
+  std::string err;
+  ASSERT_TRUE(decode_report(RiftModel::DK2, r, sizeof r, rep, err)) << err;
+  EXPECT_EQ(rep.sample_count, 2);
+  EXPECT_EQ(rep.timestamp, 0xDEADBEEFu);
+  EXPECT_EQ(rep.last_command_id, 0x0102);
+  EXPECT_EQ(rep.samples_since_start, 60000);
+  EXPECT_EQ(rep.temperature, 3150);
+  EXPECT_EQ(rep.samples[0].accel, (std::array<int32_t, 3>{1, 2, 3}));
+  EXPECT_EQ(rep.samples[0].gyro, (std::array<int32_t, 3>{4, 5, 6}));
+  EXPECT_EQ(rep.samples[1].accel, (std::array<int32_t, 3>{-7, -8, -9}));
+  EXPECT_EQ(rep.samples[1].gyro, (std::array<int32_t, 3>{10, 11, 12}));
+  EXPECT_EQ(rep.magnetometer, (std::array<int16_t, 3>{100, -200, 300}));
+}
+
+TEST(OculusReport, MalformedReportsAreRejectedWithAReason) {
+  uint8_t r[64] = {};
+  ImuReport rep;
+  std::string err;
+  r[0] = 1;
+  r[1] = 4;  // DK1 carries at most 3 samples
+  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 64, rep, err));
+  EXPECT_NE(err.find("sample count 4"), std::string::npos) << err;
+  r[1] = 1;
+  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 63, rep, err));  // short
+  EXPECT_NE(err.find("63 bytes"), std::string::npos) << err;
+  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 64, rep, err));  // wrong id
+  EXPECT_NE(err.find("id 1"), std::string::npos) << err;
+  r[0] = 11;
+  r[3] = 3;  // DK2 carries at most 2
+  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 64, rep, err));
+  EXPECT_FALSE(decode_report(RiftModel::DK2, nullptr, 0, rep, err));
+  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 0, rep, err));
+  r[3] = 0;  // no samples is a valid report
+  EXPECT_TRUE(decode_report(RiftModel::DK2, r, 64, rep, err));
+  EXPECT_EQ(rep.sample_count, 0);
+}
+
+TEST(OculusReport, RandomBytesNeverReadPastTheReport) {
+  // Each buffer is exactly `len` bytes on the heap, so ASan sees any overread.
+  std::mt19937_64 rng(99);
+  std::uniform_int_distribution<int> byte(0, 255), length(0, 80);
+  int accepted = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const size_t len = static_cast<size_t>(length(rng));
+    std::vector<uint8_t> buf(len);
+    for (auto& b : buf) b = static_cast<uint8_t>(byte(rng));
+    const RiftModel m = i % 2 ? RiftModel::DK1 : RiftModel::DK2;
+    if (len > 0 && i % 3 != 0) buf[0] = m == RiftModel::DK1 ? 1 : 11;
+    ImuReport rep;
+    std::string err;
+    if (decode_report(m, len ? buf.data() : nullptr, len, rep, err)) {
+      ++accepted;
+      ASSERT_LE(rep.sample_count, m == RiftModel::DK1 ? 3 : 2);
+      ASSERT_GE(len, kRiftReportSize);
+    } else {
+      ASSERT_FALSE(err.empty());
+    }
+  }
+  EXPECT_GT(accepted, 0);
+}
+
+TEST(TraceFile, RoundTripsWithAndWithoutPositions) {
+  arp::test::TempDir d;
+  SamplingSpec s;
+  s.duration_s = 0.05;
+  s.noise_deg = 0.5;
+  auto a = head_shake(glm::dvec3(0, 1, 0), 300.0, 2.0, s);
+  write_trace_csv(d.file("a.csv"), a);
+  const auto back = read_trace_csv(d.file("a.csv"));
+  ASSERT_EQ(back.size(), a.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(back[i].time_ps, a[i].time_ps);
+    EXPECT_NEAR(back[i].orientation.w, a[i].orientation.w, 1e-15);
+    EXPECT_NEAR(back[i].orientation.y, a[i].orientation.y, 1e-15);
+    EXPECT_FALSE(back[i].has_position);
+  }
+  for (auto& p : a) {
+    p.has_position = true;
+    p.position = glm::dvec3(1.5, 1.7, -2.25);
+  }
+  write_trace_csv(d.file("b.csv"), a);
+  const auto withpos = read_trace_csv(d.file("b.csv"));
+  EXPECT_TRUE(withpos.front().has_position);
+  EXPECT_DOUBLE_EQ(withpos.back().position.z, -2.25);
+}
+
+TEST(TraceFile, BadTracesNameTheFileLineAndReason) {
+  arp::test::TempDir d;
+  auto error_of = [&](const std::string& body) -> std::string {
+    std::ofstream(d.file("t.csv")) << body;
+    try {
+      read_trace_csv(d.file("t.csv"));
+    } catch (const arp::InputError& e) {
+      EXPECT_EQ(e.source(), d.file("t.csv"));
+      return e.place() + ": " + e.reason();
+    }
+    return "no error";
+  };
+  const std::string h = "time_s,qw,qx,qy,qz\n";
+  EXPECT_NE(error_of("").find("no header"), std::string::npos);
+  EXPECT_NE(error_of("# only a comment\n").find("no header"), std::string::npos);
+  EXPECT_NE(error_of(h).find("no samples"), std::string::npos);
+  EXPECT_NE(error_of("time,qw,qx,qy,qz\n0,1,0,0,0\n").find("line 1: header column 1"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,1,0,0\n").find("line 2: 4 columns"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,1,0,0,0\n0.1,one,0,0,0\n").find("line 3: qw 'one' is not a number"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,1,0,0,nan\n").find("not a finite number"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,0,0,0,0\n").find("length 0"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,2,0,0,0\n").find("unit quaternion"), std::string::npos);
+  EXPECT_NE(error_of(h + "1,1,0,0,0\n0.5,1,0,0,0\n").find("line 3: time 0.5 s is earlier"), std::string::npos);
+  EXPECT_NE(error_of(h + "1e300,1,0,0,0\n").find("outside"), std::string::npos);
+  EXPECT_NE(error_of(h + "0,1,0,0,0,\n").find("6 columns"), std::string::npos);
+  EXPECT_EQ(error_of("# a comment\n\n" + h + "  0 , 1 ,0,0,0\n0,1,0,0,0\n"), "no error");  // spaces, equal times
+  try {
+    read_trace_csv(d.file("missing.csv"));
+    FAIL();
+  } catch (const arp::InputError& e) {
+    EXPECT_NE(e.reason().find("cannot open"), std::string::npos);
+  }
+  EXPECT_THROW(write_trace_csv(d.file("no/folder/t.csv"), {PoseSample{}}), arp::InputError);
+}
+
+TEST(SyntheticMotion, ConstantRotationAtExtremeRates) {
+  SamplingSpec s;
+  s.duration_s = 0.1;
+  const auto fast = constant_rotation(glm::dvec3(0, 1, 0), 1000.0, s);  // 1000 deg/s at 1 kHz: 1 deg a sample
+  ASSERT_EQ(fast.size(), 101u);
+  for (size_t i = 1; i < fast.size(); ++i) {
+    const double step = glm::degrees(2.0 * std::acos(std::min(1.0, std::abs(glm::dot(fast[i].orientation, fast[i - 1].orientation)))));
+    ASSERT_NEAR(step, 1.0, 1e-9);
+    ASSERT_EQ(fast[i].time_ps - fast[i - 1].time_ps, 1'000'000'000);
+  }
+  EXPECT_NEAR(glm::length(fast[5].angular_velocity), glm::radians(1000.0), 1e-12);
+  const auto still = constant_rotation(glm::dvec3(1, 0, 0), 0.0, s);
+  for (const auto& p : still) ASSERT_DOUBLE_EQ(p.orientation.w, 1.0);
+  EXPECT_THROW(constant_rotation(glm::dvec3(0, 0, 0), 10.0, s), std::invalid_argument);
+  s.rate_hz = 0.0;
+  EXPECT_THROW(constant_rotation(glm::dvec3(0, 1, 0), 10.0, s), std::invalid_argument);
+}
+
+TEST(SyntheticMotion, HeadShakeReachesItsPeakVelocityAndPendulumItsAmplitude) {
+  SamplingSpec s;
+  s.duration_s = 1.0;
+  const auto shake = head_shake(glm::dvec3(0, 1, 0), 370.0, 1.5, s);  // the peak of real heads
+  double peak = 0.0;
+  for (size_t i = 1; i < shake.size(); ++i) {
+    const double d = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(shake[i].orientation, shake[i - 1].orientation))));
+    peak = std::max(peak, glm::degrees(d) * s.rate_hz);
+  }
+  EXPECT_NEAR(peak, 370.0, 370.0 * 0.005);
+  const auto swing = pendulum(glm::dvec3(0, 0, 1), 30.0, 2.0, s);
+  EXPECT_NEAR(glm::degrees(glm::angle(swing.front().orientation)), 30.0, 1e-9);
+  EXPECT_NEAR(glm::degrees(glm::angle(swing[1000].orientation)), 30.0, 1e-6);  // half a period on: the other extreme
+}
+
+TEST(SyntheticMotion, NoiseIsSeeded) {
+  SamplingSpec s;
+  s.duration_s = 0.01;
+  s.noise_deg = 1.0;
+  const auto a = constant_rotation(glm::dvec3(0, 1, 0), 50.0, s), b = constant_rotation(glm::dvec3(0, 1, 0), 50.0, s);
+  s.seed = 2;
+  const auto c = constant_rotation(glm::dvec3(0, 1, 0), 50.0, s);
+  EXPECT_EQ(a[5].orientation, b[5].orientation);
+  EXPECT_NE(a[5].orientation, c[5].orientation);
+}

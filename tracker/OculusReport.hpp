@@ -1,0 +1,54 @@
+// Decoding the Oculus Rift DK1 and DK2 IMU input reports (USB HID, 64 bytes,
+// 1000 Hz; layout as in the open drivers, brief §5). Reports are untrusted:
+// the report id, every length and every count is checked, and a malformed
+// report is rejected with a reason -- never read past its end.
+//
+// DK1, report id 1:  [1] samples (<= 3), [2-3] timestamp ms (u16), [4-5] last
+//   command id, [6-7] temperature (s16, 0.01 degC), 16-byte samples from [8]
+//   (accel 8 bytes, gyro 8 bytes), magnetometer s16 at [56], [58], [60].
+// DK2, report id 11: [1-2] last command id, [3] samples (<= 2), [4-5] samples
+//   since start, [6-7] temperature, [8-11] timestamp us (u32), samples from
+//   [12], magnetometer s16 at [44], [46], [48].
+// Multi-byte integers are little-endian, except the samples: each 8-byte
+// block packs three signed 21-bit values big-endian (bits 63-43, 42-22, 21-1).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace arp::tracker {
+
+enum class RiftModel : uint8_t { DK1, DK2 };
+
+struct ImuSample {
+  std::array<int32_t, 3> accel;  // 1e-4 m/s^2
+  std::array<int32_t, 3> gyro;   // 1e-4 rad/s
+};
+
+struct ImuReport {
+  RiftModel model = RiftModel::DK1;
+  int sample_count = 0;
+  uint32_t timestamp = 0;        // DK1: ms (16-bit, wraps); DK2: us (32-bit, wraps)
+  uint16_t last_command_id = 0;
+  int16_t temperature = 0;       // 0.01 degC
+  uint16_t samples_since_start = 0;  // DK2 only
+  std::array<ImuSample, 3> samples{};
+  std::array<int16_t, 3> magnetometer{};  // 1e-4 gauss
+};
+
+constexpr size_t kRiftReportSize = 64;
+constexpr uint8_t kDk1ReportId = 1, kDk2ReportId = 11;
+
+// Three signed 21-bit values from 8 bytes (big-endian, bits 63-43, 42-22, 21-1).
+std::array<int32_t, 3> unpack_21bit_triplet(const uint8_t* eight_bytes);
+
+// Decodes one input report of the given model. On failure returns false and
+// says why in `error` (the report id, length or count that is wrong).
+bool decode_report(RiftModel model, const uint8_t* data, size_t length, ImuReport& out, std::string& error);
+
+// SI units of the raw fields.
+inline double accel_m_s2(int32_t raw) { return raw * 1e-4; }
+inline double gyro_rad_s(int32_t raw) { return raw * 1e-4; }
+
+}  // namespace arp::tracker

@@ -1,0 +1,129 @@
+#include "TraceFile.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "rtl_model/datapath/InputError.hpp"
+
+namespace arp::tracker {
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream ss(line);
+  while (std::getline(ss, cur, ',')) out.push_back(cur);
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+std::vector<PoseSample> read_trace_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open the trace file");
+  std::vector<PoseSample> out;
+  std::string line;
+  size_t line_no = 0, columns = 0;
+  static const char* kNames[8] = {"time_s", "qw", "qx", "qy", "qz", "px", "py", "pz"};
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const std::string where = "line " + std::to_string(line_no);
+    auto fields = split(t);
+    for (auto& f : fields) f = trim(f);
+    if (columns == 0) {  // the header
+      if (fields.size() != 5 && fields.size() != 8)
+        throw InputError(path, where, "header must be time_s,qw,qx,qy,qz or time_s,qw,qx,qy,qz,px,py,pz");
+      for (size_t i = 0; i < fields.size(); ++i)
+        if (fields[i] != kNames[i])
+          throw InputError(path, where, "header column " + std::to_string(i + 1) + " is '" + fields[i] + "', expected '" +
+                                            kNames[i] + "'");
+      columns = fields.size();
+      continue;
+    }
+    if (fields.size() != columns)
+      throw InputError(path, where, std::to_string(fields.size()) + " columns, the header has " + std::to_string(columns));
+    double v[8];
+    for (size_t i = 0; i < columns; ++i) {
+      const char* s = fields[i].c_str();
+      char* end = nullptr;
+      errno = 0;
+      v[i] = std::strtod(s, &end);
+      if (fields[i].empty() || end == s || *end != '\0')
+        throw InputError(path, where, std::string(kNames[i]) + " '" + fields[i] + "' is not a number");
+      if (!std::isfinite(v[i]) || errno == ERANGE)
+        throw InputError(path, where, std::string(kNames[i]) + " '" + fields[i] + "' is not a finite number");
+    }
+    if (std::abs(v[0]) > 9.0e6)  // the int64 picosecond timeline spans +-106 days
+      throw InputError(path, where, "time_s " + fields[0] + " is outside +-9e6 s");
+    const double n = std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
+    if (!(std::abs(n - 1.0) <= 1e-3))
+      throw InputError(path, where, "quaternion has length " + std::to_string(n) + "; a rotation needs a unit quaternion");
+    PoseSample p;
+    p.time_ps = std::llround(v[0] * 1e12);
+    p.orientation = glm::dquat(v[1] / n, v[2] / n, v[3] / n, v[4] / n);
+    if (columns == 8) {
+      p.has_position = true;
+      p.position = glm::dvec3(v[5], v[6], v[7]);
+    }
+    if (!out.empty() && p.time_ps < out.back().time_ps)
+      throw InputError(path, where, "time " + fields[0] + " s is earlier than the previous sample's");
+    out.push_back(p);
+  }
+  if (columns == 0) throw InputError(path, "", "no header line (time_s,qw,qx,qy,qz[,px,py,pz])");
+  if (out.empty()) throw InputError(path, "", "no samples after the header");
+  return out;
+}
+
+void write_trace_csv(const std::string& path, const std::vector<PoseSample>& samples) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(path, "", "folder " + dir.string() + " does not exist");
+  bool positions = !samples.empty();
+  for (const auto& s : samples) positions = positions && s.has_position;
+  const fs::path tmp = dir / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  {
+    std::FILE* f = std::fopen(tmp.c_str(), "w");
+    if (!f) throw InputError(path, "", "cannot write the trace file");
+    std::fprintf(f, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
+                 positions ? ", position in metres" : "");
+    std::fprintf(f, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n");
+    bool ok = true;
+    for (const auto& s : samples) {
+      const auto& q = s.orientation;
+      ok = ok && std::fprintf(f, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y,
+                              q.z) > 0;
+      if (positions) ok = ok && std::fprintf(f, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
+      ok = ok && std::fputc('\n', f) != EOF;
+    }
+    ok = (std::fclose(f) == 0) && ok;
+    if (!ok) {
+      fs::remove(tmp, ec);
+      throw InputError(path, "", "writing the trace failed");
+    }
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError(path, "", "cannot move the finished trace into place: " + ec.message());
+  }
+}
+
+}  // namespace arp::tracker
