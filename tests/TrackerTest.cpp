@@ -260,3 +260,71 @@ TEST(SyntheticMotion, NoiseIsSeeded) {
   EXPECT_EQ(a[5].orientation, b[5].orientation);
   EXPECT_NE(a[5].orientation, c[5].orientation);
 }
+
+#include "tracker/DriftScenario.hpp"
+#include "tracker/Fusion.hpp"
+#include "tracker/SyntheticImu.hpp"
+
+TEST(Fusion, NoiselessGyroIntegrationFollowsTheTruth) {
+  SamplingSpec s;
+  s.duration_s = 2.0;
+  const auto truth = constant_rotation(glm::normalize(glm::dvec3(1, 2, 3)), 1000.0, s);
+  const auto imu = synthesize_imu(truth, ImuNoise{});
+  FusionParams p;
+  p.correct_tilt = p.estimate_bias = false;
+  Fusion f(p, truth.front().orientation);
+  for (size_t i = 1; i < imu.size(); ++i) f.update(imu[i].gyro, imu[i].accel, 1e-3);
+  EXPECT_LT(angle_between_deg(f.orientation(), truth.back().orientation), 1e-6);
+  f.update(glm::dvec3(1, 0, 0), glm::dvec3(0, 9.8, 0), 0.0);  // a repeated timestamp changes nothing
+  f.update(glm::dvec3(1, 0, 0), glm::dvec3(0, 9.8, 0), -1e-3);
+  EXPECT_LT(angle_between_deg(f.orientation(), truth.back().orientation), 1e-6);
+}
+
+TEST(Fusion, TiltCorrectionAndBiasEstimationBoundTheDrift) {
+  FusionParams raw;
+  raw.correct_tilt = raw.estimate_bias = false;
+  FusionParams tilt;
+  tilt.estimate_bias = false;
+  const DriftResult r = run_drift(raw, 30.0), t = run_drift(tilt, 30.0), full = run_drift(FusionParams{}, 30.0);
+  EXPECT_GT(r.total_deg, 15.0);     // 0.71 deg/s of bias over 30 s, uncorrected
+  EXPECT_LT(t.tilt_deg, 3.0);       // gravity holds the tilt ...
+  EXPECT_GT(t.total_deg, 5.0);      // ... but not the yaw
+  EXPECT_LT(full.tilt_deg, 0.2);
+  EXPECT_LT(full.bias_error_deg_s, 0.05);
+  EXPECT_LT(full.total_deg, 3.0);
+  EXPECT_LT(full.total_deg * 5.0, r.total_deg);
+}
+
+TEST(SyntheticImu, AtRestTheAccelerometerReadsGravityUp) {
+  SamplingSpec s;
+  s.duration_s = 0.0;
+  auto still = constant_rotation(glm::dvec3(0, 1, 0), 0.0, s);
+  auto imu = synthesize_imu(still, ImuNoise{});
+  ASSERT_EQ(imu.size(), 1u);
+  EXPECT_DOUBLE_EQ(imu[0].accel.y, kStandardGravity);
+  still[0].orientation = glm::angleAxis(glm::radians(90.0), glm::dvec3(1, 0, 0));  // looking straight up
+  imu = synthesize_imu(still, ImuNoise{});
+  EXPECT_NEAR(imu[0].accel.z, -kStandardGravity, 1e-12);  // world up is where the face points: the head's -z
+  still[0].has_angular_velocity = false;
+  EXPECT_THROW(synthesize_imu(still, ImuNoise{}), std::invalid_argument);
+}
+
+TEST(Prediction, ExactForConstantRotationAndGrowingWithHorizonOtherwise) {
+  SamplingSpec s;
+  s.duration_s = 1.0;
+  const auto spin = constant_rotation(glm::normalize(glm::dvec3(0, 1, 1)), 370.0, s);
+  for (int h : {0, 1, 16, 100})
+    EXPECT_LT(angle_between_deg(predict(spin[10].orientation, spin[10].angular_velocity, h * 1e-3),
+                                spin[10 + static_cast<size_t>(h)].orientation), 1e-9);
+  const auto shake = head_shake(glm::dvec3(0, 1, 0), 200.0, 1.0, s);
+  double prev = -1.0;
+  for (int h : {0, 10, 50, 100}) {
+    double worst = 0.0;
+    for (size_t i = 0; i + static_cast<size_t>(h) < shake.size(); ++i)
+      worst = std::max(worst, angle_between_deg(predict(shake[i].orientation, shake[i].angular_velocity, h * 1e-3),
+                                                shake[i + static_cast<size_t>(h)].orientation));
+    EXPECT_GT(worst, prev);
+    prev = worst;
+  }
+  EXPECT_THROW(predict(glm::dquat(1, 0, 0, 0), glm::dvec3(0), -0.001), std::invalid_argument);
+}

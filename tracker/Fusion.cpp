@@ -1,0 +1,52 @@
+#include "Fusion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "SyntheticImu.hpp"
+
+namespace arp::tracker {
+
+glm::dquat integrate(const glm::dquat& q, const glm::dvec3& w, double dt) {
+  const double rate = glm::length(w);
+  if (rate * dt < 1e-300) return q;
+  return glm::normalize(q * glm::angleAxis(rate * dt, w / rate));  // head-frame rate: compose on the right
+}
+
+glm::dquat predict(const glm::dquat& q, const glm::dvec3& w, double horizon_s) {
+  if (!(horizon_s >= 0.0) || !std::isfinite(horizon_s)) throw std::invalid_argument("prediction horizon must be >= 0");
+  return integrate(q, w, horizon_s);
+}
+
+double angle_between_deg(const glm::dquat& a, const glm::dquat& b) {
+  const double d = std::min(1.0, std::abs(glm::dot(glm::normalize(a), glm::normalize(b))));
+  return glm::degrees(2.0 * std::acos(d));
+}
+
+Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)) {}
+
+void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) return;  // a repeated or backward timestamp adds nothing
+  rate_ = gyro - bias_;
+  q_ = integrate(q_, rate_, dt);
+  const double a = glm::length(accel);
+  const bool still = std::abs(a - kStandardGravity) < p_.gravity_tolerance && glm::length(rate_) < p_.still_rate;
+  if (!still) return;
+  if (p_.estimate_bias) {
+    const double k = std::min(1.0, dt / p_.bias_time_constant);
+    bias_ += k * (gyro - bias_);  // still: the true rate is about zero, the reading is the bias
+  }
+  if (p_.correct_tilt) {
+    const glm::dvec3 up_measured = accel / a;
+    const glm::dvec3 up_predicted = glm::conjugate(q_) * glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 axis = glm::cross(up_measured, up_predicted);
+    const double s = glm::length(axis);
+    if (s > 1e-12) {
+      const double err = std::atan2(s, glm::dot(up_measured, up_predicted));
+      q_ = glm::normalize(q_ * glm::angleAxis(std::min(1.0, p_.tilt_gain * dt) * err, axis / s));
+    }
+  }
+}
+
+}  // namespace arp::tracker
