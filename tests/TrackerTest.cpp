@@ -328,3 +328,68 @@ TEST(Prediction, ExactForConstantRotationAndGrowingWithHorizonOtherwise) {
   }
   EXPECT_THROW(predict(glm::dquat(1, 0, 0, 0), glm::dvec3(0), -0.001), std::invalid_argument);
 }
+
+#include "tracker/DeviceClock.hpp"
+
+TEST(DeviceClock, Dk1MillisecondCounterUnwrapsAcrossItsWrap) {
+  DeviceClock c(16, 1'000'000'000);  // 16-bit ms
+  int64_t last = -1;
+  int wraps = 0;
+  for (int64_t ms = 65000; ms < 67000; ++ms) {  // crosses 65536
+    const auto m = c.map(static_cast<uint64_t>(ms) & 0xFFFF, (ms - 65000) * 1'000'000'000 + 300'000'000);
+    ASSERT_FALSE(m.backwards);
+    ASSERT_GT(m.time_ps, last);
+    wraps += m.wrapped;
+    last = m.time_ps;
+  }
+  EXPECT_EQ(wraps, 1);
+  EXPECT_EQ(c.unwrapped_ticks(), 1999);
+  EXPECT_EQ(last, 300'000'000 + int64_t{1999} * 1'000'000'000);  // anchored at the first arrival
+}
+
+TEST(DeviceClock, BackwardStepsAreFlaggedAndHeld) {
+  DeviceClock c(32, 1'000'000);  // 32-bit us
+  c.map(1000, 0);
+  const auto a = c.map(2000, 1'000'000'000);
+  const auto b = c.map(1995, 1'000'000'000);  // 5 us back
+  EXPECT_TRUE(b.backwards);
+  EXPECT_EQ(b.time_ps, a.time_ps);
+  const auto d = c.map(3000, 2'000'000'000);
+  EXPECT_FALSE(d.backwards);
+  EXPECT_EQ(d.time_ps, a.time_ps + 1'000'000'000);
+  EXPECT_THROW(DeviceClock(1, 1), std::invalid_argument);
+  EXPECT_THROW(DeviceClock(16, 0), std::invalid_argument);
+}
+
+TEST(DeviceClock, SkewIsEstimatedFromArrivalsWithJitter) {
+  // The host runs 100 ppm faster than the device; arrivals jitter by 0-1 ms.
+  DeviceClock c(32, 1'000'000, 10.0);
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int64_t> jitter(0, 1'000'000'000);
+  DeviceClock::Mapped m{};
+  for (int64_t ms = 0; ms <= 120'000; ++ms) {  // two minutes of 1 kHz reports
+    const int64_t device_ps = ms * 1'000'000'000;
+    const int64_t arrival = static_cast<int64_t>(static_cast<double>(device_ps) * (1.0 + 100e-6)) + jitter(rng);
+    m = c.map(static_cast<uint64_t>(ms * 1000) & 0xFFFFFFFF, arrival);
+  }
+  EXPECT_NEAR(c.skew_ppm(), 100.0, 1.0);
+  // Two minutes of device time map onto the host's two minutes and 12 ms, within the jitter.
+  const double host_end = 120.0 * (1.0 + 100e-6);
+  EXPECT_NEAR(static_cast<double>(m.time_ps) * 1e-12, host_end, 1.5e-3);
+}
+
+TEST(DeviceClock, Dk2MicrosecondCounterOverTwoHours) {
+  DeviceClock c(32, 1'000'000);  // wraps every 71.6 min
+  int64_t last = -1;
+  int wraps = 0;
+  for (int64_t ms = 0; ms <= 2 * 3600 * 1000; ms += 100) {  // 10 Hz for two hours
+    const auto m = c.map(static_cast<uint64_t>(ms * 1000) & 0xFFFFFFFF, ms * 1'000'000'000);
+    ASSERT_FALSE(m.backwards);
+    ASSERT_GT(m.time_ps, last);
+    wraps += m.wrapped;
+    last = m.time_ps;
+  }
+  EXPECT_EQ(wraps, 1);
+  EXPECT_NEAR(static_cast<double>(last) * 1e-12, 7200.0, 1e-6);
+  EXPECT_NEAR(c.skew_ppm(), 0.0, 1e-6);
+}
