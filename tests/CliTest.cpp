@@ -17,7 +17,7 @@ const std::string kArpsim = ARPSIM_BINARY;
 }
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (const char* sub : {"", " frame", " verify", " config"}) {
+  for (const char* sub : {"", " frame", " verify", " config", " tracker", " tracker list", " tracker synth"}) {
     const auto r = run_command(kArpsim + sub + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.output.find("--"), std::string::npos) << sub;
@@ -87,4 +87,45 @@ TEST(Cli, ConfigPrintsTheEffectiveConfiguration) {
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_EQ(j["memory"]["count"], 2);
   EXPECT_EQ(j["display"]["pixel_clock_hz"], 25175000);
+}
+
+TEST(Cli, TrackerListGivesAClearAnswer) {
+  const auto r = run_command(kArpsim + " tracker list");
+  // Without a headset: "no Oculus Rift DK1/DK2 found ..." (exit 0), or USB unavailable (exit 1) -- never silence.
+  if (r.status == 0)
+    EXPECT_TRUE(r.output.find("no Oculus Rift") != std::string::npos || r.output.find("Oculus Rift DK") != std::string::npos)
+        << r.output;
+  else
+    EXPECT_NE(r.output.find("USB is not available"), std::string::npos) << r.output;
+}
+
+TEST(Cli, TrackerSynthWritesAReadableTraceAndRefusesBadValues) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " tracker synth --motion pendulum --amplitude 20 --period 1.5 --seconds 0.2 --hz 500 --noise 0.1 --out " +
+                             d.file("p.csv"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(d.file("p.csv"));
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, header);
+  EXPECT_EQ(header, "time_s,qw,qx,qy,qz");
+  size_t rows = 0;
+  while (std::getline(in, first)) ++rows;
+  EXPECT_EQ(rows, 101u);  // 0.2 s at 500 Hz, both ends
+  const struct { std::string args, expect; } bad[] = {
+      {"--motion shake --seconds 0", "--seconds"},
+      {"--motion shake --hz -5", "--hz"},
+      {"--motion shake --frequency 0", "--frequency"},
+      {"--motion rotate --axis 0,0,0", "non-zero"},
+      {"--motion rotate --axis 1,2", "three"},
+      {"--motion rotate --noise -1", "--noise"},
+      {"--motion pendulum --period nan", "--period"},
+      {"--motion twirl", "twirl"},
+  };
+  for (const auto& b : bad) {
+    const auto e = run_command(kArpsim + " tracker synth " + b.args + " --out " + d.file("bad.csv"));
+    EXPECT_NE(e.status, 0) << b.args;
+    EXPECT_NE(e.output.find(b.expect), std::string::npos) << b.args << "\n" << e.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv"))) << b.args;
+  }
 }

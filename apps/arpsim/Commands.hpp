@@ -11,5 +11,6 @@ using Runner = std::function<int()>;
 Runner add_frame_command(CLI::App& app);
 Runner add_verify_command(CLI::App& app);
 Runner add_config_command(CLI::App& app);
+Runner add_tracker_command(CLI::App& app);
 
 }  // namespace arp::app
