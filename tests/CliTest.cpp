@@ -17,7 +17,7 @@ const std::string kArpsim = ARPSIM_BINARY;
 }
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (const char* sub : {"", " frame", " verify", " config", " tracker", " tracker list", " tracker synth"}) {
+  for (const char* sub : {"", " frame", " verify", " config", " run", " tracker", " tracker list", " tracker synth"}) {
     const auto r = run_command(kArpsim + sub + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.output.find("--"), std::string::npos) << sub;
@@ -127,5 +127,36 @@ TEST(Cli, TrackerSynthWritesAReadableTraceAndRefusesBadValues) {
     EXPECT_NE(e.status, 0) << b.args;
     EXPECT_NE(e.output.find(b.expect), std::string::npos) << b.args << "\n" << e.output;
     EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv"))) << b.args;
+  }
+}
+
+TEST(Cli, RunReplaysATraceFrameByFrame) {
+  TempDir d;
+  ASSERT_EQ(run_command(kArpsim + " tracker synth --motion rotate --rate 300 --seconds 0.1 --out " + d.file("spin.csv")).status, 0);
+  const auto r = run_command(kArpsim + " run -q --trace " + d.file("spin.csv") + " --frames 3 --out-dir " + d.file("out") +
+                             " --report " + d.file("run.json") + " --set memory.face_size=128 --set display.h_active=160" +
+                             " --set display.v_active=120");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto f0 = arp::host::read_rgb8(d.file("out/frame_000000.png"));
+  const auto f2 = arp::host::read_rgb8(d.file("out/frame_000002.png"));
+  EXPECT_EQ(f0.width, 320);
+  EXPECT_NE(f0.rgb, f2.rgb);  // the head turned 10 degrees between them
+  std::ifstream in(d.file("run.json"));
+  const auto j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["frames"].size(), 3u);
+  EXPECT_LT(j["frames"][0]["last_sample"].get<int>(), j["frames"][2]["last_sample"].get<int>());
+  // Past the trace's end (a 64x48 frame lasts 0.83 ms: frame 1000 is at 0.83 s) the register
+  // holds its last sample, and the run says so.
+  const auto late = run_command(kArpsim + " run -q --trace " + d.file("spin.csv") + " --frames 1 --first-frame 1000 --every 0" +
+                                " --set memory.face_size=64 --set display.h_active=64 --set display.v_active=48");
+  EXPECT_EQ(late.status, 0) << late.output;
+  EXPECT_NE(late.output.find("hold its last sample"), std::string::npos) << late.output;
+  std::ofstream(d.file("bad.csv")) << "time_s,qw,qx,qy,qz\n0,0,0,0,0\n";
+  for (const std::string& args : {"--trace " + d.file("bad.csv"), "--trace " + d.file("none.csv"),
+                                  "--trace " + d.file("spin.csv") + " --frames 0",
+                                  "--trace " + d.file("spin.csv") + " --every -1"}) {
+    const auto e = run_command(kArpsim + " run -q " + args + " --out-dir " + d.file("never"));
+    EXPECT_EQ(e.status, 2) << args << "\n" << e.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("never"))) << args;
   }
 }

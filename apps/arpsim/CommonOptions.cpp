@@ -6,6 +6,8 @@
 #include <fstream>
 
 #include "apps/config/ConfigFile.hpp"
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/CubeMapLoader.hpp"
 #include "rtl_model/datapath/InputError.hpp"
 
 namespace arp::app {
@@ -22,6 +24,22 @@ dp::ArpConfig ConfigOptions::resolve() const {
   if (!sets.empty()) c = config::apply_overrides(c, sets);
   config::check(c, file.empty() ? "configuration" : file);
   return c;
+}
+
+void CubeMapOptions::add_to(CLI::App& cmd) {
+  auto* g = cmd.add_option_group("cube map", "Display memory contents (default: the calibration pattern)");
+  g->add_option("--faces", faces, "Folder with px nx py ny pz nz.<ext>, each face_size square");
+  g->add_option("--cross", cross, "One image, a 4:3 horizontal or 3:4 vertical cross");
+  g->add_option("--equirect", equirect, "One 2:1 equirectangular panorama");
+  g->require_option(0, 1);
+}
+
+host::CubeMapImages CubeMapOptions::load(int S, std::string& source) const {
+  if (!faces.empty()) { source = faces; return host::load_six_faces(host::six_face_paths_in(faces), S); }
+  if (!cross.empty()) { source = cross; return host::load_cross(cross, S); }
+  if (!equirect.empty()) { source = equirect; return host::load_equirect(equirect, S); }
+  source = "calibration pattern";
+  return host::make_calibration_pattern(S);
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "host/cubemap/CubeMapImages.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 
 namespace arp::app {
@@ -14,6 +15,14 @@ struct ConfigOptions {
   void add_to(CLI::App& cmd);
   // Embedded defaults, then the file, then --set overrides (later wins).
   dp::ArpConfig resolve() const;
+};
+
+// What fills the display memories: a cube map from files, or the calibration pattern.
+struct CubeMapOptions {
+  std::string faces, cross, equirect;
+  void add_to(CLI::App& cmd);
+  // Loads the chosen cube map at face size S; `source` names it for messages.
+  host::CubeMapImages load(int face_size, std::string& source) const;
 };
 
 // Writes text to path through a temporary file and a rename.

@@ -10,8 +10,6 @@
 #include "Commands.hpp"
 #include "FrameImage.hpp"
 #include "apps/config/ConfigFile.hpp"
-#include "host/cubemap/CalibrationPattern.hpp"
-#include "host/cubemap/CubeMapLoader.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "rtl_model/datapath/InputError.hpp"
@@ -24,7 +22,7 @@ struct FrameArgs {
   ConfigOptions cfg;
   double yaw = 0, pitch = 0, roll = 0;
   std::string quat;
-  std::string faces, cross, equirect;
+  CubeMapOptions cubemap;
   std::string out = "frame.png";
   std::string report;
   std::string aa;
@@ -59,12 +57,8 @@ int run_frame(const FrameArgs& a) {
                                     : parse_quat(a.quat);
   const FunctionalModel model(c);
   const int S = c.memory.face_size;
-  std::string source = "calibration pattern";
-  host::CubeMapImages cm;
-  if (!a.faces.empty()) { cm = host::load_six_faces(host::six_face_paths_in(a.faces), S); source = a.faces; }
-  else if (!a.cross.empty()) { cm = host::load_cross(a.cross, S); source = a.cross; }
-  else if (!a.equirect.empty()) { cm = host::load_equirect(a.equirect, S); source = a.equirect; }
-  else cm = host::make_calibration_pattern(S);
+  std::string source;
+  const host::CubeMapImages cm = a.cubemap.load(S, source);
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
   host::load_into_memories(mem, 0, cm, host::far_depth(mem.format()));
 
@@ -110,11 +104,7 @@ Runner add_frame_command(CLI::App& app) {
   cmd->add_option("--roll", args->roll, "Roll in degrees about +z, positive tilts the head left");
   cmd->add_option("--quat", args->quat, "Orientation quaternion w,x,y,z (head frame to world) instead of angles")
       ->type_name("W,X,Y,Z");
-  auto* g = cmd->add_option_group("cube map", "Display memory contents (default: the calibration pattern)");
-  g->add_option("--faces", args->faces, "Folder with px nx py ny pz nz.<ext>, each face_size square");
-  g->add_option("--cross", args->cross, "One image, a 4:3 horizontal or 3:4 vertical cross");
-  g->add_option("--equirect", args->equirect, "One 2:1 equirectangular panorama");
-  g->require_option(0, 1);
+  args->cubemap.add_to(*cmd);
   cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str();
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
   cmd->add_option("--frame", args->frame, "Frame index (sets the photon times)")->check(CLI::NonNegativeNumber);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   add(arp::app::add_frame_command(app));
   add(arp::app::add_verify_command(app));
   add(arp::app::add_config_command(app));
+  add(arp::app::add_run_command(app));
   add(arp::app::add_tracker_command(app));
   try {
     app.parse(argc, argv);
