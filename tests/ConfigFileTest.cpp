@@ -5,7 +5,7 @@
 
 #include "TestSupport.hpp"
 #include "apps/config/ConfigFile.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 using namespace arp;
 using nlohmann::json;

@@ -9,7 +9,7 @@
 #include "host/cubemap/CubeMapLoader.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 using namespace arp;
 using namespace arp::host;

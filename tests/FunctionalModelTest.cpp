@@ -4,7 +4,7 @@
 
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
 using namespace arp;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "testbench/golden/GoldenReference.hpp"
 

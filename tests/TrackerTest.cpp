@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "tracker/OculusReport.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"

@@ -1,16 +1,14 @@
 #include "TraceFile.hpp"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::tracker {
 
@@ -91,39 +89,28 @@ std::vector<PoseSample> read_trace_csv(const std::string& path) {
 }
 
 void write_trace_csv(const std::string& path, const std::vector<PoseSample>& samples) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(path, "", "folder " + dir.string() + " does not exist");
   bool positions = !samples.empty();
   for (const auto& s : samples) positions = positions && s.has_position;
-  const fs::path tmp = dir / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  {
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw InputError(path, "", "cannot write the trace file");
-    std::fprintf(f, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
-                 positions ? ", position in metres" : "");
-    std::fprintf(f, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n");
-    bool ok = true;
-    for (const auto& s : samples) {
-      const auto& q = s.orientation;
-      ok = ok && std::fprintf(f, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y,
-                              q.z) > 0;
-      if (positions) ok = ok && std::fprintf(f, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
-      ok = ok && std::fputc('\n', f) != EOF;
-    }
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) {
-      fs::remove(tmp, ec);
-      throw InputError(path, "", "writing the trace failed");
-    }
+  const auto tmp = temp_path_beside(path);
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw InputError(path, "", "cannot write the trace file");
+  std::fprintf(f, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
+               positions ? ", position in metres" : "");
+  std::fprintf(f, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n");
+  bool ok = true;
+  for (const auto& s : samples) {
+    const auto& q = s.orientation;
+    ok = ok && std::fprintf(f, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y,
+                            q.z) > 0;
+    if (positions) ok = ok && std::fprintf(f, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
+    ok = ok && std::fputc('\n', f) != EOF;
   }
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path, "", "cannot move the finished trace into place: " + ec.message());
+  ok = (std::fclose(f) == 0) && ok;
+  if (!ok) {
+    discard_temp_file(tmp);
+    throw InputError(path, "", "writing the trace failed");
   }
+  commit_temp_file(tmp, path);
 }
 
 }  // namespace arp::tracker

@@ -1,14 +1,14 @@
 #include "CommonOptions.hpp"
 
-#include <unistd.h>
-
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "apps/config/ConfigFile.hpp"
+#include "common/AtomicFile.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/CubeMapLoader.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::app {
 
@@ -42,27 +42,31 @@ host::CubeMapImages CubeMapOptions::load(int S, std::string& source) const {
   return host::make_calibration_pattern(S);
 }
 
+ProgressLine::ProgressLine(std::string prefix, bool enabled)
+    : prefix_(std::move(prefix)), enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+
+void ProgressLine::update(double fraction, const std::string& detail) {
+  if (!enabled_) return;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const bool done = fraction >= 1.0;
+  if (!done && s - last_ < 0.25) return;  // a readable rate
+  last_ = s;
+  const double eta = fraction > 0 ? s * (1.0 - fraction) / fraction : 0.0;
+  std::fprintf(stderr, "\r%s: %-12s %5.1f%%  elapsed %6.1f s  ETA %6.1f s ", prefix_.c_str(), detail.c_str(),
+               100.0 * fraction, s, eta);
+  if (done) std::fprintf(stderr, "\n");
+}
+
 void write_text_atomic(const std::string& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(path, "", "folder " + dir.string() + " does not exist");
-  const fs::path tmp = dir / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-      fs::remove(tmp, ec);
-      throw InputError(path, "", "cannot write the file");
-    }
+  const auto tmp = temp_path_beside(path);
+  std::ofstream out(tmp, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) {
+    discard_temp_file(tmp);
+    throw InputError(path, "", "cannot write the file");
   }
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path, "", "cannot move the finished file into place: " + ec.message());
-  }
+  commit_temp_file(tmp, path);
 }
 
 }  // namespace arp::app

@@ -1,6 +1,7 @@
 // Options every arpsim command shares: the configuration file and overrides.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,20 @@ struct CubeMapOptions {
   void add_to(CLI::App& cmd);
   // Loads the chosen cube map at face size S; `source` names it for messages.
   host::CubeMapImages load(int face_size, std::string& source) const;
+};
+
+// A progress line with elapsed time and ETA on stderr, redrawn at most every
+// 0.25 s and always at completion (then ended with a newline).
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string prefix, bool enabled = true);
+  void update(double fraction, const std::string& detail);
+
+ private:
+  std::string prefix_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point start_;
+  double last_ = -1.0;
 };
 
 // Writes text to path through a temporary file and a rename.

@@ -12,7 +12,7 @@
 #include "apps/config/ConfigFile.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
 namespace arp::app {

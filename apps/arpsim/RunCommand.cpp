@@ -2,7 +2,6 @@
 // frame, at the functional (bit-accurate, untimed) level: each pixel's
 // orientation is the trace sample the latch policy puts in the register.
 // Writes the frames as images and a JSON report.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -13,7 +12,7 @@
 #include "apps/config/ConfigFile.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "tracker/TraceFile.hpp"
 
@@ -61,8 +60,7 @@ int run(const RunArgs& a) {
   RenderOptions ro;
   ro.threads = a.threads;
   int images = 0;
-  const auto t0 = std::chrono::steady_clock::now();
-  double last_print = -1.0;
+  ProgressLine progress("run", !a.quiet);
   for (int64_t k = 0; k < a.frames; ++k) {
     const int64_t frame = a.first + k;
     model.render(mem, stream, frame, f, ro);
@@ -78,14 +76,8 @@ int run(const RunArgs& a) {
                       {"start_ps", t.cycles_to_ps(t.frame_start_cycle(frame))},
                       {"first_sample", lo},
                       {"last_sample", hi}});
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!a.quiet && (s - last_print > 0.5 || k + 1 == a.frames)) {
-      last_print = s;
-      const double done = static_cast<double>(k + 1) / static_cast<double>(a.frames);
-      std::fprintf(stderr, "\rrun: frame %lld/%lld  %5.1f%%  elapsed %.1f s  ETA %.1f s ", static_cast<long long>(k + 1),
-                   static_cast<long long>(a.frames), 100.0 * done, s, s * (1.0 - done) / done);
-      if (k + 1 == a.frames) std::fprintf(stderr, "\n");
-    }
+    progress.update(static_cast<double>(k + 1) / static_cast<double>(a.frames),
+                    "frame " + std::to_string(k + 1) + "/" + std::to_string(a.frames));
   }
   std::printf("arpsim run: %lld frames (%lld..%lld) of %s with %s, %d images in %s\n",
               static_cast<long long>(a.frames), static_cast<long long>(a.first),

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "Commands.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"
 #include "tracker/UsbTrackers.hpp"

@@ -1,6 +1,5 @@
 // arpsim verify: the accuracy harness -- datapath against the golden
 // reference at any widths -- as a table, optionally a JSON report.
-#include <chrono>
 #include <cstdio>
 
 #include "CommonOptions.hpp"
@@ -21,16 +20,8 @@ struct VerifyArgs {
 int run_verify(VerifyArgs& a) {
   const dp::ArpConfig c = a.cfg.resolve();
   a.opt.directed = !a.no_directed;
-  const auto t0 = std::chrono::steady_clock::now();
-  if (!a.quiet)
-    a.opt.progress = [t0, last = -1.0](const char* stage, double f) mutable {
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (f < 1.0 && s - last < 0.25) return;  // a readable rate
-      last = s;
-      const double eta = f > 0 ? s * (1.0 - f) / f : 0.0;
-      std::fprintf(stderr, "\rverify: %-8s %5.1f%%  elapsed %5.1f s  ETA %5.1f s ", stage, 100.0 * f, s, eta);
-      if (f >= 1.0) std::fprintf(stderr, "\n");
-    };
+  auto progress = std::make_shared<ProgressLine>("verify", !a.quiet);
+  a.opt.progress = [progress](const char* stage, double f) { progress->update(f, stage); };
   const accuracy::Report r = accuracy::run(c, a.opt);
   std::printf("%s", accuracy::to_text(r).c_str());
   if (!a.json.empty()) write_text_atomic(a.json, accuracy::to_json(r) + "\n");

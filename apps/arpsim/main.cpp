@@ -5,7 +5,7 @@
 #include <map>
 
 #include "Commands.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"arpsim - bit-accurate model of the Address Recalculation Pipeline head-mounted display"};

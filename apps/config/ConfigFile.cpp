@@ -6,7 +6,7 @@
 #include <set>
 #include <sstream>
 
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::config {
 

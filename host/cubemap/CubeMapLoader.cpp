@@ -6,7 +6,7 @@
 
 #include "CubeFaceBasis.hpp"
 #include "ImageFiles.hpp"
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::host {
 

@@ -1,12 +1,11 @@
 #include "ImageFiles.hpp"
 
-#include <unistd.h>
-
 #include <OpenImageIO/imageio.h>
 #include <filesystem>
 #include <system_error>
 
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::host {
 
@@ -34,27 +33,19 @@ RgbImage read_rgb8(const std::string& path) {
 }
 
 void write_rgb8(const std::string& path, const RgbImage& img) {
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(path, "", "folder " + dir.string() + " does not exist");
-  const fs::path tmp = dir / ("." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                              target.extension().string());
+  const fs::path tmp = temp_path_beside(path);  // keeps the extension: OpenImageIO picks the format by it
   auto out = OIIO::ImageOutput::create(tmp.string());
-  if (!out) throw InputError(path, "", "no image format for extension '" + target.extension().string() + "': " + OIIO::geterror());
+  if (!out)
+    throw InputError(path, "", "no image format for extension '" + fs::path(path).extension().string() + "': " + OIIO::geterror());
   OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT8);
   bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, img.rgb.data());
   std::string err = ok ? "" : out->geterror();
   ok = out->close() && ok;
   if (!ok) {
-    fs::remove(tmp, ec);
+    discard_temp_file(tmp);
     throw InputError(path, "", "cannot write image: " + (err.empty() ? out->geterror() : err));
   }
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(path, "", "cannot move the finished image into place: " + ec.message());
-  }
+  commit_temp_file(tmp, path);
 }
 
 }  // namespace arp::host

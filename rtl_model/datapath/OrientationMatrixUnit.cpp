@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "InputError.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::dp {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rtl_model/datapath/InputError.hpp"
+#include "common/InputError.hpp"
 
 namespace arp {
 
