@@ -8,6 +8,7 @@ PKGS=(
   libopenimageio-dev openimageio-tools
   libglm-dev libcli11-dev nlohmann-json3-dev
   libusb-1.0-0-dev
+  libsystemc-dev
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -48,10 +48,11 @@ HmdFrame scalar_reference(const ArpConfig& c, const DisplayMemorySet& mem, const
   f.resize(lens.width(), lens.height(), lens.eyes(), false);
   f.display_bits = c.pipeline.display_bits;
   std::vector<uint64_t> w(static_cast<size_t>(mem.count()));
+  const int lead = static_cast<int>(PipelineSchedule(c).orientation_lead());
   for (int e = 0; e < lens.eyes(); ++e)
     for (int y = 0; y < lens.height(); ++y)
       for (int x = 0; x < lens.width(); ++x) {
-        const int64_t lc = latch_cycle(t, c.pipeline.latch, c.pipeline.latch_lead_cycles, frame, e, x, y);
+        const int64_t lc = latch_cycle(t, c.pipeline.latch, lead, frame, e, x, y);
         const Mat3q M = quantise_rotation(o[o.index_at(t.cycles_to_ps(lc))].q, c.widths.mat_frac);
         const CubeAddress a = generate_address(rotate(M, lens.at(e, x, y), rp), ap);
         auto at = [&](int tx, int ty) {
@@ -203,8 +204,11 @@ TEST(FunctionalModel, LatchPolicyDecidesWhereANewOrientationTakesEffect) {
   DisplayMemorySet mem(c.memory, 2);
   host::load_into_memories(mem, 0, host::make_calibration_pattern(512), host::far_depth(mem.format()));
   const VideoTiming t(c.timing);
-  // The head snaps from yaw 0 to yaw 40 at pixel (70, 50) of frame 0.
-  const int64_t change = t.cycles_to_ps(t.pixel_cycle(0, 0, 70, 50));
+  // The head snaps from yaw 0 to yaw 40 just as pixel (70, 50) of frame 0
+  // enters the orientation matrix unit, the schedule's lead before its slot.
+  const int64_t lead = PipelineSchedule(c).orientation_lead();
+  ASSERT_GT(lead, 0);
+  const int64_t change = t.cycles_to_ps(t.pixel_cycle(0, 0, 70, 50) - lead);
   const OrientationStream o({{0, from_yaw_pitch_roll_deg(0, 0, 0)}, {change, from_yaw_pitch_roll_deg(40, 0, 0)}}, "t");
   const OrientationStream before = OrientationStream::constant(from_yaw_pitch_roll_deg(0, 0, 0));
   const OrientationStream after = OrientationStream::constant(from_yaw_pitch_roll_deg(40, 0, 0));

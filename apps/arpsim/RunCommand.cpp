@@ -1,95 +1,292 @@
-// arpsim run: a head-motion trace replayed through the pipeline, frame after
-// frame, at the functional (bit-accurate, untimed) level: each pixel's
-// orientation is the trace sample the latch policy puts in the register.
-// Writes the frames as images and a JSON report.
+// arpsim run: a head-motion trace (or synthetic motion) through the pipeline
+// at a chosen fidelity level -- the untimed functional model, loosely timed,
+// fast cycle-accurate or detailed cycle-accurate SystemC -- writing frames as
+// images, a JSON report, a per-frame CSV, optionally each pixel's photon time
+// and a VCD waveform with a matching GTKWave save file.
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "FrameImage.hpp"
+#include "GtkwSaveFile.hpp"
+#include "MotionOptions.hpp"
 #include "apps/config/ConfigFile.hpp"
+#include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
-#include "common/InputError.hpp"
-#include "rtl_model/functional/FunctionalModel.hpp"
+#include "rtl_model/systemc/TimedRun.hpp"
 #include "tracker/TraceFile.hpp"
 
 namespace arp::app {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 struct RunArgs {
   ConfigOptions cfg;
   CubeMapOptions cubemap;
-  std::string trace, out_dir = "run", report;
+  MotionOptions motion;
+  std::string fidelity = "functional";
+  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
-  bool quiet = false;
+  bool photon_times = false, quiet = false;
 };
 
-int run(const RunArgs& a) {
-  const dp::ArpConfig c = a.cfg.resolve();
-  if (a.frames < 1 || a.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
-  if (a.first < 0) throw InputError("--first-frame", "", "must be >= 0");
-  if (a.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
-  const auto trace = tracker::read_trace_csv(a.trace);
-  std::vector<dp::OrientationSample> samples;
-  samples.reserve(trace.size());
-  for (const auto& p : trace)
-    samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
-  const dp::OrientationStream stream(std::move(samples), a.trace);
+// A word-wise FNV-1a style fingerprint, so levels run in different
+// processes can be compared exactly (equal frames give equal hashes).
+uint64_t fnv(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001b3ull; }
 
-  const FunctionalModel model(c);
+// "A:B" -> two numbers; InputError naming the option otherwise.
+std::pair<double, double> parse_window(const std::string& opt, const std::string& s) {
+  const auto colon = s.find(':');
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("");
+    size_t n1 = 0, n2 = 0;
+    const double a = std::stod(s.substr(0, colon), &n1), b = std::stod(s.substr(colon + 1), &n2);
+    if (n1 != colon || n2 != s.size() - colon - 1 || !(b > a)) throw std::invalid_argument("");
+    return {a, b};
+  } catch (const std::exception&) {
+    throw InputError(opt, s, "expected START:END with END > START");
+  }
+}
+
+// The VCD's final path (".vcd" added; a bare name goes into waveforms/) and its directory made.
+std::string vcd_path(const std::string& arg) {
+  fs::path p(arg);
+  if (!p.has_parent_path()) p = fs::path("waveforms") / p;
+  if (p.extension() != ".vcd") p += ".vcd";
+  std::error_code ec;
+  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  std::ofstream probe(p.string() + ".probe");
+  if (!probe) throw InputError(p.string(), "", "cannot write the waveform there");
+  probe.close();
+  fs::remove(p.string() + ".probe", ec);
+  return p.string();
+}
+
+std::string frame_csv_header() {
+  return "frame,pixels,underflows,late_discarded,reset_pixels,latency_min_ns,latency_median_ns,latency_max_ns,"
+         "first_photon_ps,last_photon_ps,pixel_hash,photon_hash\n";
+}
+
+int run(const RunArgs& a) {
+  dp::ArpConfig c = a.cfg.resolve();
+  scm::Fidelity fid;
+  if (!scm::parse(a.fidelity, fid)) throw InputError("--fidelity", a.fidelity, "must be functional, lt, cycle or rtl");
+  if (a.frames < 1 || a.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
+  if (a.first < 0 || a.first > 1'000'000'000) throw InputError("--first-frame", "", "must be 0 .. 1e9");
+  if (a.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
+  if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  if (!a.vcd.empty() && fid == scm::Fidelity::Functional)
+    throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or rtl");
+  if ((!a.vcd_lines.empty() || !a.vcd_time_us.empty()) && a.vcd.empty())
+    throw InputError(a.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
+  const auto issues = fid == scm::Fidelity::Functional ? dp::validate(c) : dp::validate_timed(c);
+  if (!issues.empty()) throw InputError(a.cfg.file.empty() ? "configuration" : a.cfg.file, issues.front().key, issues.front().reason);
+
+  const dp::VideoTiming t(c.timing);
+  const int64_t start_ps = t.cycles_to_ps(t.frame_start_cycle(a.first));
+  const int64_t end_ps = t.cycles_to_ps(t.frame_start_cycle(a.first + a.frames));
+  std::vector<tracker::PoseSample> poses;
+  std::string motion_source = "still head";
+  if (!a.trace.empty()) {
+    poses = tracker::read_trace_csv(a.trace);
+    motion_source = a.trace;
+  } else if (a.motion.given()) {
+    // One second of margin before the first frame covers every lead.
+    poses = a.motion.make(static_cast<double>(start_ps) * 1e-12 - 1.0, static_cast<double>(end_ps - start_ps) * 1e-12 + 1.0);
+    motion_source = "synthetic " + a.motion.motion;
+  }
+  std::vector<dp::OrientationSample> samples;
+  for (const auto& p : poses)
+    samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
+  const dp::OrientationStream stream = samples.empty() ? dp::OrientationStream::constant(dp::Quat{})
+                                                       : dp::OrientationStream(std::move(samples), motion_source);
+
   std::string source;
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
   host::load_into_memories(mem, 0, a.cubemap.load(c.memory.face_size, source), host::far_depth(mem.format()));
   std::error_code ec;
-  if (a.every > 0) {
-    std::filesystem::create_directories(a.out_dir, ec);
-    if (ec || !std::filesystem::is_directory(a.out_dir))
+  if (a.every > 0 || a.photon_times) {
+    fs::create_directories(a.out_dir, ec);
+    if (ec || !fs::is_directory(a.out_dir))
       throw InputError(a.out_dir, "", "cannot create the output folder" + (ec ? ": " + ec.message() : std::string()));
   }
 
-  const auto& t = model.timing();
-  const int64_t lead = c.pipeline.latch_lead_cycles;
-  const int64_t end_ps = t.cycles_to_ps(t.frame_start_cycle(a.first + a.frames));
+  scm::TimedRunOptions opt;
+  opt.fidelity = fid;
+  opt.threads = a.threads;
+  std::string vcd_final, vcd_tmp_base;
+  if (!a.vcd.empty()) {
+    vcd_final = vcd_path(a.vcd);
+    vcd_tmp_base = temp_path_beside(vcd_final).string();
+    opt.vcd.path = vcd_tmp_base;
+    if (!a.vcd_lines.empty()) {
+      const auto [l0, l1] = parse_window("--vcd-lines", a.vcd_lines);
+      if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", a.vcd_lines, "lines must be whole numbers >= 0");
+      const int64_t base = t.frame_start_cycle(a.first);
+      opt.vcd.from_ps = t.cycles_to_ps(base + static_cast<int64_t>(l0) * c.timing.h_total());
+      opt.vcd.to_ps = t.cycles_to_ps(base + static_cast<int64_t>(l1) * c.timing.h_total());
+    } else if (!a.vcd_time_us.empty()) {
+      const auto [t0, t1] = parse_window("--vcd-time-us", a.vcd_time_us);
+      opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
+      opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
+    }
+  }
+
+  ProgressLine progress("run " + a.fidelity, !a.quiet);
+  opt.progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
+
+  cycle::TimedInputs in;
+  in.config = c;
+  in.memories = &mem;
+  in.orientation = &stream;
+  in.first_frame = a.first;
+  in.frames = a.frames;
   nlohmann::json frames = nlohmann::json::array();
-  HmdFrame f;
-  RenderOptions ro;
-  ro.threads = a.threads;
+  std::string csv = frame_csv_header();
   int images = 0;
-  ProgressLine progress("run", !a.quiet);
-  for (int64_t k = 0; k < a.frames; ++k) {
-    const int64_t frame = a.first + k;
-    model.render(mem, stream, frame, f, ro);
+  in.sink = [&](const HmdFrame& f, const cycle::FrameReport& r) {
+    uint64_t ph = 0xcbf29ce484222325ull, th = ph;
+    for (uint32_t p : f.pixels) ph = fnv(ph, p);
+    for (int64_t p : f.photon_ps) th = fnv(th, static_cast<uint64_t>(p));
+    const int64_t k = r.frame - a.first;
     if (a.every > 0 && k % a.every == 0) {
       char name[64];
-      std::snprintf(name, sizeof name, "frame_%06lld.png", static_cast<long long>(frame));
-      host::write_rgb8((std::filesystem::path(a.out_dir) / name).string(), frame_to_image(f));
+      std::snprintf(name, sizeof name, "frame_%06" PRId64 ".png", r.frame);
+      host::write_rgb8((fs::path(a.out_dir) / name).string(), frame_to_image(f));
       ++images;
+      if (a.photon_times) {
+        std::snprintf(name, sizeof name, "photon_%06" PRId64 ".csv", r.frame);
+        std::string text = "eye,x,y,photon_ps\n";
+        for (int e = 0; e < f.eyes; ++e)
+          for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x)
+              text += std::to_string(e) + "," + std::to_string(x) + "," + std::to_string(y) + "," +
+                      std::to_string(f.photon_ps[f.index(e, x, y)]) + "\n";
+        write_text_atomic((fs::path(a.out_dir) / name).string(), text);
+      }
     }
-    const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(frame) - lead));
-    const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(frame + 1) - lead));
-    frames.push_back({{"frame", frame},
-                      {"start_ps", t.cycles_to_ps(t.frame_start_cycle(frame))},
-                      {"first_sample", lo},
-                      {"last_sample", hi}});
-    progress.update(static_cast<double>(k + 1) / static_cast<double>(a.frames),
-                    "frame " + std::to_string(k + 1) + "/" + std::to_string(a.frames));
+    char hex[2][24];
+    std::snprintf(hex[0], sizeof hex[0], "%016" PRIx64, ph);
+    std::snprintf(hex[1], sizeof hex[1], "%016" PRIx64, th);
+    frames.push_back({{"frame", r.frame},
+                      {"pixels", r.pixels},
+                      {"underflows", r.underflows},
+                      {"late_discarded", r.late_discarded},
+                      {"reset_pixels", r.reset_pixels},
+                      {"latency_ps", {{"min", r.latency_min_ps}, {"median", r.latency_median_ps}, {"max", r.latency_max_ps}}},
+                      {"first_photon_ps", r.first_photon_ps},
+                      {"last_photon_ps", r.last_photon_ps},
+                      {"pixel_hash", hex[0]},
+                      {"photon_hash", hex[1]}});
+    char row[512];
+    std::snprintf(row, sizeof row, "%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%.3f,%.3f,%.3f,%" PRId64 ",%" PRId64 ",%s,%s\n",
+                  r.frame, r.pixels, r.underflows, r.late_discarded, r.reset_pixels, r.latency_min_ps * 1e-3,
+                  r.latency_median_ps * 1e-3, r.latency_max_ps * 1e-3, r.first_photon_ps, r.last_photon_ps, hex[0], hex[1]);
+    csv += row;
+  };
+
+  scm::TimedResult res;
+  try {
+    res = scm::run_timed(in, opt);
+  } catch (...) {
+    if (!vcd_tmp_base.empty()) discard_temp_file(vcd_tmp_base + ".vcd");
+    throw;
   }
-  std::printf("arpsim run: %lld frames (%lld..%lld) of %s with %s, %d images in %s\n",
-              static_cast<long long>(a.frames), static_cast<long long>(a.first),
-              static_cast<long long>(a.first + a.frames - 1), a.trace.c_str(), source.c_str(), images,
-              a.every > 0 ? a.out_dir.c_str() : "(none)");
-  if (trace.back().time_ps < end_ps)
+  if (!vcd_final.empty()) {
+    commit_temp_file(vcd_tmp_base + ".vcd", vcd_final);
+    const std::string gtkw = fs::path(vcd_final).replace_extension(".gtkw").string();
+    write_text_atomic(gtkw, gtkw_for_vcd(vcd_final, fs::path(vcd_final).filename().string()));
+  }
+
+  const double mcps = res.cycles_per_second() * 1e-6;
+  int64_t worst_lat = 0, best_lat = INT64_MAX;
+  std::vector<int64_t> medians;
+  for (const auto& f : res.frames) {
+    worst_lat = std::max(worst_lat, f.latency_max_ps);
+    best_lat = std::min(best_lat, f.latency_min_ps);
+    medians.push_back(f.latency_median_ps);
+  }
+  std::sort(medians.begin(), medians.end());
+  std::printf("arpsim run: %s level, %" PRId64 " frames (%" PRId64 "..%" PRId64 ") of %s with %s\n", a.fidelity.c_str(),
+              a.frames, a.first, a.first + a.frames - 1, motion_source.c_str(), source.c_str());
+  std::printf("  orientation sample -> photon: min %.1f us, median %.1f us, max %.1f us\n", best_lat * 1e-6,
+              medians[medians.size() / 2] * 1e-6, worst_lat * 1e-6);
+  if (fid == scm::Fidelity::Rtl || fid == scm::Fidelity::Cycle)
+    std::printf("  underflows %" PRId64 ", late pixels dropped %" PRId64 ", buffer swaps %" PRId64 "\n", res.underflows,
+                res.late_discarded, res.swaps);
+  std::printf("  %" PRId64 " pixel clocks in %.2f s: %.2f M pixel clocks/s\n", res.end_cycle - res.first_cycle,
+              res.wall_seconds, mcps);
+  if (images) std::printf("  %d images in %s\n", images, a.out_dir.c_str());
+  if (!vcd_final.empty()) std::printf("  waveform %s (open: gtkwave %s %s)\n", vcd_final.c_str(), vcd_final.c_str(),
+                                      fs::path(vcd_final).replace_extension(".gtkw").c_str());
+  if (!poses.empty() && poses.back().time_ps < end_ps)
     std::printf("  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)\n",
-                static_cast<double>(trace.back().time_ps) * 1e-12);
+                static_cast<double>(poses.back().time_ps) * 1e-12);
+
+  if (!a.csv.empty()) write_text_atomic(a.csv, csv);
   if (!a.report.empty()) {
-    nlohmann::json r{{"trace", a.trace},     {"samples", trace.size()}, {"cube_map", source},
-                     {"frames", frames},     {"images", images},        {"out_dir", a.out_dir},
-                     {"config", config::to_json(c)}};
+    const auto& tm = c.timed;
+    const double period_ns = 1e9 / static_cast<double>(c.timing.pixel_clock_hz);
+    nlohmann::json stages = nlohmann::json::array();
+    for (int s = 0; s < dp::kStageCount; ++s) {
+      const auto& st = res.stages[static_cast<size_t>(s)];
+      const int lat = tm.stage[static_cast<size_t>(s)].latency_cycles;
+      nlohmann::json j{{"stage", dp::stage_key(static_cast<dp::Stage>(s))},
+                       {"latency_cycles", lat},
+                       {"latency_ns", lat * period_ns}};
+      if (res.stages_measured && s < dp::kStageCount - 1)
+        j["measured"] = {{"pixels", st.pixels},         {"min_cycles", st.min_cycles},
+                         {"mean_cycles", st.mean_cycles}, {"max_cycles", st.max_cycles},
+                         {"stalled_cycles", st.stalled_cycles}};
+      stages.push_back(j);
+    }
+    nlohmann::json fifos = nlohmann::json::array();
+    for (const auto& [name, f] : res.fifos)
+      fifos.push_back({{"fifo", name},          {"depth", f.depth},           {"writes", f.writes},
+                       {"max_occupancy", f.max_occupancy}, {"mean_occupancy", f.mean_occupancy},
+                       {"full_cycles", f.full_cycles},     {"empty_cycles", f.empty_cycles},
+                       {"blocked_writes", f.blocked_writes}});
+    nlohmann::json jobs = nlohmann::json::array();
+    for (const auto& j : res.host_jobs)
+      jobs.push_back({{"start_ps", j.start_ps}, {"commit_ps", j.commit_ps}, {"swap_ps", j.swap_ps}, {"swap_frame", j.swap_frame}});
+    nlohmann::json r{
+        {"fidelity", a.fidelity},
+        {"fidelity_description", scm::describe(fid)},
+        {"motion", motion_source},
+        {"cube_map", source},
+        {"frames", frames},
+        {"pipeline",
+         {{"issue_lead_cycles", res.issue_lead},
+          {"issue_lead_ns", res.issue_lead * period_ns},
+          {"orientation_lead_cycles", res.orientation_lead},
+          {"orientation_lead_ns", res.orientation_lead * period_ns},
+          {"stages", stages}}},
+        {"fifos_modelled", res.fifos_modelled},
+        {"fifos", fifos},
+        {"underflows", res.underflows},
+        {"late_discarded", res.late_discarded},
+        {"issue_stalls", res.issue_stalls},
+        {"buffer_swaps", res.swaps},
+        {"host_jobs", jobs},
+        {"orientation_writes", res.orientation_writes},
+        {"simulation",
+         {{"pixel_clocks", res.end_cycle - res.first_cycle},
+          {"wall_seconds", res.wall_seconds},
+          {"pixel_clocks_per_second", res.cycles_per_second()},
+          {"vcd", vcd_final}}},
+        {"images", images},
+        {"config", config::to_json(c)}};
     write_text_atomic(a.report, r.dump(2) + "\n");
   }
   return 0;
@@ -99,16 +296,26 @@ int run(const RunArgs& a) {
 
 Runner add_run_command(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
-  CLI::App* cmd = app.add_subcommand("run", "Replay a head-motion trace through the pipeline, frame by frame");
+  CLI::App* cmd = app.add_subcommand("run", "Run head motion through the pipeline at a chosen fidelity level, frame by frame");
   a->cfg.add_to(*cmd);
   a->cubemap.add_to(*cmd);
-  cmd->add_option("--trace", a->trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth")->required();
+  cmd->add_option("--fidelity", a->fidelity,
+                  "functional (untimed), lt (loosely timed, scanline quantum), cycle (fast cycle-accurate), "
+                  "rtl (detailed cycle-accurate, one SystemC module per stage)")
+      ->capture_default_str();
+  cmd->add_option("--trace", a->trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth");
+  a->motion.add_to(*cmd, false);
   cmd->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", a->first, "Index of the first frame (sets its time)")->capture_default_str();
   cmd->add_option("--out-dir", a->out_dir, "Folder for frame_NNNNNN.png (created if missing)")->capture_default_str();
   cmd->add_option("--every", a->every, "Write every Nth frame as an image (0: none)")->capture_default_str();
-  cmd->add_option("--threads", a->threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 256));
-  cmd->add_option("--report", a->report, "Also write a JSON report (which trace samples each frame used)");
+  cmd->add_flag("--photon-times", a->photon_times, "Also write photon_NNNNNN.csv (every pixel's photon time) with each image");
+  cmd->add_option("--threads", a->threads, "Worker threads of the functional level (0: all cores)")->check(CLI::Range(0, 256));
+  cmd->add_option("--report", a->report, "JSON report: latencies, stage and FIFO statistics, underflows, speed");
+  cmd->add_option("--csv", a->csv, "CSV, one row per frame: underflows, latency, fingerprints");
+  cmd->add_option("--vcd", a->vcd, "VCD waveform (lt, cycle, rtl); a bare name goes into waveforms/; a .gtkw is written beside it");
+  cmd->add_option("--vcd-lines", a->vcd_lines, "Trace only scanlines START:END counted from the first frame's start");
+  cmd->add_option("--vcd-time-us", a->vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
   return [a] { return run(*a); };
 }

@@ -1,13 +1,17 @@
 // arpsim: the command line of the Address Recalculation Pipeline model.
 #include <CLI/CLI.hpp>
+#include <systemc>
+
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <map>
 
 #include "Commands.hpp"
 #include "common/InputError.hpp"
 
-int main(int argc, char** argv) {
+// SystemC's library calls sc_main from sc_elab_and_sim; arpsim is its sc_main.
+int sc_main(int argc, char** argv) {
   CLI::App app{"arpsim - bit-accurate model of the Address Recalculation Pipeline head-mounted display"};
   app.require_subcommand(1);
   std::map<const CLI::App*, arp::app::Runner> runners;
@@ -33,4 +37,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 1;
+}
+
+int main(int argc, char** argv) {
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // keep stdout to arpsim's own output
+  return sc_core::sc_elab_and_sim(argc, argv);
 }

@@ -13,6 +13,22 @@ namespace arp::config {
 using nlohmann::json;
 using namespace arp::dp;
 
+namespace {
+json timed_json(const TimedConfig& tm) {
+  json j = json::object();
+  for (int s = 0; s < kStageCount; ++s) {
+    const std::string k = stage_key(static_cast<Stage>(s));
+    j[k + "_latency"] = tm.stage[static_cast<size_t>(s)].latency_cycles;
+    j[k + "_logic_ps"] = tm.stage[static_cast<size_t>(s)].logic_delay_ps;
+  }
+  j["fifo_depth"] = tm.fifo_depth;
+  j["issue_slack_cycles"] = tm.issue_slack_cycles;
+  j["host_clock_hz"] = tm.host_clock_hz;
+  j["host_texels_per_cycle"] = tm.host_texels_per_cycle;
+  return j;
+}
+}  // namespace
+
 json to_json(const ArpConfig& c) {
   const auto& t = c.timing;
   const auto& l = c.lens;
@@ -38,6 +54,7 @@ json to_json(const ArpConfig& c) {
       {"pipeline",
        {{"latch", to_string(p.latch)}, {"latch_lead_cycles", p.latch_lead_cycles}, {"aa", to_string(p.aa)},
         {"display_bits", p.display_bits}, {"photon_delay_ps", p.photon_delay_ps}}},
+      {"timed", timed_json(c.timed)},
   };
 }
 
@@ -124,10 +141,10 @@ void check(const ArpConfig& c, const std::string& source) {
 
 ArpConfig from_json(const json& j, const std::string& source, ArpConfig c) {
   if (!j.is_object()) throw InputError(source, "", "the configuration must be a JSON object");
-  static const std::set<std::string> sections{"display", "lens", "datapath", "memory", "pipeline"};
+  static const std::set<std::string> sections{"display", "lens", "datapath", "memory", "pipeline", "timed"};
   for (auto it = j.begin(); it != j.end(); ++it)
     if (!sections.count(it.key()))
-      throw InputError(source, it.key(), "unknown section (known: display, lens, datapath, memory, pipeline)");
+      throw InputError(source, it.key(), "unknown section (known: display, lens, datapath, memory, pipeline, timed)");
   {
     auto& t = c.timing;
     Section s(j, "display", source);
@@ -190,6 +207,20 @@ ArpConfig from_json(const json& j, const std::string& source, ArpConfig c) {
     s.word("aa", p.aa, "off, bilinear");
     s.integer("display_bits", p.display_bits);
     s.integer("photon_delay_ps", p.photon_delay_ps);
+    s.finish();
+  }
+  {
+    auto& tm = c.timed;
+    Section s(j, "timed", source);
+    for (int k = 0; k < kStageCount; ++k) {
+      const std::string name = stage_key(static_cast<Stage>(k));
+      s.integer((name + "_latency").c_str(), tm.stage[static_cast<size_t>(k)].latency_cycles);
+      s.integer((name + "_logic_ps").c_str(), tm.stage[static_cast<size_t>(k)].logic_delay_ps);
+    }
+    s.integer("fifo_depth", tm.fifo_depth);
+    s.integer("issue_slack_cycles", tm.issue_slack_cycles);
+    s.integer("host_clock_hz", tm.host_clock_hz);
+    s.integer("host_texels_per_cycle", tm.host_texels_per_cycle);
     s.finish();
   }
   check(c, source);

@@ -1,6 +1,9 @@
 #include "ArpConfig.hpp"
 
 #include <cmath>
+#include <cstdio>
+
+#include "PipelineSchedule.hpp"
 
 namespace arp::dp {
 
@@ -15,6 +18,10 @@ std::string to_string(LatchPolicy v) {
   return "?";
 }
 std::string to_string(DividerKind v) { return v == DividerKind::Exact ? "exact" : "lut"; }
+const char* stage_key(Stage s) {
+  static const char* const keys[kStageCount] = {"lens", "rotate", "address", "fetch", "compose", "filter", "scanout"};
+  return keys[static_cast<size_t>(s)];
+}
 std::string to_string(AaMode v) { return v == AaMode::Off ? "off" : "bilinear"; }
 
 bool parse(const std::string& s, EyeScan& out) {
@@ -43,12 +50,12 @@ bool parse(const std::string& s, AaMode& out) {
 namespace {
 struct Checker {
   std::vector<ConfigIssue>& out;
-  void range(const char* key, int64_t v, int64_t lo, int64_t hi) {
+  void range(const std::string& key, int64_t v, int64_t lo, int64_t hi) {
     if (v < lo || v > hi)
       out.push_back({key, "is " + std::to_string(v) + ", must be in [" + std::to_string(lo) + ", " +
                               std::to_string(hi) + "]"});
   }
-  void fail(const char* key, std::string reason) { out.push_back({key, std::move(reason)}); }
+  void fail(const std::string& key, std::string reason) { out.push_back({key, std::move(reason)}); }
 };
 }  // namespace
 
@@ -124,6 +131,55 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
     ck.fail("datapath.texel_frac", "bilinear anti-aliasing needs at least 1 sub-texel bit");
   ck.range("pipeline.latch_lead_cycles", p.latch_lead_cycles, 0, 1'000'000'000);
   ck.range("pipeline.photon_delay_ps", p.photon_delay_ps, 0, 1'000'000'000'000);
+
+  const auto& tm = c.timed;
+  for (int s = 0; s < kStageCount; ++s) {
+    const std::string k = std::string("timed.") + stage_key(static_cast<Stage>(s));
+    ck.range(k + "_latency", tm.stage[static_cast<size_t>(s)].latency_cycles, 1, 64);
+    ck.range(k + "_logic_ps", tm.stage[static_cast<size_t>(s)].logic_delay_ps, 0, 1'000'000'000);
+  }
+  ck.range("timed.fifo_depth", tm.fifo_depth, 1, 4096);
+  ck.range("timed.issue_slack_cycles", tm.issue_slack_cycles, 0, 4096);
+  ck.range("timed.host_clock_hz", tm.host_clock_hz, 1000, 100'000'000'000);
+  ck.range("timed.host_texels_per_cycle", tm.host_texels_per_cycle, 1, 1 << 20);
+  return issues;
+}
+
+std::vector<ConfigIssue> validate_timed(const ArpConfig& c) {
+  std::vector<ConfigIssue> issues = validate(c);
+  if (!issues.empty()) return issues;
+  Checker ck{issues};
+  const auto& tm = c.timed;
+  const double period_ps = 1e12 / static_cast<double>(c.timing.pixel_clock_hz);
+  for (int s = 0; s < kStageCount; ++s) {
+    const auto& st = tm.stage[static_cast<size_t>(s)];
+    const double per_register = static_cast<double>(st.logic_delay_ps) / st.latency_cycles;
+    if (per_register > period_ps) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf,
+                    "%.0f ps of logic over %d register stage(s) needs %.0f ps per stage, more than the %.0f ps "
+                    "pixel clock period (display.pixel_clock_hz %lld): add register stages or slow the clock",
+                    static_cast<double>(st.logic_delay_ps), st.latency_cycles, per_register, period_ps,
+                    static_cast<long long>(c.timing.pixel_clock_hz));
+      ck.fail(std::string("timed.") + stage_key(static_cast<Stage>(s)) + "_latency", buf);
+    }
+  }
+  if (c.memory.count > kCompositionInputs)
+    ck.fail("memory.count", "is " + std::to_string(c.memory.count) + ", the timed models' composition unit compares at most " +
+                                std::to_string(kCompositionInputs) + " memories");
+  // The scan-out FIFO holds slack + 1 pixels at the start of each clock and,
+  // having no bypass, must have room for one more while it is read.
+  if (tm.fifo_depth < tm.issue_slack_cycles + 2)
+    ck.fail("timed.fifo_depth", "is " + std::to_string(tm.fifo_depth) + ", must be at least the issue slack plus two (" +
+                                    std::to_string(tm.issue_slack_cycles + 2) + ") or the scan-out FIFO backs up");
+  const PipelineSchedule sched(c);
+  if (sched.issue_lead() >= sched.vblank_cycles())
+    ck.fail("timed.issue_slack_cycles",
+            "the pipeline issues pixels " + std::to_string(sched.issue_lead()) +
+                " cycles ahead, not less than the vertical blanking (" + std::to_string(sched.vblank_cycles()) +
+                " cycles): the next frame would be fetched before the buffers swap");
+  if (sched.issue_lead() > c.timing.h_total() * int64_t{c.timing.v_active})
+    ck.fail("timed.issue_slack_cycles", "the pipeline is deeper than the active picture");
   return issues;
 }
 

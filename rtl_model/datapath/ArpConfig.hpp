@@ -67,11 +67,42 @@ struct MemoryConfig {
 
 struct PipelineConfig {
   LatchPolicy latch = LatchPolicy::PerScanline;
-  int latch_lead_cycles = 0;              // orientation sampled this many pixel clocks before the latch point
+  int latch_lead_cycles = 0;              // extra lead: the register is sampled this many pixel clocks before
+                                          // the latch-point pixel enters the orientation matrix unit
   AaMode aa = AaMode::Bilinear;
   int display_bits = 8;                   // per channel at the HMD (<= 10: frames are packed in 32 bits)
   int64_t photon_delay_ps = 0;            // panel response after scan-out
 };
+
+// The timed models' pipeline stages, in data-flow order after the video
+// timing generator's issue.
+enum class Stage : uint8_t { Lens, Rotate, Address, Fetch, Compose, Filter, ScanOut };
+constexpr int kStageCount = 7;
+const char* stage_key(Stage s);  // "lens", "rotate", ... (configuration keys)
+
+struct StageTiming {
+  int latency_cycles = 1;      // pixel clocks from taking a pixel to it being visible to the next stage
+  int64_t logic_delay_ps = 0;  // combinational delay of the stage's arithmetic, split over its register stages
+};
+
+// Hardware timing of the cycle models. Defaults are this project's
+// assumptions (the papers give no stage timings), chosen so every stage's
+// logic fits a 25.175 MHz clock; see docs/timed-models.md.
+struct TimedConfig {
+  std::array<StageTiming, kStageCount> stage{{{1, 8'000},     // lens vector ROM read
+                                              {2, 24'000},    // three multiply-accumulate rows
+                                              {4, 60'000},    // reciprocal LUT, Newton step, two multiplies
+                                              {2, 40'000},    // display memory read (all memories in parallel)
+                                              {1, 10'000},    // depth compare tree
+                                              {2, 20'000},    // bilinear weights and blend
+                                              {1, 8'000}}};   // colour rescale LUT to the panel
+  int fifo_depth = 4;                     // tokens each inter-stage FIFO holds
+  int issue_slack_cycles = 2;             // pixels are issued this much earlier than the stage latencies need
+  int64_t host_clock_hz = 100'000'000;    // host -> display memory write port clock
+  int host_texels_per_cycle = 1;          // texels the write port stores per host clock
+};
+
+constexpr int kCompositionInputs = 8;     // memories the timed models' composition unit can compare
 
 struct ArpConfig {
   VideoTimingConfig timing;
@@ -79,6 +110,7 @@ struct ArpConfig {
   DatapathWidths widths;
   MemoryConfig memory;
   PipelineConfig pipeline;
+  TimedConfig timed;
 };
 
 // One violated constraint: the dotted key path and the reason.
@@ -90,5 +122,10 @@ struct ConfigIssue {
 // Every constraint a configuration must meet so no stage can overflow its
 // 64-bit arithmetic; an empty result means valid.
 std::vector<ConfigIssue> validate(const ArpConfig& c);
+
+// The further constraints of the timed models (hardware that must meet its
+// clock, FIFOs that exist, a composition unit with enough inputs, a pipeline
+// that drains inside vertical blanking); empty means the hardware can run it.
+std::vector<ConfigIssue> validate_timed(const ArpConfig& c);
 
 }  // namespace arp::dp

@@ -18,4 +18,15 @@ AddressGeneratorParams::AddressGeneratorParams(const DatapathWidths& w, int S)
   recip.rounding = div_rounding;
 }
 
+std::vector<uint32_t> tabulate_aligned_reciprocal(const AddressGeneratorParams& p, const DatapathWidths& w) {
+  std::vector<uint32_t> memo;
+  // |ma| < 2^(rot_frac+1); the aligned output y' < 2^(recip_frac + 1 + n_max - 1) must fit 32 bits.
+  if (w.divider != DividerKind::ReciprocalLut || w.rot_frac > 15 || w.recip_frac_bits + w.rot_frac + 1 > 31) return memo;
+  const size_t domain = size_t{1} << (w.rot_frac + 1);
+  memo.resize(domain);
+  for (size_t m = 0; m < domain; ++m)
+    memo[m] = static_cast<uint32_t>(aligned_reciprocal(reciprocal(static_cast<int64_t>(m), p.recip), p.n_max));
+  return memo;
+}
+
 }  // namespace arp::dp

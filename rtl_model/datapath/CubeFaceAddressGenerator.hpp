@@ -87,12 +87,18 @@ inline int64_t quotient_to_position(int64_t q, const AddressArith& p) {
   return pos < p.max_pos ? pos : p.max_pos;
 }
 
-inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p) {
+// The reciprocal unit's aligned output for every |ma| (a simulation speed-up:
+// the same values, looked up instead of recomputed); empty when the domain is
+// too large or the output does not fit 32 bits, or for the exact divider.
+std::vector<uint32_t> tabulate_aligned_reciprocal(const AddressGeneratorParams& p, const DatapathWidths& w);
+
+// `aligned_memo`: optional table from tabulate_aligned_reciprocal (same result).
+inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p, const uint32_t* aligned_memo = nullptr) {
   const FaceSelect f = select_face(r);
   int64_t qs = 0, qt = 0;
   if (f.ma > 0) {
     if (p.divider == DividerKind::ReciprocalLut) {
-      const int64_t ya = aligned_reciprocal(reciprocal(f.ma, p.recip), p.n_max);
+      const int64_t ya = aligned_memo ? int64_t{aligned_memo[f.ma]} : aligned_reciprocal(reciprocal(f.ma, p.recip), p.n_max);
       qs = multiply_aligned_reciprocal(f.sc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
       qt = multiply_aligned_reciprocal(f.tc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
     } else {

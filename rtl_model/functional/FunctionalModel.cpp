@@ -28,11 +28,11 @@ struct Segment {
 
 // Splits one scanline into runs that see the same orientation sample. Only
 // the per-pixel latch can produce more than one run.
-void line_segments(const VideoTiming& t, const PipelineConfig& p, const OrientationStream& o, int64_t frame,
-                   int eye, int y, int width, std::vector<Segment>& out) {
+void line_segments(const VideoTiming& t, const PipelineConfig& p, int64_t lead, const OrientationStream& o,
+                   int64_t frame, int eye, int y, int width, std::vector<Segment>& out) {
   out.clear();
   auto sample_at = [&](int x) {
-    return o.index_at(t.cycles_to_ps(latch_cycle(t, p.latch, p.latch_lead_cycles, frame, eye, x, y)));
+    return o.index_at(t.cycles_to_ps(latch_cycle(t, p.latch, static_cast<int>(lead), frame, eye, x, y)));
   };
   const size_t first = sample_at(0), last = sample_at(width - 1);
   if (first == last) {
@@ -65,17 +65,11 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
       fmt_(cfg.memory),
       comp_(fmt_, cfg.memory.background),
       layout_(fmt_),
-      scan_(fmt_, cfg.pipeline) {
-  const auto& w = cfg_.widths;
-  // Tabulate the reciprocal unit when its domain is small and its aligned
-  // output fits 32 bits (y' < 2^(recip_frac + 1 + n_max - 1)).
-  if (w.divider == DividerKind::ReciprocalLut && w.rot_frac <= 15 && w.recip_frac_bits + w.rot_frac + 1 <= 31) {
-    const size_t domain = size_t{1} << (w.rot_frac + 1);  // |major| < 2^(rot_frac+1)
-    memo_.resize(domain);
-    for (size_t m = 0; m < domain; ++m)
-      memo_[m] = static_cast<uint32_t>(aligned_reciprocal(reciprocal(static_cast<int64_t>(m), addr_.recip), addr_.n_max));
-    memo_view_.aligned = memo_.data();
-  }
+      scan_(fmt_, cfg.pipeline),
+      orientation_lead_(dp::PipelineSchedule(cfg).orientation_lead()) {
+  // Tabulate the reciprocal unit when its domain is small and its output fits 32 bits.
+  memo_ = tabulate_aligned_reciprocal(addr_, cfg_.widths);
+  if (!memo_.empty()) memo_view_.aligned = memo_.data();
 }
 
 void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStream& orientation, int64_t frame,
@@ -107,7 +101,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
   // The orientation register can only hold samples between the frame's first
   // latch and the start of the next frame; quantise each once.
-  const int64_t lead = pc.latch_lead_cycles;
+  const int64_t lead = orientation_lead_;
   const size_t s_lo = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame) - lead));
   const size_t s_hi = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1) - lead));
   std::vector<Mat3q> mats;
@@ -165,7 +159,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     for (int line = 0; line < E * H; ++line) {
       const int eye = line / H, y = line % H;
       const passes::EyeSources& src = sources[static_cast<size_t>(eye)];
-      line_segments(timing_, pc, orientation, frame, eye, y, W, segs);
+      line_segments(timing_, pc, lead, orientation, frame, eye, y, W, segs);
       uint32_t* dst_line = &out.pixels[out.index(eye, 0, y)];
       for (int c0 = 0; c0 < W; c0 += C) {
         const int n = std::min(C, W - c0);

@@ -15,6 +15,7 @@
 #include "rtl_model/datapath/HmdScanOut.hpp"
 #include "rtl_model/datapath/LensVectorTable.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+#include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
 
 namespace arp {
@@ -34,6 +35,9 @@ class FunctionalModel {
   const dp::LensVectorTable& lens() const { return lens_; }
   const dp::AddressGeneratorParams& address_params() const { return addr_; }
   const dp::RotateParams& rotate_params() const { return rot_; }
+  // Pixel clocks between sampling the orientation register and the latch
+  // point's photon (dp::PipelineSchedule::orientation_lead).
+  int64_t orientation_lead() const { return orientation_lead_; }
 
   // Renders frame `frame` (its timing decides which orientation samples
   // apply). The memory set must have this configuration's eyes, count and format.
@@ -54,6 +58,7 @@ class FunctionalModel {
   dp::CompositionParams comp_;
   dp::ChannelLayout layout_;
   dp::HmdScanOut scan_;
+  int64_t orientation_lead_;
   // dp::reciprocal tabulated over its whole input domain (see LinePasses.hpp).
   std::vector<uint32_t> memo_;  // the aligned reciprocal of every |ma|
   passes::ReciprocalMemo memo_view_;

@@ -1,0 +1,112 @@
+// A clocked FIFO with a valid/ready handshake, as a plain C++ core shared by
+// every cycle-accurate level. Both ends see the state at the start of the
+// clock: a write becomes readable, and a read frees its place, only at
+// update() (the clock edge), so the order in which stages are evaluated
+// within a cycle cannot matter. Writing when not ready is a modelling bug and
+// throws -- data is never dropped silently.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace arp::cycle {
+
+struct FifoStats {
+  int depth = 0;
+  int64_t writes = 0, reads = 0;
+  int max_occupancy = 0;
+  double mean_occupancy = 0;  // over the cycles observed
+  int64_t full_cycles = 0, empty_cycles = 0;
+  int64_t blocked_writes = 0;  // cycles a producer held data but the FIFO was full
+};
+
+template <class T>
+class ClockedFifo {
+ public:
+  ClockedFifo(std::string name, int depth) : name_(std::move(name)), buf_(static_cast<size_t>(depth)), depth_(depth) {}
+
+  const std::string& name() const { return name_; }
+  int depth() const { return depth_; }
+  int occupancy() const { return count_; }
+  const int& occupancy_ref() const { return count_; }  // for waveform tracing
+
+  // Producer side: ready = not full at the start of the cycle.
+  bool can_write() const { return count_ < depth_ && !write_pending_; }
+  void write(const T& v, int64_t cycle) {
+    if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
+    buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()] = v;
+    write_pending_ = true;
+    cycle_ = cycle;
+  }
+  void note_blocked() { ++blocked_; }
+
+  // Consumer side: valid = not empty at the start of the cycle.
+  bool can_read() const { return count_ > 0 && !read_pending_; }
+  const T& front() const { return buf_[head_]; }
+  void read(int64_t cycle) {
+    if (!can_read()) throw std::logic_error(name_ + ": read while not valid (empty)");
+    read_pending_ = true;
+    cycle_ = cycle;
+  }
+
+  // The clock edge ending cycle `cycle_`: applies this cycle's read and write.
+  void update() {
+    if (!read_pending_ && !write_pending_) return;
+    account(cycle_ + 1);
+    if (read_pending_) {
+      head_ = (head_ + 1) % buf_.size();
+      --count_;
+      ++reads_;
+      read_pending_ = false;
+    }
+    if (write_pending_) {
+      ++count_;
+      ++writes_;
+      write_pending_ = false;
+    }
+    if (count_ > max_) max_ = count_;
+  }
+
+  // Statistics over cycles [first observed, end_cycle).
+  FifoStats stats(int64_t end_cycle) const {
+    FifoStats s;
+    s.depth = depth_;
+    s.writes = writes_;
+    s.reads = reads_;
+    s.max_occupancy = max_;
+    const int64_t tail = end_cycle > since_ ? end_cycle - since_ : 0;
+    const double area = static_cast<double>(area_) + static_cast<double>(count_) * static_cast<double>(tail);
+    const int64_t span = end_cycle - start_;
+    s.mean_occupancy = span > 0 ? area / static_cast<double>(span) : 0.0;
+    s.full_cycles = full_ + (count_ == depth_ ? tail : 0);
+    s.empty_cycles = empty_ + (count_ == 0 ? tail : 0);
+    s.blocked_writes = blocked_;
+    return s;
+  }
+  void start_statistics(int64_t cycle) { start_ = since_ = cycle; }
+
+ private:
+  // Adds the occupancy held since the last change, up to cycle c.
+  void account(int64_t c) {
+    const int64_t span = c - since_;
+    if (span <= 0) return;
+    area_ += static_cast<int64_t>(count_) * span;
+    if (count_ == depth_) full_ += span;
+    if (count_ == 0) empty_ += span;
+    since_ = c;
+  }
+
+  std::string name_;
+  std::vector<T> buf_;
+  size_t head_ = 0;
+  int depth_;
+  int count_ = 0;
+  bool write_pending_ = false, read_pending_ = false;
+  int64_t cycle_ = 0;
+  int64_t writes_ = 0, reads_ = 0, blocked_ = 0;
+  int max_ = 0;
+  int64_t area_ = 0, full_ = 0, empty_ = 0, since_ = 0, start_ = 0;
+};
+
+}  // namespace arp::cycle

@@ -1,0 +1,122 @@
+// Every stage's clocked behaviour, as plain C++ on any FIFO type. The
+// detailed model calls one tick_* per SC_MODULE process with its channels;
+// the fast model calls them all from one process per clock with plain FIFOs.
+// Both therefore share one cycle semantics, and each tick only sees FIFO
+// state from the start of the cycle, so evaluation order cannot matter.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "FrameReport.hpp"
+#include "HostWritePort.hpp"
+#include "OrientationLatch.hpp"
+#include "ScanOutStage.hpp"
+#include "ScanTiming.hpp"
+#include "StageArithmetic.hpp"
+#include "StagePipe.hpp"
+
+namespace arp::cycle {
+
+// An injected stall: `stage` does nothing for `cycles` pixel clocks from `first_cycle`.
+struct StallWindow {
+  dp::Stage stage;
+  int64_t first_cycle, cycles;
+};
+
+// One run's inputs, the same for every fidelity level.
+struct TimedInputs {
+  dp::ArpConfig config;
+  dp::DisplayMemorySet* memories = nullptr;     // loaded front buffers; host jobs write the back buffers
+  const dp::OrientationStream* orientation = nullptr;
+  std::vector<HostWriteJob> host_jobs;
+  int64_t first_frame = 0, frames = 1;
+  std::vector<StallWindow> stalls;              // cycle-accurate levels only
+  FrameSink sink;
+};
+
+class PipelineKernels {
+ public:
+  explicit PipelineKernels(const TimedInputs& in);
+
+  StageArithmetic arith;
+  ScanTiming scan;
+  OrientationLatch latch;
+  HostWritePort host;
+  BufferSwapper swapper;
+  StagePipe<LensToken> lens;
+  StagePipe<RotatedToken> rotate;
+  StagePipe<AddressToken> address;
+  StagePipe<FetchToken> fetch;
+  StagePipe<ComposedToken> compose;
+  StagePipe<ColorToken> filter;
+  ScanOutStage scanout;
+
+  template <class O>
+  void tick_timing(int64_t c, O& out) { scan.tick(c, out); }
+  template <class I, class O>
+  void tick_lens(int64_t c, I& in, O& out) {
+    lens.tick(c, in, out, [this](const PixelSlot& s, LensToken& o) { arith.lens(s, o); }, stalled(dp::Stage::Lens, c));
+  }
+  template <class I, class O>
+  void tick_rotate(int64_t c, I& in, O& out) {
+    rotate.tick(
+        c, in, out,
+        [this, c](const LensToken& t, RotatedToken& o) {
+          latch.on_pixel(t.slot, c);
+          arith.rotate(t, latch.matrix, latch.sample, o);
+        },
+        stalled(dp::Stage::Rotate, c));
+  }
+  template <class I, class O>
+  void tick_address(int64_t c, I& in, O& out) {
+    address.tick(c, in, out, [this](const RotatedToken& t, AddressToken& o) { arith.address(t, o); },
+                 stalled(dp::Stage::Address, c));
+  }
+  // The memories' pipeline read port; the vertical-blank swap happens first in the same clock.
+  template <class I, class O>
+  void tick_fetch(int64_t c, I& in, O& out) {
+    swapper.tick(c);
+    fetch.tick(c, in, out, [this](const AddressToken& t, FetchToken& o) { arith.fetch(t, *mem_, o); },
+               stalled(dp::Stage::Fetch, c));
+  }
+  template <class I, class O>
+  void tick_compose(int64_t c, I& in, O& out) {
+    compose.tick(c, in, out, [this](const FetchToken& t, ComposedToken& o) { arith.compose(t, o); },
+                 stalled(dp::Stage::Compose, c));
+  }
+  template <class I, class O>
+  void tick_filter(int64_t c, I& in, O& out) {
+    filter.tick(c, in, out, [this](const ComposedToken& t, ColorToken& o) { arith.filter(t, o); },
+                stalled(dp::Stage::Filter, c));
+  }
+  template <class I>
+  void tick_scanout(int64_t c, I& in) { scanout.tick(c, in); }
+  void tick_host(int64_t host_cycle) { host.tick(host_cycle); }
+
+  std::array<StageStats, dp::kStageCount> stage_stats() const;
+
+  // No pixel in any stage and none waiting to be issued (the FIFOs are the caller's to check).
+  bool stages_idle() const {
+    return scan.backlog == 0 && lens.occupancy() == 0 && rotate.occupancy() == 0 && address.occupancy() == 0 &&
+           fetch.occupancy() == 0 && compose.occupancy() == 0 && filter.occupancy() == 0;
+  }
+  // With the whole pipeline idle: the first cycle at or after c (before `end`)
+  // at which any stage can act -- an issue or a buffer swap. Models skip the
+  // cycles in between; nothing observable happens in them (the skipped
+  // cycles are still counted as simulated: they are the same clocks).
+  int64_t next_busy_cycle(int64_t c, int64_t end) const;
+
+ private:
+  bool stalled(dp::Stage s, int64_t c) const {
+    if (!any_stalls_) return false;
+    for (const auto& w : stalls_)
+      if (w.stage == s && c >= w.first_cycle && c < w.first_cycle + w.cycles) return true;
+    return false;
+  }
+  dp::DisplayMemorySet* mem_;
+  std::vector<StallWindow> stalls_;
+  bool any_stalls_;
+};
+
+}  // namespace arp::cycle

@@ -1,0 +1,67 @@
+// What travels between the timed models' stages: one token per pixel-clock
+// slot, carrying every eye scanned in that slot (both eyes of a lock-step
+// stereo panel go through two copies of the datapath side by side).
+#pragma once
+#include <cstdint>
+
+#include "rtl_model/datapath/ArpConfig.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "rtl_model/datapath/LensVectorTable.hpp"
+
+namespace arp::cycle {
+
+constexpr int kMaxEyes = 2;
+constexpr int kMaxTaps = 4;  // bilinear; nearest uses tap 0
+
+// Which pixel a token is, and when it must reach the panel. Padded to 32
+// aligned bytes: copied as two whole 16-byte words, a copy's loads match the
+// previous copy's stores (a 27-byte copy overlaps them and stalls store
+// forwarding on every stage, measured at half the loosely timed level's time).
+struct alignas(16) PixelSlot {
+  int64_t frame = 0;
+  int64_t slot_cycle = 0;  // pixel clock of its scan-out
+  int32_t x = 0, y = 0;
+  uint8_t eye_first = 0, eye_count = 1;
+  bool latch = false;      // the orientation matrix unit loads its register for this pixel
+  uint8_t reserved[5] = {};
+};
+static_assert(sizeof(PixelSlot) == 32, "PixelSlot must stay two 16-byte words");
+
+struct LensToken {
+  PixelSlot slot;
+  dp::Vec3q view[kMaxEyes];  // head-frame direction
+};
+
+struct RotatedToken {
+  PixelSlot slot;
+  uint32_t sample;           // tracker sample in the matrix register
+  dp::Vec3q world[kMaxEyes];
+};
+
+struct AddressToken {
+  PixelSlot slot;
+  uint32_t sample;
+  dp::CubeAddress address[kMaxEyes];
+};
+
+struct FetchToken {
+  PixelSlot slot;
+  uint32_t sample;
+  uint32_t wx[kMaxEyes], wy[kMaxEyes];                    // bilinear weights (0 when off)
+  uint64_t words[kMaxEyes][kMaxTaps][dp::kCompositionInputs];  // texel words per eye, tap, memory
+};
+
+struct ComposedToken {
+  PixelSlot slot;
+  uint32_t sample;
+  uint32_t wx[kMaxEyes], wy[kMaxEyes];
+  uint32_t tap_color[kMaxEyes][kMaxTaps];
+};
+
+struct ColorToken {
+  PixelSlot slot;
+  uint32_t sample;
+  uint32_t color[kMaxEyes];  // memory colour code
+};
+
+}  // namespace arp::cycle

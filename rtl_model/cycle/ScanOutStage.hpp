@@ -1,0 +1,87 @@
+// The HMD scan-out's logic: at each active slot the pixel for that slot must
+// be at the head of its FIFO, taken timed.scanout_latency cycles early and
+// shown at the slot. A missing pixel is an underflow (counted, and shown in
+// the underflow colour); a pixel arriving after its slot is dropped and
+// counted. Frames are handed to the sink after their last active slot.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "FrameReport.hpp"
+#include "ScanTiming.hpp"
+#include "StageArithmetic.hpp"
+
+namespace arp::cycle {
+
+class ScanOutStage {
+ public:
+  ScanOutStage(const StageArithmetic& a, const ScanTiming& scan, const dp::OrientationStream& stream, FrameSink sink);
+
+  template <class InFifo>
+  void tick(int64_t cycle, InFifo& in) {
+    // The panel side: the pixel taken latency cycles ago is shown now.
+    const Shown& now = delay_[ring(cycle)];
+    display_valid = now.valid;
+    display_rgb = now.rgb;
+    delay_[ring(cycle)] = Shown{};
+    const int64_t slot = cycle + latency_;
+    PixelSlot s;
+    if (!scan_.decode(slot, s, cursor_)) {
+      // Blanking: a pixel whose slot has passed is dropped, so a late pipeline catches up.
+      if (in.can_read() && in.front().slot.slot_cycle < slot) {
+        in.read(cycle);
+        ++late_;
+        ++late_total_;
+      }
+      return;
+    }
+    if (in.can_read() && in.front().slot.slot_cycle < slot) {
+      in.read(cycle);  // late: its slot has passed
+      ++late_;
+      ++late_total_;
+      underflow(s);
+    } else if (in.can_read() && in.front().slot.slot_cycle == slot) {
+      show(in.front(), slot);
+      in.read(cycle);
+    } else {
+      underflow(s);
+    }
+    if (slot == scan_.last_slot(s.frame)) finish_frame(s.frame);
+  }
+
+  int64_t underflows() const { return underflows_total_; }
+  int64_t late_discarded() const { return late_total_; }
+
+  // Traced: the pixel on the panel this cycle (first eye) and the running underflow count.
+  uint8_t display_valid = 0;
+  uint32_t display_rgb = 0;
+  int64_t underflow_count = 0;
+
+ private:
+  struct Shown {
+    uint8_t valid = 0;
+    uint32_t rgb = 0;
+  };
+  size_t ring(int64_t c) const {
+    const int64_t m = c % latency_;
+    return static_cast<size_t>(m < 0 ? m + latency_ : m);
+  }
+  void show(const ColorToken& t, int64_t slot);
+  void underflow(const PixelSlot& s);
+  void finish_frame(int64_t frame);
+
+  const StageArithmetic& arith_;
+  const ScanTiming& scan_;
+  const dp::OrientationStream& stream_;
+  FrameSink sink_;
+  int latency_;
+  int64_t photon_delay_;
+  std::vector<Shown> delay_;
+  HmdFrame frame_;
+  LatencyCollector lat_;
+  int64_t underflows_ = 0, late_ = 0, underflows_total_ = 0, late_total_ = 0;
+  uint32_t bad_;
+  ScanTiming::Cursor cursor_;
+};
+
+}  // namespace arp::cycle

@@ -1,0 +1,85 @@
+#include "ScanTiming.hpp"
+
+#include <algorithm>
+
+namespace arp::cycle {
+
+namespace {
+int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
+}  // namespace
+
+ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames)
+    : timing_(c.timing),
+      sched_(c),
+      tc_(c.timing),
+      latch_(c.pipeline.latch),
+      first_(first_frame),
+      end_(first_frame + frames),
+      field_cycles_(timing_.field_cycles()),
+      row_pixels_(c.timing.eye_scan == dp::EyeScan::SideBySide ? c.timing.eyes * c.timing.h_active
+                                                                : c.timing.h_active) {
+  int64_t last = 0;
+  for (int y = 0; y < tc_.v_active; ++y) last = std::max(last, timing_.line_start_cycle(0, y));
+  last_offset_ = last + row_pixels_ - 1;
+}
+
+ScanPosition ScanTiming::position(int64_t cycle) const {
+  Cursor c;
+  return position(cycle, c);
+}
+
+ScanPosition ScanTiming::position(int64_t cycle, Cursor& cur) const {
+  const int fields = tc_.fields_per_frame;
+  ScanPosition& p = cur.pos;
+  if (cycle == cur.cycle) return p;
+  // (An interlaced field may end part-way through its last line: never step there.)
+  const bool step = cycle == cur.cycle + 1 && p.hpos + 1 < tc_.h_total() &&
+                    (fields == 1 || p.line < field_cycles_ / tc_.h_total());
+  cur.cycle = cycle;
+  if (step) {
+    ++p.hpos;  // the same line: only the horizontal flags change
+  } else {
+    const int64_t F = timing_.frame_cycles();
+    p.frame = floor_div(cycle, F);
+    const int64_t o = cycle - p.frame * F;
+    cur.field = static_cast<int>(o / field_cycles_);
+    const int64_t of = o - cur.field * field_cycles_;
+    p.line = static_cast<int32_t>(of / tc_.h_total());
+    p.hpos = static_cast<int32_t>(of % tc_.h_total());
+    const int y = p.line * fields + cur.field;
+    p.vblank = y >= tc_.v_active;
+    const int active_lines = (tc_.v_active - cur.field + fields - 1) / fields;
+    const int vs0 = active_lines + tc_.v_front_porch / fields;
+    p.vsync = tc_.v_sync > 0 && p.line >= vs0 && p.line < vs0 + std::max(1, tc_.v_sync / fields);
+  }
+  p.active = !p.vblank && p.hpos < row_pixels_;
+  p.hsync = p.hpos >= row_pixels_ + tc_.h_front_porch && p.hpos < row_pixels_ + tc_.h_front_porch + tc_.h_sync;
+  return p;
+}
+
+bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
+  const ScanPosition p = position(slot_cycle, cur);
+  if (!p.active || p.frame < first_ || p.frame >= end_) return false;
+  out.frame = p.frame;
+  out.slot_cycle = slot_cycle;
+  out.y = p.line * tc_.fields_per_frame + cur.field;
+  if (tc_.eye_scan == dp::EyeScan::SideBySide) {
+    out.eye_first = static_cast<uint8_t>(p.hpos / tc_.h_active);
+    out.eye_count = 1;
+    out.x = p.hpos % tc_.h_active;
+  } else {
+    out.eye_first = 0;
+    out.eye_count = static_cast<uint8_t>(tc_.eyes);
+    out.x = p.hpos;
+  }
+  const bool line_start = out.x == 0 && out.eye_first == 0;
+  switch (latch_) {
+    case dp::LatchPolicy::PerFrame: out.latch = line_start && out.y == 0; break;
+    case dp::LatchPolicy::PerField: out.latch = line_start && p.line == 0; break;
+    case dp::LatchPolicy::PerScanline: out.latch = line_start; break;
+    case dp::LatchPolicy::PerPixel: out.latch = true; break;
+  }
+  return true;
+}
+
+}  // namespace arp::cycle

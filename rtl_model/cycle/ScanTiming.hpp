@@ -1,0 +1,103 @@
+// The video timing generator's logic: which pixel (if any) a pixel-clock slot
+// scans out, the panel's scan position for the waveform, and the issue of
+// each pixel `issue_lead` cycles before its slot. If the first FIFO is not
+// ready the pixel waits in a backlog and goes as soon as it can -- late, so
+// scan-out will count it as an underflow, but never lost.
+#pragma once
+#include <cstdint>
+#include <deque>
+#include <limits>
+
+#include "PixelTokens.hpp"
+#include "rtl_model/datapath/PipelineSchedule.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
+
+namespace arp::cycle {
+
+struct ScanPosition {
+  int64_t frame = 0;
+  int32_t line = 0;  // line of the field, in scan order
+  int32_t hpos = 0;  // pixel clock within the line
+  bool active = false, hsync = false, vsync = false, vblank = false;
+};
+
+class ScanTiming {
+ public:
+  // Pixels of frames [first_frame, first_frame + frames) are issued.
+  ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames);
+
+  const dp::VideoTiming& timing() const { return timing_; }
+  const dp::PipelineSchedule& schedule() const { return sched_; }
+  int64_t first_frame() const { return first_; }
+  int64_t end_frame() const { return end_; }
+
+  // The pixel scanned out at `slot_cycle`; false in blanking or outside the run's frames.
+  bool decode(int64_t slot_cycle, PixelSlot& out) const { return decode(slot_cycle, out, scratch_); }
+  ScanPosition position(int64_t cycle) const;
+
+  // Position of consecutive cycles without divisions: steps from the last
+  // cycle asked for when it is the next one (the common case), else recomputes.
+  struct Cursor {
+    int64_t cycle = std::numeric_limits<int64_t>::min();
+    int field = 0;
+    ScanPosition pos;
+  };
+  ScanPosition position(int64_t cycle, Cursor& cur) const;
+  bool decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const;
+  // The last active slot of a frame.
+  int64_t last_slot(int64_t frame) const { return timing_.frame_start_cycle(frame) + last_offset_; }
+  // First and last cycle a run needs: the first issue, and the last frame's swap.
+  int64_t first_cycle() const { return timing_.frame_start_cycle(first_) - sched_.issue_lead(); }
+  int64_t end_cycle() const { return sched_.swap_cycle(end_ - 1) + 1; }
+
+  // One clock of the issue logic.
+  template <class OutFifo>
+  void tick(int64_t cycle, OutFifo& out) {
+    PixelSlot s;
+    if (decode(cycle + sched_.issue_lead(), s, issue_cursor_)) backlog_.push_back(s);
+    issued = 0;
+    if (!backlog_.empty()) {
+      if (out.can_write()) {
+        out.write(backlog_.front(), cycle);
+        backlog_.pop_front();
+        issued = 1;
+      } else {
+        ++issue_stalls_;
+        out.note_blocked();
+      }
+    }
+    const ScanPosition p = position(cycle, panel_cursor_);
+    h_count = p.hpos;
+    v_count = p.line;
+    frame_count = p.frame;
+    display_enable = p.active;
+    hsync = p.hsync;
+    vsync = p.vsync;
+    vblank = p.vblank;
+    backlog = static_cast<uint32_t>(backlog_.size());
+  }
+  int64_t issue_stalls() const { return issue_stalls_; }
+
+  // Traced: the panel's scan position now, and the issue handshake.
+  int32_t h_count = 0, v_count = 0;
+  int64_t frame_count = 0;
+  bool display_enable = false, hsync = false, vsync = false, vblank = false;
+  uint8_t issued = 0;
+  uint32_t backlog = 0;
+
+ private:
+  dp::VideoTiming timing_;
+  dp::PipelineSchedule sched_;
+  dp::VideoTimingConfig tc_;
+  dp::LatchPolicy latch_;
+  int64_t first_, end_;
+  int64_t field_cycles_;
+  int row_pixels_;      // active pixel clocks per line
+  int64_t last_offset_;
+  std::deque<PixelSlot> backlog_;
+  Cursor issue_cursor_, panel_cursor_;
+  mutable Cursor scratch_;
+  int64_t issue_stalls_ = 0;
+};
+
+}  // namespace arp::cycle

@@ -1,0 +1,104 @@
+// A pipeline stage's register stages: an elastic pipe of `latency` slots.
+// A pixel taken from the input FIFO at cycle c is handed to the output FIFO
+// at cycle c + latency - 1 (visible to the next stage at c + latency) unless
+// the output is not ready, in which case it waits and the pipe fills; a
+// full pipe stops taking input, which is how backpressure travels upstream.
+// The arithmetic runs when a pixel enters; only its timing is modelled here.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace arp::cycle {
+
+struct StageStats {
+  int latency_cycles = 0;    // configured
+  int64_t pixels = 0;
+  int64_t min_cycles = 0, max_cycles = 0;  // measured: input taken -> visible downstream
+  double mean_cycles = 0;
+  int64_t stalled_cycles = 0;   // a finished pixel waited for a full output FIFO
+  int64_t forced_stall_cycles = 0;  // stalls injected by a test or experiment
+};
+
+template <class Out>
+class StagePipe {
+ public:
+  explicit StagePipe(int latency) : latency_(latency), ring_(static_cast<size_t>(latency) + 1) {}
+
+  int latency() const { return latency_; }
+  int occupancy() const { return count_; }
+
+  // One clock. `compute(const In&, Out&)` is the stage's datapath call, filling the slot in place.
+  // `forced_stall`: the stage does nothing this cycle (an injected stall).
+  template <class InFifo, class OutFifo, class Fn>
+  void tick(int64_t cycle, InFifo& in, OutFifo& out, Fn&& compute, bool forced_stall = false) {
+    valid_out = 0;
+    if (forced_stall) {
+      ++forced_;
+      ready_in = 0;
+      return;
+    }
+    const bool head_done = count_ > 0 && entry(0).done <= cycle;
+    const bool out_ready = out.can_write();
+    const bool pops = head_done && out_ready;
+    ready_in = (count_ < latency_ || pops) ? 1 : 0;
+    if (ready_in && in.can_read()) {
+      Entry& e = ring_[(head_ + static_cast<size_t>(count_)) % ring_.size()];
+      compute(in.front(), e.value);
+      e.taken = cycle;
+      e.done = cycle + latency_ - 1;
+      in.read(cycle);
+      ++count_;
+    }
+    if (count_ > 0 && entry(0).done <= cycle) {
+      if (out.can_write()) {
+        const Entry& e = entry(0);
+        out.write(e.value, cycle);
+        record(cycle + 1 - e.taken);
+        head_ = (head_ + 1) % ring_.size();
+        --count_;
+        valid_out = 1;
+      } else {
+        ++stalled_;
+        out.note_blocked();
+      }
+    }
+  }
+
+  StageStats stats() const {
+    StageStats s;
+    s.latency_cycles = latency_;
+    s.pixels = n_;
+    s.min_cycles = n_ ? min_ : 0;
+    s.max_cycles = max_;
+    s.mean_cycles = n_ ? static_cast<double>(sum_) / static_cast<double>(n_) : 0.0;
+    s.stalled_cycles = stalled_;
+    s.forced_stall_cycles = forced_;
+    return s;
+  }
+
+  // Traced handshake: a pixel left this cycle / the stage could take one.
+  uint8_t valid_out = 0, ready_in = 1;
+
+ private:
+  struct Entry {
+    Out value{};
+    int64_t taken = 0, done = 0;
+  };
+  const Entry& entry(int i) const { return ring_[(head_ + static_cast<size_t>(i)) % ring_.size()]; }
+  void record(int64_t c) {
+    ++n_;
+    sum_ += c;
+    min_ = std::min(min_, c);
+    max_ = std::max(max_, c);
+  }
+
+  int latency_;
+  std::vector<Entry> ring_;
+  size_t head_ = 0;
+  int count_ = 0;
+  int64_t n_ = 0, sum_ = 0, min_ = std::numeric_limits<int64_t>::max(), max_ = 0, stalled_ = 0, forced_ = 0;
+};
+
+}  // namespace arp::cycle

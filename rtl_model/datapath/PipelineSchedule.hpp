@@ -1,0 +1,48 @@
+// The pipeline's schedule when no stage stalls: when a pixel is issued, when
+// it passes each stage, and so how far ahead of its photon the orientation
+// register is sampled. Every fidelity level takes its orientation lead from
+// here, so all of them latch the same tracker sample for the same pixel.
+//
+// Pixel p (scan-out cycle s) is issued at s - issue_lead into the first FIFO,
+// visible one cycle later; each stage adds its latency; the scan-out stage
+// takes the pixel latency(scan_out) cycles before its slot.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "ArpConfig.hpp"
+#include "VideoTiming.hpp"
+
+namespace arp::dp {
+
+class PipelineSchedule {
+ public:
+  explicit PipelineSchedule(const ArpConfig& c);
+
+  // Cycles between issuing a pixel and scanning it out.
+  int64_t issue_lead() const { return issue_lead_; }
+  // Cycles from the pixel entering stage s to its scan-out slot.
+  int64_t stage_to_scanout(Stage s) const { return to_scanout_[static_cast<size_t>(s)]; }
+  // The functional model's lead: the latch-point pixel enters the orientation
+  // matrix unit this many cycles before its slot, and the register is read
+  // pipeline.latch_lead_cycles before that.
+  int64_t orientation_lead() const { return stage_to_scanout(Stage::Rotate) + latch_extra_; }
+  // Cycle of the first vertical-blank line after frame `frame`'s last active line (the buffer swap).
+  int64_t swap_cycle(int64_t frame) const { return timing_.frame_start_cycle(frame) + swap_offset_; }
+  // Cycles from the swap to the next frame's first active pixel.
+  int64_t vblank_cycles() const { return timing_.frame_cycles() - swap_offset_; }
+
+ private:
+  VideoTiming timing_;
+  int64_t issue_lead_;
+  int64_t latch_extra_;
+  int64_t swap_offset_;
+  std::array<int64_t, kStageCount> to_scanout_{};
+};
+
+// Exact clock edges of an arbitrary clock: cycle n starts at floor(n * 1e12 / hz) ps.
+int64_t clock_cycle_to_ps(int64_t cycle, int64_t hz);
+// The first cycle that starts at or after ps.
+int64_t clock_cycle_at_or_after(int64_t ps, int64_t hz);
+
+}  // namespace arp::dp

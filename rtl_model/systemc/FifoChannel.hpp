@@ -1,0 +1,58 @@
+// The clocked FIFO as a SystemC primitive channel: stages reach it through
+// ports of its two interfaces; reads and writes take effect in the update
+// phase of the clock edge's delta cycle, like registers, through the same
+// core (cycle::ClockedFifo) the fast model uses.
+#pragma once
+#include <systemc>
+
+#include <string>
+
+#include "rtl_model/cycle/ClockedFifo.hpp"
+
+namespace arp::scm {
+
+template <class T>
+class FifoWriteIf : virtual public sc_core::sc_interface {
+ public:
+  virtual bool can_write() const = 0;
+  virtual void write(const T& v, int64_t cycle) = 0;
+  virtual void note_blocked() = 0;
+};
+
+template <class T>
+class FifoReadIf : virtual public sc_core::sc_interface {
+ public:
+  virtual bool can_read() const = 0;
+  virtual const T& front() const = 0;
+  virtual void read(int64_t cycle) = 0;
+};
+
+template <class T>
+class FifoChannel : public sc_core::sc_prim_channel, public FifoWriteIf<T>, public FifoReadIf<T> {
+ public:
+  FifoChannel(const char* name, int depth) : sc_core::sc_prim_channel(name), core_(name, depth) {}
+
+  bool can_write() const override { return core_.can_write(); }
+  void write(const T& v, int64_t cycle) override {
+    core_.write(v, cycle);
+    request_update();
+  }
+  void note_blocked() override { core_.note_blocked(); }
+  bool can_read() const override { return core_.can_read(); }
+  const T& front() const override { return core_.front(); }
+  void read(int64_t cycle) override {
+    core_.read(cycle);
+    request_update();
+  }
+
+  cycle::ClockedFifo<T>& core() { return core_; }
+  const cycle::ClockedFifo<T>& core() const { return core_; }
+
+ protected:
+  void update() override { core_.update(); }
+
+ private:
+  cycle::ClockedFifo<T> core_;
+};
+
+}  // namespace arp::scm

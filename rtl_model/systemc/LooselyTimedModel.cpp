@@ -1,0 +1,101 @@
+#include "LooselyTimedModel.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "ClockGenerator.hpp"
+
+namespace arp::scm {
+
+using namespace sc_core;
+
+LooselyTimedModel::LooselyTimedModel(sc_module_name name, const cycle::TimedInputs& in, const RunWindow& w)
+    : sc_module(name),
+      in_(in),
+      w_(w),
+      arith_(in.config),
+      scan_(in.config, in.first_frame, in.frames),
+      latch_(arith_, *in.orientation),
+      host_(in.config, in.host_jobs),
+      tracker("tracker_interface", *in.orientation, w.base_ps, w.end_ps),
+      tokens_(std::make_unique<Tokens>()),
+      rotate_to_scanout_(scan_.schedule().stage_to_scanout(dp::Stage::Rotate)) {
+  frame_.resize(arith_.lens_table().width(), arith_.lens_table().height(), arith_.lens_table().eyes(), true);
+  frame_.display_bits = in.config.pipeline.display_bits;
+  SC_THREAD(run);
+}
+
+void LooselyTimedModel::wait_until_cycle(int64_t c) {
+  const sc_time t = sim_time(scan_.timing().cycles_to_ps(c), w_.base_ps);
+  if (t > sc_time_stamp()) wait(t - sc_time_stamp());
+}
+
+void LooselyTimedModel::line(int64_t frame, int y) {
+  const auto& t = scan_.timing();
+  const auto& tc = in_.config.timing;
+  const int64_t delay = in_.config.pipeline.photon_delay_ps;
+  const int sbs = tc.eye_scan == dp::EyeScan::SideBySide ? tc.eyes : 1;
+  for (int e0 = 0; e0 < sbs; ++e0)
+    for (int x = 0; x < tc.h_active; ++x) {
+      const int64_t slot_cycle = t.pixel_cycle(frame, e0, x, y);
+      cycle::PixelSlot s;
+      scan_.decode(slot_cycle, s);
+      latch_.on_pixel(s, slot_cycle - rotate_to_scanout_);
+      arith_.lens(s, tokens_->lens);
+      arith_.rotate(tokens_->lens, latch_.matrix, latch_.sample, tokens_->rotated);
+      arith_.address(tokens_->rotated, tokens_->address);
+      arith_.fetch(tokens_->address, *in_.memories, tokens_->fetch);
+      arith_.compose(tokens_->fetch, tokens_->composed);
+      arith_.filter(tokens_->composed, tokens_->color);
+      const cycle::ColorToken& c = tokens_->color;
+      const int64_t photon = t.cycles_to_ps(slot_cycle) + delay;
+      const int64_t sample_ps = (*in_.orientation)[c.sample].time_ps;
+      for (int k = 0; k < s.eye_count; ++k) {
+        const size_t i = frame_.index(s.eye_first + k, s.x, s.y);
+        frame_.pixels[i] = arith_.display(c.color[k]);
+        frame_.photon_ps[i] = photon;
+        lat_.add(photon, sample_ps);
+      }
+    }
+}
+
+void LooselyTimedModel::run() {
+  const auto& t = scan_.timing();
+  const auto& sched = scan_.schedule();
+  const auto& tc = in_.config.timing;
+  const int64_t lead = sched.issue_lead();
+  std::vector<std::pair<int64_t, int>> lines;  // (line start cycle offset, y) in scan order
+  for (int y = 0; y < tc.v_active; ++y) lines.push_back({t.line_start_cycle(0, y), y});
+  std::sort(lines.begin(), lines.end());
+  for (int64_t f = scan_.first_frame(); f < scan_.end_frame(); ++f) {
+    for (const auto& [offset, y] : lines) {
+      wait_until_cycle(t.frame_start_cycle(f) + offset - lead);
+      quantum_frame_ = f;
+      quantum_line_ = y;
+      ++quanta_;
+      line(f, y);
+    }
+    const int64_t sw = sched.swap_cycle(f);
+    wait_until_cycle(sw);
+    swaps_ += host_.at_vertical_blank(t.cycles_to_ps(sw), *in_.memories);
+    cycle::FrameReport r;
+    r.frame = f;
+    r.pixels = static_cast<int64_t>(frame_.width) * frame_.height;
+    r.first_photon_ps = t.cycles_to_ps(t.frame_start_cycle(f)) + in_.config.pipeline.photon_delay_ps;
+    r.last_photon_ps = t.cycles_to_ps(scan_.last_slot(f)) + in_.config.pipeline.photon_delay_ps;
+    lat_.summarise(r);
+    frame_.frame_index = f;
+    if (in_.sink) in_.sink(frame_, r);
+    lat_.reset();
+  }
+}
+
+void LooselyTimedModel::trace(sc_trace_file* tf) {
+  const std::string n = name();
+  sc_trace(tf, quantum_frame_, n + ".quantum_frame");
+  sc_trace(tf, quantum_line_, n + ".quantum_line");
+  sc_trace(tf, latch_.sample, n + ".matrix_sample");
+  tracker.trace(tf);
+}
+
+}  // namespace arp::scm

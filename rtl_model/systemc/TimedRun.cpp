@@ -1,0 +1,209 @@
+#include "TimedRun.hpp"
+
+#include <systemc>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "ArpPipelineTop.hpp"
+#include "ClockGenerator.hpp"
+#include "FastCycleModel.hpp"
+#include "LooselyTimedModel.hpp"
+#include "common/InputError.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+namespace arp::scm {
+
+using namespace sc_core;
+
+std::string to_string(Fidelity f) {
+  switch (f) {
+    case Fidelity::Functional: return "functional";
+    case Fidelity::LooselyTimed: return "lt";
+    case Fidelity::Cycle: return "cycle";
+    case Fidelity::Rtl: return "rtl";
+  }
+  return "?";
+}
+
+bool parse(const std::string& s, Fidelity& out) {
+  for (Fidelity f : {Fidelity::Functional, Fidelity::LooselyTimed, Fidelity::Cycle, Fidelity::Rtl})
+    if (s == to_string(f)) {
+      out = f;
+      return true;
+    }
+  return false;
+}
+
+const char* describe(Fidelity f) {
+  switch (f) {
+    case Fidelity::Functional: return "untimed functional model (bit-accurate frames, computed photon times)";
+    case Fidelity::LooselyTimed: return "loosely timed, one-scanline quantum (SystemC thread)";
+    case Fidelity::Cycle: return "fast cycle-accurate, one SystemC process per clock domain";
+    case Fidelity::Rtl: return "detailed cycle-accurate, one SC_MODULE per stage with clocked FIFO channels";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check_inputs(const cycle::TimedInputs& in, bool timed) {
+  const auto issues = timed ? dp::validate_timed(in.config) : dp::validate(in.config);
+  if (!issues.empty()) throw InputError("configuration", issues.front().key, issues.front().reason);
+  if (!in.memories || !in.orientation) throw std::logic_error("run_timed: memories and orientation are required");
+  if (in.memories->eyes() != in.config.timing.eyes || in.memories->count() != in.config.memory.count)
+    throw std::logic_error("run_timed: the memory set does not match the configuration");
+  if (in.frames < 1) throw InputError("frames", "", "must be at least 1");
+  if (in.first_frame < 0) throw InputError("first frame", "", "must be >= 0");
+  cycle::check_host_jobs(in.host_jobs, in.config, "host write jobs");
+}
+
+// The functional level: frames from the untimed model, host jobs at their
+// vertical blanks, photon times and latencies computed from the schedule.
+TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& opt) {
+  TimedResult r;
+  r.fidelity = Fidelity::Functional;
+  const FunctionalModel model(in.config);
+  const dp::PipelineSchedule sched(in.config);
+  const auto& t = model.timing();
+  cycle::ScanTiming scan(in.config, in.first_frame, in.frames);
+  cycle::PlannedHostWrites host(in.config, in.host_jobs);
+  RenderOptions ro;
+  ro.threads = opt.threads;
+  ro.photon_times = true;
+  const auto t0 = Clock::now();
+  HmdFrame f;
+  cycle::LatencyCollector lat;
+  const auto& pc = in.config.pipeline;
+  const int lead = static_cast<int>(model.orientation_lead());
+  for (int64_t k = 0; k < in.frames; ++k) {
+    const int64_t frame = in.first_frame + k;
+    model.render(*in.memories, *in.orientation, frame, f, ro);
+    cycle::FrameReport fr;
+    fr.frame = frame;
+    fr.pixels = static_cast<int64_t>(f.width) * f.height;
+    for (int e = 0; e < f.eyes; ++e)
+      for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+          const size_t s = in.orientation->index_at(t.cycles_to_ps(dp::latch_cycle(t, pc.latch, lead, frame, e, x, y)));
+          lat.add(f.photon_ps[f.index(e, x, y)], (*in.orientation)[s].time_ps);
+        }
+    lat.summarise(fr);
+    lat.reset();
+    fr.first_photon_ps = t.cycles_to_ps(t.frame_start_cycle(frame)) + pc.photon_delay_ps;
+    fr.last_photon_ps = t.cycles_to_ps(scan.last_slot(frame)) + pc.photon_delay_ps;
+    if (in.sink) in.sink(f, fr);
+    r.frames.push_back(fr);
+    r.swaps += host.at_vertical_blank(t.cycles_to_ps(sched.swap_cycle(frame)), *in.memories);
+    if (opt.progress)
+      opt.progress(static_cast<double>(k + 1) / static_cast<double>(in.frames),
+                   "frame " + std::to_string(k + 1) + "/" + std::to_string(in.frames));
+  }
+  r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.host_jobs = host.timings();
+  r.first_cycle = scan.first_cycle();
+  r.end_cycle = scan.end_cycle();
+  r.issue_lead = sched.issue_lead();
+  r.orientation_lead = sched.orientation_lead();
+  return r;
+}
+
+bool g_simulated = false;
+
+}  // namespace
+
+TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) {
+  if (opt.fidelity == Fidelity::Functional) {
+    check_inputs(in, false);
+    return run_functional(in, opt);
+  }
+  check_inputs(in, true);
+  if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
+  g_simulated = true;
+  sc_set_time_resolution(1, SC_PS);
+
+  TimedResult r;
+  r.fidelity = opt.fidelity;
+  cycle::TimedInputs run_in = in;  // the kernels keep references to the inputs
+  const cycle::FrameSink user_sink = in.sink;
+  const int64_t frames = in.frames;
+  run_in.sink = [&r, &user_sink, &opt, frames](const HmdFrame& f, const cycle::FrameReport& fr) {
+    r.frames.push_back(fr);
+    if (user_sink) user_sink(f, fr);
+    if (opt.progress)
+      opt.progress(static_cast<double>(r.frames.size()) / static_cast<double>(frames),
+                   "frame " + std::to_string(r.frames.size()) + "/" + std::to_string(frames));
+  };
+  cycle::PipelineKernels k(run_in);
+  const RunWindow w = run_window(k, in.config);
+  r.first_cycle = w.first_cycle;
+  r.end_cycle = w.end_cycle;
+  r.issue_lead = k.scan.schedule().issue_lead();
+  r.orientation_lead = k.scan.schedule().orientation_lead();
+
+  std::unique_ptr<ArpPipelineTop> rtl;
+  std::unique_ptr<FastCycleModel> fast;
+  std::unique_ptr<LooselyTimedModel> lt;
+  switch (opt.fidelity) {
+    case Fidelity::Rtl: rtl = std::make_unique<ArpPipelineTop>("arp", k, in.config, *in.orientation, w); break;
+    case Fidelity::Cycle: fast = std::make_unique<FastCycleModel>("arp", k, in.config, *in.orientation, w); break;
+    default: lt = std::make_unique<LooselyTimedModel>("arp", run_in, w); break;
+  }
+
+  // The waveform window, in simulated time.
+  const int64_t span = w.end_ps - w.base_ps;
+  int64_t from = 0, to = span + 1;
+  if (!opt.vcd.path.empty()) {
+    from = std::max<int64_t>(0, std::min(span, opt.vcd.from_ps == INT64_MIN ? 0 : opt.vcd.from_ps - w.base_ps));
+    to = std::max(from, std::min(span + 1, opt.vcd.to_ps == INT64_MAX ? span + 1 : opt.vcd.to_ps - w.base_ps));
+  }
+  sc_trace_file* tf = nullptr;
+  auto open_trace = [&] {
+    tf = sc_create_vcd_trace_file(opt.vcd.path.c_str());
+    if (!tf) throw InputError(opt.vcd.path + ".vcd", "", "cannot create the waveform file");
+    tf->set_time_unit(1, SC_PS);
+    if (rtl) rtl->trace(tf);
+    if (fast) fast->trace(tf);
+    if (lt) lt->trace(tf);
+  };
+
+  const auto t0 = Clock::now();
+  auto advance_to = [](int64_t sim_ps) {
+    const sc_time target = sc_time::from_value(static_cast<sc_time::value_type>(sim_ps));
+    if (target > sc_time_stamp()) sc_start(target - sc_time_stamp());
+  };
+  if (!opt.vcd.path.empty()) {
+    if (from > 0) advance_to(from);
+    open_trace();
+    advance_to(to);
+    sc_close_vcd_trace_file(tf);
+    tf = nullptr;
+    if (rtl) rtl->stop_tracing();
+    if (fast) fast->stop_tracing();
+  }
+  advance_to(span + 1);
+  r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  if (rtl || fast) {
+    r.stages_measured = r.fifos_modelled = true;
+    r.stages = k.stage_stats();
+    r.fifos = rtl ? rtl->fifo_stats(w.end_cycle) : fast->fifo_stats(w.end_cycle);
+    r.host_jobs = k.host.timings();
+    r.swaps = k.swapper.swaps();
+    r.underflows = k.scanout.underflows();
+    r.issue_stalls = k.scan.issue_stalls();
+    r.orientation_writes = rtl ? rtl->tracker_interface().writes() : fast->tracker_interface().writes();
+    r.late_discarded = k.scanout.late_discarded();
+  } else {
+    r.host_jobs = lt->host_timings();
+    r.swaps = lt->swaps();
+    r.orientation_writes = lt->tracker_interface().writes();
+  }
+  return r;
+}
+
+}  // namespace arp::scm

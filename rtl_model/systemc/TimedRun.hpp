@@ -1,0 +1,58 @@
+// One run of the pipeline at a chosen fidelity level, the same inputs and the
+// same outputs for every level: frames with photon times (through the
+// sink), per-frame latency and underflows, stage and FIFO statistics, host
+// job times, and the simulator's own speed. SystemC cannot restart a
+// simulation in one process: a timed level runs once per process.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rtl_model/cycle/ClockedFifo.hpp"
+#include "rtl_model/cycle/PipelineKernels.hpp"
+
+namespace arp::scm {
+
+enum class Fidelity { Functional, LooselyTimed, Cycle, Rtl };
+std::string to_string(Fidelity f);  // functional, lt, cycle, rtl
+bool parse(const std::string& s, Fidelity& out);
+const char* describe(Fidelity f);
+
+struct VcdOptions {
+  std::string path;  // without ".vcd" (SystemC appends it); empty: no waveform
+  int64_t from_ps = std::numeric_limits<int64_t>::min();  // absolute window
+  int64_t to_ps = std::numeric_limits<int64_t>::max();
+};
+
+struct TimedRunOptions {
+  Fidelity fidelity = Fidelity::Rtl;
+  VcdOptions vcd;
+  std::function<void(double fraction, const std::string& what)> progress;
+  int threads = 0;  // functional level only
+};
+
+struct TimedResult {
+  Fidelity fidelity = Fidelity::Rtl;
+  std::vector<cycle::FrameReport> frames;
+  bool stages_measured = false, fifos_modelled = false;
+  std::array<cycle::StageStats, dp::kStageCount> stages{};
+  std::vector<std::pair<std::string, cycle::FifoStats>> fifos;
+  std::vector<cycle::HostJobTiming> host_jobs;
+  int64_t swaps = 0, underflows = 0, late_discarded = 0, issue_stalls = 0, orientation_writes = 0;
+  int64_t first_cycle = 0, end_cycle = 0;  // pixel clocks simulated: [first, end)
+  int64_t issue_lead = 0, orientation_lead = 0;
+  double wall_seconds = 0;
+  double cycles_per_second() const {
+    return wall_seconds > 0 ? static_cast<double>(end_cycle - first_cycle) / wall_seconds : 0.0;
+  }
+};
+
+// Validates (validate_timed for the timed levels; InputError naming the
+// setting) before anything is simulated.
+TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt);
+
+}  // namespace arp::scm
