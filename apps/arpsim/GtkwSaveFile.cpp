@@ -17,11 +17,16 @@ struct Var {
   int width;
 };
 
-// Decimal for counts and positions, binary for single bits, hex for the rest.
+// Binary for single bits, signed decimal for vectors and matrix entries,
+// decimal for counts and positions, hex for colours and memory words.
 const char* flags_for(const Var& v) {
   if (v.width == 1) return "@28";
+  static const char* const signed_decimal[] = {"view_", "world_", "matrix_", "_q14"};
+  for (const char* d : signed_decimal)
+    if (v.leaf.find(d) != std::string::npos) return "@424";
   static const char* const decimal[] = {"count", "cycle", "frame", "sample", "occupancy", "backlog", "underflows",
-                                        "job", "written", "line", "matrix_", "q"};
+                                        "job", "written", "line", "face", "texel_", "weight_"};
+  if (v.leaf == "x" || v.leaf == "y") return "@24";
   for (const char* d : decimal)
     if (v.leaf.find(d) != std::string::npos) return "@24";
   return "@22";

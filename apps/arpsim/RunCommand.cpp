@@ -179,7 +179,13 @@ int run(const RunArgs& a) {
     char hex[2][24];
     std::snprintf(hex[0], sizeof hex[0], "%016" PRIx64, ph);
     std::snprintf(hex[1], sizeof hex[1], "%016" PRIx64, th);
+    // The samples the frame's latches can take: from its first latch to the next frame's.
+    const int64_t lead = dp::PipelineSchedule(c).orientation_lead();
+    const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame) - lead));
+    const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame + 1) - lead));
     frames.push_back({{"frame", r.frame},
+                      {"first_sample", lo},
+                      {"last_sample", hi},
                       {"pixels", r.pixels},
                       {"underflows", r.underflows},
                       {"late_discarded", r.late_discarded},

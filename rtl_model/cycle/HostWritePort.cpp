@@ -112,7 +112,7 @@ void HostWritePort::tick(int64_t host_cycle) {
     const HostWriteJob& j = jobs_[next_];
     const size_t b = static_cast<size_t>(j.eye * count_ + j.memory);
     if (now < j.start_ps || (free_after_ps_[b] != kNever && now <= free_after_ps_[b])) return;
-    busy = 1;
+    busy = true;
     job = static_cast<int32_t>(next_);
     pos_ = 0;
     if (j.clear_first) mem_.bank(j.eye, j.memory).clear_back();
@@ -138,7 +138,7 @@ void HostWritePort::tick(int64_t host_cycle) {
     r.commit_ps = now;
     r.swap_ps = sw.ps;
     r.swap_frame = sw.frame;
-    busy = 0;
+    busy = false;
     ++next_;
   }
 }
@@ -147,11 +147,11 @@ BufferSwapper::BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, 
     : mem_(mem), host_(host), timing_(c.timing), sched_(c) {}
 
 void BufferSwapper::tick(int64_t cycle) {
-  swap_strobe = 0;
+  swap_strobe = false;
   const int64_t F = timing_.frame_cycles();
   const int64_t f = floor_div(cycle - sched_.swap_cycle(0), F);
   if (sched_.swap_cycle(f) != cycle) return;
-  swap_strobe = 1;
+  swap_strobe = true;
   const int64_t now = timing_.cycles_to_ps(cycle);
   for (int e = 0; e < mem_.eyes(); ++e)
     for (int m = 0; m < mem_.count(); ++m) {

@@ -78,7 +78,7 @@ class HostWritePort {
   int64_t commit_ps(int eye, int memory) const { return commit_ps_[static_cast<size_t>(eye * count_ + memory)]; }
 
   // Traced.
-  uint8_t busy = 0;
+  bool busy = false;
   int32_t job = -1;
   int64_t texels_written = 0;
 
@@ -105,7 +105,7 @@ class BufferSwapper {
   int64_t swaps() const { return swaps_; }
   // Traced: which buffer of each bank is in front (bit per bank), pulsed swap strobe.
   uint32_t front_select = 0;
-  uint8_t swap_strobe = 0;
+  bool swap_strobe = false;
 
  private:
   dp::DisplayMemorySet& mem_;

@@ -2,6 +2,7 @@
 // slot, carrying every eye scanned in that slot (both eyes of a lock-step
 // stereo panel go through two copies of the datapath side by side).
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "rtl_model/datapath/ArpConfig.hpp"
@@ -63,5 +64,16 @@ struct ColorToken {
   uint32_t sample;
   uint32_t color[kMaxEyes];  // memory colour code
 };
+
+// What a waveform shows of a token leaving a stage (first eye): up to three
+// values, named by probe_names().
+inline void probe(const LensToken& t, std::array<int64_t, 3>& o) { o = {t.view[0].x, t.view[0].y, t.view[0].z}; }
+inline void probe(const RotatedToken& t, std::array<int64_t, 3>& o) { o = {t.world[0].x, t.world[0].y, t.world[0].z}; }
+inline void probe(const AddressToken& t, std::array<int64_t, 3>& o) { o = {t.address[0].face, t.address[0].x, t.address[0].y}; }
+inline void probe(const FetchToken& t, std::array<int64_t, 3>& o) {
+  o = {static_cast<int64_t>(t.words[0][0][0]), t.wx[0], t.wy[0]};
+}
+inline void probe(const ComposedToken& t, std::array<int64_t, 3>& o) { o = {t.tap_color[0][0], t.tap_color[0][1], t.wx[0]}; }
+inline void probe(const ColorToken& t, std::array<int64_t, 3>& o) { o = {t.color[0], t.slot.x, t.slot.y}; }
 
 }  // namespace arp::cycle

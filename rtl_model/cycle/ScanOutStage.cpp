@@ -27,7 +27,7 @@ void ScanOutStage::show(const ColorToken& t, int64_t slot) {
     lat_.add(photon, sample_ps);
   }
   Shown& d = delay_[ring(slot)];
-  d.valid = 1;
+  d.valid = true;
   d.rgb = frame_.pixels[frame_.index(t.slot.eye_first, t.slot.x, t.slot.y)];
 }
 
@@ -42,7 +42,7 @@ void ScanOutStage::underflow(const PixelSlot& s) {
   ++underflows_total_;
   underflow_count = underflows_total_;
   Shown& d = delay_[ring(s.slot_cycle)];
-  d.valid = 1;
+  d.valid = true;
   d.rgb = bad_;
 }
 

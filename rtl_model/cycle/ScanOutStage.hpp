@@ -53,13 +53,13 @@ class ScanOutStage {
   int64_t late_discarded() const { return late_total_; }
 
   // Traced: the pixel on the panel this cycle (first eye) and the running underflow count.
-  uint8_t display_valid = 0;
+  bool display_valid = false;
   uint32_t display_rgb = 0;
   int64_t underflow_count = 0;
 
  private:
   struct Shown {
-    uint8_t valid = 0;
+    bool valid = false;
     uint32_t rgb = 0;
   };
   size_t ring(int64_t c) const {

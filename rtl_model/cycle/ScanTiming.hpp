@@ -55,12 +55,12 @@ class ScanTiming {
   void tick(int64_t cycle, OutFifo& out) {
     PixelSlot s;
     if (decode(cycle + sched_.issue_lead(), s, issue_cursor_)) backlog_.push_back(s);
-    issued = 0;
+    issued = false;
     if (!backlog_.empty()) {
       if (out.can_write()) {
         out.write(backlog_.front(), cycle);
         backlog_.pop_front();
-        issued = 1;
+        issued = true;
       } else {
         ++issue_stalls_;
         out.note_blocked();
@@ -82,7 +82,7 @@ class ScanTiming {
   int32_t h_count = 0, v_count = 0;
   int64_t frame_count = 0;
   bool display_enable = false, hsync = false, vsync = false, vblank = false;
-  uint8_t issued = 0;
+  bool issued = false;
   uint32_t backlog = 0;
 
  private:

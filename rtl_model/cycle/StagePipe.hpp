@@ -6,9 +6,12 @@
 // The arithmetic runs when a pixel enters; only its timing is modelled here.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
+
+#include "PixelTokens.hpp"
 
 namespace arp::cycle {
 
@@ -33,16 +36,16 @@ class StagePipe {
   // `forced_stall`: the stage does nothing this cycle (an injected stall).
   template <class InFifo, class OutFifo, class Fn>
   void tick(int64_t cycle, InFifo& in, OutFifo& out, Fn&& compute, bool forced_stall = false) {
-    valid_out = 0;
+    valid_out = false;
     if (forced_stall) {
       ++forced_;
-      ready_in = 0;
+      ready_in = false;
       return;
     }
     const bool head_done = count_ > 0 && entry(0).done <= cycle;
     const bool out_ready = out.can_write();
     const bool pops = head_done && out_ready;
-    ready_in = (count_ < latency_ || pops) ? 1 : 0;
+    ready_in = count_ < latency_ || pops;
     if (ready_in && in.can_read()) {
       Entry& e = ring_[(head_ + static_cast<size_t>(count_)) % ring_.size()];
       compute(in.front(), e.value);
@@ -55,10 +58,11 @@ class StagePipe {
       if (out.can_write()) {
         const Entry& e = entry(0);
         out.write(e.value, cycle);
+        probe(e.value, data_out);
         record(cycle + 1 - e.taken);
         head_ = (head_ + 1) % ring_.size();
         --count_;
-        valid_out = 1;
+        valid_out = true;
       } else {
         ++stalled_;
         out.note_blocked();
@@ -78,8 +82,10 @@ class StagePipe {
     return s;
   }
 
-  // Traced handshake: a pixel left this cycle / the stage could take one.
-  uint8_t valid_out = 0, ready_in = 1;
+  // Traced handshake -- a pixel left this cycle / the stage could take one --
+  // and the last pixel's data (see probe() in PixelTokens.hpp).
+  bool valid_out = false, ready_in = true;
+  std::array<int64_t, 3> data_out{};
 
  private:
   struct Entry {

@@ -24,6 +24,9 @@ void AntiAliasingFilter::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.filter.ready_in, n + ".ready_in");
   sc_trace(tf, k_.filter.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.filter.data_out[0], n + ".color");
+  sc_trace(tf, k_.filter.data_out[1], n + ".x");
+  sc_trace(tf, k_.filter.data_out[2], n + ".y");
 }
 
 }  // namespace arp::scm

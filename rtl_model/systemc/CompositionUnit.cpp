@@ -24,6 +24,9 @@ void CompositionUnit::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.compose.ready_in, n + ".ready_in");
   sc_trace(tf, k_.compose.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.compose.data_out[0], n + ".color_tap0");
+  sc_trace(tf, k_.compose.data_out[1], n + ".color_tap1");
+  sc_trace(tf, k_.compose.data_out[2], n + ".weight_x");
 }
 
 }  // namespace arp::scm

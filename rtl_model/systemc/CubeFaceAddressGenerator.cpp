@@ -24,6 +24,9 @@ void CubeFaceAddressGenerator::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.address.ready_in, n + ".ready_in");
   sc_trace(tf, k_.address.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.address.data_out[0], n + ".face");
+  sc_trace(tf, k_.address.data_out[1], n + ".texel_x");
+  sc_trace(tf, k_.address.data_out[2], n + ".texel_y");
 }
 
 }  // namespace arp::scm

@@ -29,6 +29,9 @@ void DisplayMemoryBanks::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.fetch.ready_in, n + ".ready_in");
   sc_trace(tf, k_.fetch.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.fetch.data_out[0], n + ".word_tap0_mem0");
+  sc_trace(tf, k_.fetch.data_out[1], n + ".weight_x");
+  sc_trace(tf, k_.fetch.data_out[2], n + ".weight_y");
   sc_trace(tf, k_.swapper.front_select, n + ".front_select");
   sc_trace(tf, k_.swapper.swap_strobe, n + ".swap_strobe");
   sc_trace(tf, k_.host.busy, n + ".host_busy");

@@ -1,4 +1,6 @@
-// Display memory banks: the pipeline read port (every memory and tap in parallel) with the double-buffer swap at vertical blank on the pixel clock, and the host write port on the host clock.
+// Display memory banks: the pipeline read port (every memory and tap in parallel) with the
+// double-buffer swap at vertical blank on the pixel clock, and the host write port on the host
+// clock.
 // Its arithmetic is the datapath's, through cycle::PipelineKernels.
 #pragma once
 #include <systemc>

@@ -24,6 +24,9 @@ void LensVectorTable::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.lens.ready_in, n + ".ready_in");
   sc_trace(tf, k_.lens.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.lens.data_out[0], n + ".view_x");
+  sc_trace(tf, k_.lens.data_out[1], n + ".view_y");
+  sc_trace(tf, k_.lens.data_out[2], n + ".view_z");
 }
 
 }  // namespace arp::scm

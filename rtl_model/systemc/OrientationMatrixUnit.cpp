@@ -24,6 +24,9 @@ void OrientationMatrixUnit::trace(sc_trace_file* tf) const {
   const std::string n = name();
   sc_trace(tf, k_.rotate.ready_in, n + ".ready_in");
   sc_trace(tf, k_.rotate.valid_out, n + ".valid_out");
+  sc_trace(tf, k_.rotate.data_out[0], n + ".world_x");
+  sc_trace(tf, k_.rotate.data_out[1], n + ".world_y");
+  sc_trace(tf, k_.rotate.data_out[2], n + ".world_z");
   sc_trace(tf, k_.latch.sample, n + ".matrix_sample");
   for (int i = 0; i < 9; ++i) sc_trace(tf, k_.latch.matrix.m[i], n + ".matrix_" + std::to_string(i / 3) + std::to_string(i % 3));
 }

@@ -1,4 +1,5 @@
-// Orientation matrix unit: loads the orientation register at latch points and rotates each view vector into the cube frame.
+// Orientation matrix unit: loads the orientation register at latch points and rotates each view
+// vector into the cube frame.
 // Its arithmetic is the datapath's, through cycle::PipelineKernels.
 #pragma once
 #include <systemc>

@@ -125,6 +125,7 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
   if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
   g_simulated = true;
   sc_set_time_resolution(1, SC_PS);
+  sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);  // e.g. the trace file's time-unit notice
 
   TimedResult r;
   r.fidelity = opt.fidelity;
