@@ -17,7 +17,7 @@ const std::string kArpsim = ARPSIM_BINARY;
 }
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (const char* sub : {"", " frame", " verify", " config", " run", " tracker", " tracker list", " tracker synth"}) {
+  for (const char* sub : {"", " frame", " verify", " config", " run", " gtkw", " tracker", " tracker list", " tracker synth"}) {
     const auto r = run_command(kArpsim + sub + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.output.find("--"), std::string::npos) << sub;

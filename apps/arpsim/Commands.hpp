@@ -13,5 +13,6 @@ Runner add_verify_command(CLI::App& app);
 Runner add_config_command(CLI::App& app);
 Runner add_tracker_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
+Runner add_gtkw_command(CLI::App& app);
 
 }  // namespace arp::app

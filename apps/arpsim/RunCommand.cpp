@@ -102,8 +102,8 @@ int run(const RunArgs& a) {
     poses = tracker::read_trace_csv(a.trace);
     motion_source = a.trace;
   } else if (a.motion.given()) {
-    // One second of margin before the first frame covers every lead.
-    poses = a.motion.make(static_cast<double>(start_ps) * 1e-12 - 1.0, static_cast<double>(end_ps - start_ps) * 1e-12 + 1.0);
+    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
+    poses = a.motion.make(static_cast<double>(start_ps) * 1e-12 - 1.0, static_cast<double>(end_ps - start_ps) * 1e-12 + 1.01);
     motion_source = "synthetic " + a.motion.motion;
   }
   std::vector<dp::OrientationSample> samples;
@@ -299,6 +299,20 @@ int run(const RunArgs& a) {
 }
 
 }  // namespace
+
+Runner add_gtkw_command(CLI::App& app) {
+  auto vcd = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("gtkw", "Write a grouped GTKWave save file for a VCD written by arpsim");
+  cmd->add_option("vcd", *vcd, "The waveform (.vcd)")->required();
+  cmd->add_option("--out,-o", *out, "Save file to write (default: the VCD's name with .gtkw)");
+  return [vcd, out] {
+    const std::string target = out->empty() ? fs::path(*vcd).replace_extension(".gtkw").string() : *out;
+    write_text_atomic(target, gtkw_for_vcd(*vcd, fs::path(*vcd).filename().string()));
+    std::printf("arpsim gtkw: %s (open: gtkwave %s %s)\n", target.c_str(), vcd->c_str(), target.c_str());
+    return 0;
+  };
+}
 
 Runner add_run_command(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();

@@ -20,6 +20,7 @@ int sc_main(int argc, char** argv) {
   add(arp::app::add_verify_command(app));
   add(arp::app::add_config_command(app));
   add(arp::app::add_run_command(app));
+  add(arp::app::add_gtkw_command(app));
   add(arp::app::add_tracker_command(app));
   try {
     app.parse(argc, argv);

@@ -1,0 +1,104 @@
+// arpsim run at the timed fidelity levels, end to end and across processes
+// (SystemC runs once per process): every level gives the same frames and
+// photon times, the two cycle-accurate levels the same statistics; waveforms
+// come with a GTKWave save file; bad timed input is refused before simulating.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "TestSupport.hpp"
+
+using arp::test::run_command;
+using arp::test::TempDir;
+
+namespace {
+const std::string kArpsim = ARPSIM_BINARY;
+const std::string kSmall =
+    " --set display.h_active=96 --set display.v_active=64 --set memory.face_size=128 --set pipeline.latch=\\\"pixel\\\"";
+
+nlohmann::json load(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics) {
+  TempDir d;
+  std::map<std::string, nlohmann::json> rep;
+  for (const std::string level : {"functional", "lt", "cycle", "rtl"}) {
+    const auto r = run_command(kArpsim + " run -q --fidelity " + level + " --frames 3 --every 0 --motion shake --peak 1000" +
+                               kSmall + " --report " + d.file(level + ".json") + " --csv " + d.file(level + ".csv"));
+    ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
+    rep[level] = load(d.file(level + ".json"));
+    EXPECT_EQ(rep[level]["fidelity"], level);
+    EXPECT_GT(rep[level]["simulation"]["pixel_clocks_per_second"].get<double>(), 0.0);
+  }
+  for (const std::string level : {"lt", "cycle", "rtl"}) {
+    ASSERT_EQ(rep[level]["frames"].size(), 3u);
+    for (size_t f = 0; f < 3; ++f) {
+      for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "first_sample", "last_sample"})
+        EXPECT_EQ(rep[level]["frames"][f][k], rep["functional"]["frames"][f][k]) << level << " frame " << f << " " << k;
+      EXPECT_EQ(rep[level]["frames"][f]["underflows"], 0);
+    }
+    EXPECT_EQ(read_all(d.file(level + ".csv")), read_all(d.file("functional.csv"))) << level;
+  }
+  // The fast and the detailed cycle-accurate models: the same FIFO and stage statistics.
+  EXPECT_EQ(rep["cycle"]["fifos"], rep["rtl"]["fifos"]);
+  EXPECT_EQ(rep["cycle"]["pipeline"], rep["rtl"]["pipeline"]);
+  EXPECT_EQ(rep["rtl"]["fifos"].size(), 7u);
+  EXPECT_EQ(rep["rtl"]["pipeline"]["orientation_lead_cycles"], 14);
+  EXPECT_FALSE(rep["lt"]["fifos_modelled"].get<bool>());
+}
+
+TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0 --vcd " + d.file("w/arp.vcd") +
+                             " --vcd-lines 0:3");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string vcd = read_all(d.file("w/arp.vcd"));
+  for (const char* sig : {"pixel_clk", "h_count", "v_count", "valid_out", "ready_in", "occupancy", "matrix_sample",
+                          "front_select", "display_rgb", "qw_q14"})
+    EXPECT_NE(vcd.find(sig), std::string::npos) << sig;
+  // The save file written beside it is the one committed in waveforms/ (but for the file it names).
+  auto body = [](std::string s) { return s.substr(s.find('\n', s.find("[dumpfile]"))); };
+  EXPECT_EQ(body(read_all(d.file("w/arp.gtkw"))), body(read_all(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/arp.gtkw")));
+  EXPECT_NE(read_all(d.file("w/arp.gtkw")).find("SystemC.arp.video_timing_generator.h_count[31:0]"), std::string::npos);
+  // No temporary file is left behind.
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(d.file("w"))) ++files;
+  EXPECT_EQ(files, 2u);
+}
+
+TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
+  TempDir d;
+  const std::string base = kArpsim + " run -q --frames 1 --every 0" + kSmall;
+  struct Bad {
+    std::string args, says;
+  };
+  for (const Bad& b : std::vector<Bad>{
+           {" --fidelity gates", "--fidelity"},
+           {" --fidelity functional --vcd " + d.file("x.vcd"), "no waveform"},
+           {" --fidelity rtl --vcd /proc/arpsim/x.vcd", "cannot write"},
+           {" --fidelity rtl --set timed.fifo_depth=0", "timed.fifo_depth"},
+           {" --fidelity cycle --set memory.count=9", "memory.count"},
+           {" --fidelity rtl --set display.pixel_clock_hz=200000000", "timed.lens_latency"},
+           {" --fidelity rtl --vcd " + d.file("y.vcd") + " --vcd-lines 5:2", "--vcd-lines"},
+           {" --fidelity rtl --vcd-lines 0:2", "needs --vcd"},
+           {" --fidelity lt --trace " + d.file("none.csv"), "none.csv"}}) {
+    const auto r = run_command(base + b.args + " --report " + d.file("r.json"));
+    EXPECT_EQ(r.status, 2) << b.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(b.says), std::string::npos) << b.args << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("r.json"))) << b.args;
+  }
+  EXPECT_EQ(d.entries(), 0u);  // not even a waveform
+}
