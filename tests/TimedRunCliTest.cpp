@@ -102,3 +102,35 @@ TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
   }
   EXPECT_EQ(d.entries(), 0u);  // not even a waveform
 }
+
+// A stall under fast motion moves latch points off the nominal schedule: the
+// fast model's frame speculation must fall back for exactly those pixels and
+// still agree with the detailed model (which never speculates) bit for bit,
+// and with itself with speculation off.
+TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
+  TempDir d;
+  const std::string args = " run -q --frames 2 --every 0 --motion rotate --rate 1000" + kSmall +
+                           " --stall rotate:3000:200 --stall fetch:9000:30";
+  std::map<std::string, nlohmann::json> rep;
+  for (const std::string v : {"cycle", "rtl", "cycle --no-speculation"}) {
+    const std::string name = v.substr(0, v.find(' ')) + std::to_string(rep.size());
+    const auto r = run_command(kArpsim + args + " --fidelity " + v + " --report " + d.file(name + ".json"));
+    ASSERT_EQ(r.status, 0) << v << "\n" << r.output;
+    rep[v] = load(d.file(name + ".json"));
+  }
+  EXPECT_GT(rep["rtl"]["underflows"].get<int>(), 0);
+  EXPECT_GT(rep["cycle"]["simulation"]["fallback_pixels"].get<int>(), 0);
+  EXPECT_EQ(rep["cycle --no-speculation"]["simulation"]["speculated_pixels"].get<int>(), 0);
+  for (const std::string v : {"cycle", "cycle --no-speculation"}) {
+    EXPECT_EQ(rep[v]["underflows"], rep["rtl"]["underflows"]) << v;
+    EXPECT_EQ(rep[v]["fifos"], rep["rtl"]["fifos"]) << v;
+    for (size_t f = 0; f < 2; ++f)
+      for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "underflows", "late_discarded"})
+        EXPECT_EQ(rep[v]["frames"][f][k], rep["rtl"]["frames"][f][k]) << v << " frame " << f << " " << k;
+  }
+  const auto bad = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity lt --stall rotate:10:5");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("cycle-accurate"), std::string::npos) << bad.output;
+  const auto bad2 = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity rtl --stall divider:10:5");
+  EXPECT_EQ(bad2.status, 2);
+}

@@ -36,6 +36,8 @@ struct RunArgs {
   MotionOptions motion;
   std::string fidelity = "functional";
   std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us;
+  std::vector<std::string> stalls;
+  bool no_speculation = false;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
   bool photon_times = false, quiet = false;
@@ -143,6 +145,40 @@ int run(const RunArgs& a) {
     }
   }
 
+  std::vector<cycle::StallWindow> stalls;
+  for (const std::string& spec : a.stalls) {
+    // STAGE:CLOCK:CYCLES, CLOCK counted from the first frame's first active pixel.
+    const auto c1 = spec.find(':'), c2 = spec.find(':', c1 == std::string::npos ? 0 : c1 + 1);
+    cycle::StallWindow w{dp::Stage::Lens, 0, 0};
+    bool ok = c1 != std::string::npos && c2 != std::string::npos;
+    if (ok) {
+      const std::string stage = spec.substr(0, c1);
+      ok = false;
+      for (int k = 0; k + 1 < dp::kStageCount; ++k)
+        if (stage == dp::stage_key(static_cast<dp::Stage>(k))) {
+          w.stage = static_cast<dp::Stage>(k);
+          ok = true;
+        }
+      try {
+        size_t n1 = 0, n2 = 0;
+        const std::string a1 = spec.substr(c1 + 1, c2 - c1 - 1), a2 = spec.substr(c2 + 1);
+        w.first_cycle = t.frame_start_cycle(a.first) + std::stoll(a1, &n1);
+        w.cycles = std::stoll(a2, &n2);
+        ok = ok && n1 == a1.size() && n2 == a2.size() && w.cycles > 0 && w.cycles <= 1'000'000'000;
+      } catch (const std::exception&) {
+        ok = false;
+      }
+    }
+    if (!ok)
+      throw InputError("--stall", spec,
+                       "expected STAGE:CLOCK:CYCLES with STAGE one of lens, rotate, address, fetch, compose, filter "
+                       "and CYCLES >= 1");
+    if (fid != scm::Fidelity::Rtl && fid != scm::Fidelity::Cycle)
+      throw InputError("--stall", spec, "stalls exist only at the cycle-accurate levels (cycle, rtl)");
+    stalls.push_back(w);
+  }
+  opt.speculate = !a.no_speculation;
+
   ProgressLine progress("run " + a.fidelity, !a.quiet);
   opt.progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
 
@@ -152,6 +188,7 @@ int run(const RunArgs& a) {
   in.orientation = &stream;
   in.first_frame = a.first;
   in.frames = a.frames;
+  in.stalls = stalls;
   nlohmann::json frames = nlohmann::json::array();
   std::string csv = frame_csv_header();
   int images = 0;
@@ -290,6 +327,9 @@ int run(const RunArgs& a) {
          {{"pixel_clocks", res.end_cycle - res.first_cycle},
           {"wall_seconds", res.wall_seconds},
           {"pixel_clocks_per_second", res.cycles_per_second()},
+          {"speculated_pixels", res.speculated_pixels},
+          {"fallback_pixels", res.fallback_pixels},
+          {"vcd_time_zero_ps", t.cycles_to_ps(res.first_cycle)},
           {"vcd", vcd_final}}},
         {"images", images},
         {"config", config::to_json(c)}};
@@ -336,6 +376,11 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--vcd", a->vcd, "VCD waveform (lt, cycle, rtl); a bare name goes into waveforms/; a .gtkw is written beside it");
   cmd->add_option("--vcd-lines", a->vcd_lines, "Trace only scanlines START:END counted from the first frame's start");
   cmd->add_option("--vcd-time-us", a->vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
+  cmd->add_option("--stall", a->stalls,
+                  "Inject a stall, STAGE:CLOCK:CYCLES (clock counted from the first frame's first pixel); repeatable")
+      ->take_all();
+  cmd->add_flag("--no-speculation", a->no_speculation,
+                "cycle level: compute every pixel stage by stage (no frame speculation; same results, slower)");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
   return [a] { return run(*a); };
 }

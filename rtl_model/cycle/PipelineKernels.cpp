@@ -23,7 +23,47 @@ PipelineKernels::PipelineKernels(const TimedInputs& in)
       scanout(arith, scan, *in.orientation, in.sink),
       mem_(in.memories),
       stalls_(in.stalls),
-      any_stalls_(!in.stalls.empty()) {}
+      any_stalls_(!in.stalls.empty()),
+      orientation_(in.orientation),
+      rotate_to_scanout_(scan.schedule().stage_to_scanout(dp::Stage::Rotate)) {}
+
+void PipelineKernels::set_speculation(bool on) {
+  if (!on) spec_.reset();
+  else if (!spec_) spec_ = std::make_unique<FrameSpeculation>(arith.config(), *mem_, *orientation_);
+}
+
+bool PipelineKernels::speculate_rotate(const LensToken& t, int64_t c, RotatedToken& o) {
+  // A latch pixel decides for itself and every pixel until the next latch:
+  // on its nominal clock it reads what the functional model assumed;
+  // otherwise it may still have read the same sample.
+  if (t.slot.latch) {
+    const int64_t nominal = t.slot.slot_cycle - rotate_to_scanout_;
+    const int64_t extra = arith.config().pipeline.latch_lead_cycles;
+    register_on_schedule_ = c == nominal || latch.register_sample(nominal - extra) == latch.sample;
+  }
+  if (!register_on_schedule_) {
+    ++spec_->fallbacks;
+    return false;
+  }
+  spec_->frame(t.slot.frame, swapper.swaps());  // rendered on the frame's first pixel
+  o.slot = t.slot;
+  o.slot.on_schedule = true;
+  o.sample = latch.sample;
+  ++spec_->speculated;
+  return true;
+}
+
+void PipelineKernels::recompute_address(const AddressToken& t, FetchToken& o) {
+  LensToken l;
+  RotatedToken r;
+  AddressToken a;
+  arith.lens(t.slot, l);
+  arith.rotate(l, arith.matrix((*orientation_)[t.sample].q), t.sample, r);
+  arith.address(r, a);
+  arith.fetch(a, *mem_, o);
+  o.slot.on_schedule = false;
+  ++spec_->fallbacks;
+}
 
 int64_t PipelineKernels::next_busy_cycle(int64_t c, int64_t end) const {
   const auto& t = scan.timing();
@@ -35,7 +75,7 @@ int64_t PipelineKernels::next_busy_cycle(int64_t c, int64_t end) const {
   // Walk line starts through blanking; at most a frame's worth of lines.
   ScanTiming::Cursor cur;
   for (int i = 0; i < 2 * t.config().v_total() + 4 && !scan.decode(slot, p, cur) && slot < end + lead; ++i) {
-    const ScanPosition pos = scan.position(slot, cur);
+    const ScanPosition& pos = scan.position(slot, cur);
     // To the next line start -- or the next field's start, which an interlaced field may reach mid-line.
     const int64_t next_field = t.frame_start_cycle(pos.frame) + (cur.field + 1) * t.field_cycles();
     slot = std::min(slot + (pos.hpos == 0 ? h : h - pos.hpos), next_field);

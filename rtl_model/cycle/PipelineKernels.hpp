@@ -5,10 +5,12 @@
 // state from the start of the cycle, so evaluation order cannot matter.
 #pragma once
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <vector>
 
 #include "FrameReport.hpp"
+#include "FrameSpeculation.hpp"
 #include "HostWritePort.hpp"
 #include "OrientationLatch.hpp"
 #include "ScanOutStage.hpp"
@@ -56,7 +58,13 @@ class PipelineKernels {
   void tick_timing(int64_t c, O& out) { scan.tick(c, out); }
   template <class I, class O>
   void tick_lens(int64_t c, I& in, O& out) {
-    lens.tick(c, in, out, [this](const PixelSlot& s, LensToken& o) { arith.lens(s, o); }, stalled(dp::Stage::Lens, c));
+    lens.tick(
+        c, in, out,
+        [this](const PixelSlot& s, LensToken& o) {
+          if (spec_) o.slot = s;  // the view vectors are read only if the pixel leaves the schedule
+          else arith.lens(s, o);
+        },
+        stalled(dp::Stage::Lens, c));
   }
   template <class I, class O>
   void tick_rotate(int64_t c, I& in, O& out) {
@@ -64,37 +72,92 @@ class PipelineKernels {
         c, in, out,
         [this, c](const LensToken& t, RotatedToken& o) {
           latch.on_pixel(t.slot, c);
-          arith.rotate(t, latch.matrix, latch.sample, o);
+          if (spec_ && speculate_rotate(t, c, o)) return;
+          if (spec_) {  // off the schedule: the view vectors were not read
+            LensToken full;
+            arith.lens(t.slot, full);
+            arith.rotate(full, latch.matrix, latch.sample, o);
+          } else {
+            arith.rotate(t, latch.matrix, latch.sample, o);
+          }
+          o.slot.on_schedule = false;
         },
         stalled(dp::Stage::Rotate, c));
   }
   template <class I, class O>
   void tick_address(int64_t c, I& in, O& out) {
-    address.tick(c, in, out, [this](const RotatedToken& t, AddressToken& o) { arith.address(t, o); },
-                 stalled(dp::Stage::Address, c));
+    address.tick(
+        c, in, out,
+        [this](const RotatedToken& t, AddressToken& o) {
+          if (t.slot.on_schedule) {
+            o.slot = t.slot;
+            o.sample = t.sample;
+          } else {
+            arith.address(t, o);
+          }
+        },
+        stalled(dp::Stage::Address, c));
   }
   // The memories' pipeline read port; the vertical-blank swap happens first in the same clock.
   template <class I, class O>
   void tick_fetch(int64_t c, I& in, O& out) {
     swapper.tick(c);
-    fetch.tick(c, in, out, [this](const AddressToken& t, FetchToken& o) { arith.fetch(t, *mem_, o); },
-               stalled(dp::Stage::Fetch, c));
+    fetch.tick(
+        c, in, out,
+        [this](const AddressToken& t, FetchToken& o) {
+          if (t.slot.on_schedule) {
+            if (spec_->swaps_at_render(t.slot.frame) == swapper.swaps()) {
+              o.slot = t.slot;
+              o.sample = t.sample;
+              return;
+            }
+            recompute_address(t, o);  // a swap since the frame was rendered: fetch for real
+            return;
+          }
+          arith.fetch(t, *mem_, o);
+        },
+        stalled(dp::Stage::Fetch, c));
   }
   template <class I, class O>
   void tick_compose(int64_t c, I& in, O& out) {
-    compose.tick(c, in, out, [this](const FetchToken& t, ComposedToken& o) { arith.compose(t, o); },
-                 stalled(dp::Stage::Compose, c));
+    compose.tick(
+        c, in, out,
+        [this](const FetchToken& t, ComposedToken& o) {
+          if (t.slot.on_schedule) {
+            o.slot = t.slot;
+            o.sample = t.sample;
+          } else {
+            arith.compose(t, o);
+          }
+        },
+        stalled(dp::Stage::Compose, c));
   }
   template <class I, class O>
   void tick_filter(int64_t c, I& in, O& out) {
-    filter.tick(c, in, out, [this](const ComposedToken& t, ColorToken& o) { arith.filter(t, o); },
-                stalled(dp::Stage::Filter, c));
+    filter.tick(
+        c, in, out,
+        [this](const ComposedToken& t, ColorToken& o) {
+          if (t.slot.on_schedule) {
+            o.slot = t.slot;
+            o.sample = t.sample;
+          } else {
+            arith.filter(t, o);
+          }
+        },
+        stalled(dp::Stage::Filter, c));
   }
   template <class I>
   void tick_scanout(int64_t c, I& in) { scanout.tick(c, in); }
   void tick_host(int64_t host_cycle) { host.tick(host_cycle); }
 
   std::array<StageStats, dp::kStageCount> stage_stats() const;
+
+  // Fast model only: evaluate frames ahead on the nominal schedule (see FrameSpeculation).
+  void enable_speculation(bool on) {
+    set_speculation(on);
+    scanout.use_speculation(spec_.get());
+  }
+  const FrameSpeculation* speculation() const { return spec_.get(); }
 
   // No pixel in any stage and none waiting to be issued (the FIFOs are the caller's to check).
   bool stages_idle() const {
@@ -108,6 +171,11 @@ class PipelineKernels {
   int64_t next_busy_cycle(int64_t c, int64_t end) const;
 
  private:
+  // On the schedule: the pixel keeps only its slot and sample; false: compute it.
+  void set_speculation(bool on);
+  bool speculate_rotate(const LensToken& t, int64_t c, RotatedToken& o);
+  // An on-schedule pixel whose fetch crossed a swap: its address again, then the real fetch.
+  void recompute_address(const AddressToken& t, FetchToken& o);
   bool stalled(dp::Stage s, int64_t c) const {
     if (!any_stalls_) return false;
     for (const auto& w : stalls_)
@@ -117,6 +185,10 @@ class PipelineKernels {
   dp::DisplayMemorySet* mem_;
   std::vector<StallWindow> stalls_;
   bool any_stalls_;
+  const dp::OrientationStream* orientation_;
+  int64_t rotate_to_scanout_;
+  std::unique_ptr<FrameSpeculation> spec_;
+  bool register_on_schedule_ = false;
 };
 
 }  // namespace arp::cycle

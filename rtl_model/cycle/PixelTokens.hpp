@@ -24,7 +24,8 @@ struct alignas(16) PixelSlot {
   int32_t x = 0, y = 0;
   uint8_t eye_first = 0, eye_count = 1;
   bool latch = false;      // the orientation matrix unit loads its register for this pixel
-  uint8_t reserved[5] = {};
+  bool on_schedule = false;  // fast model: the speculative frame's colour holds for this pixel (FrameSpeculation)
+  uint8_t reserved[4] = {};
 };
 static_assert(sizeof(PixelSlot) == 32, "PixelSlot must stay two 16-byte words");
 

@@ -20,9 +20,10 @@ ScanOutStage::ScanOutStage(const StageArithmetic& a, const ScanTiming& scan, con
 void ScanOutStage::show(const ColorToken& t, int64_t slot) {
   const int64_t photon = scan_.timing().cycles_to_ps(slot) + photon_delay_;
   const int64_t sample_ps = stream_[t.sample].time_ps;
+  const HmdFrame* spec = t.slot.on_schedule ? &spec_->frame(t.slot.frame, -1) : nullptr;
   for (int k = 0; k < t.slot.eye_count; ++k) {
     const size_t i = frame_.index(t.slot.eye_first + k, t.slot.x, t.slot.y);
-    frame_.pixels[i] = arith_.display(t.color[k]);
+    frame_.pixels[i] = spec ? spec->pixels[i] : arith_.display(t.color[k]);
     frame_.photon_ps[i] = photon;
     lat_.add(photon, sample_ps);
   }
@@ -58,6 +59,7 @@ void ScanOutStage::finish_frame(int64_t frame) {
   lat_.summarise(r);
   frame_.frame_index = frame;
   if (sink_) sink_(frame_, r);
+  if (spec_) spec_->retire_before(frame + 1);
   lat_.reset();
   underflows_ = late_ = 0;
 }

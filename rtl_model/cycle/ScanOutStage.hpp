@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "FrameReport.hpp"
+#include "FrameSpeculation.hpp"
 #include "ScanTiming.hpp"
 #include "StageArithmetic.hpp"
 
@@ -50,6 +51,8 @@ class ScanOutStage {
   }
 
   int64_t underflows() const { return underflows_total_; }
+  // Fast model: where on-schedule pixels take their colour from.
+  void use_speculation(FrameSpeculation* s) { spec_ = s; }
   int64_t late_discarded() const { return late_total_; }
 
   // Traced: the pixel on the panel this cycle (first eye) and the running underflow count.
@@ -82,6 +85,7 @@ class ScanOutStage {
   int64_t underflows_ = 0, late_ = 0, underflows_total_ = 0, late_total_ = 0;
   uint32_t bad_;
   ScanTiming::Cursor cursor_;
+  FrameSpeculation* spec_ = nullptr;
 };
 
 }  // namespace arp::cycle

@@ -28,7 +28,7 @@ ScanPosition ScanTiming::position(int64_t cycle) const {
   return position(cycle, c);
 }
 
-ScanPosition ScanTiming::position(int64_t cycle, Cursor& cur) const {
+const ScanPosition& ScanTiming::position(int64_t cycle, Cursor& cur) const {
   const int fields = tc_.fields_per_frame;
   ScanPosition& p = cur.pos;
   if (cycle == cur.cycle) return p;
@@ -58,7 +58,7 @@ ScanPosition ScanTiming::position(int64_t cycle, Cursor& cur) const {
 }
 
 bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
-  const ScanPosition p = position(slot_cycle, cur);
+  const ScanPosition& p = position(slot_cycle, cur);
   if (!p.active || p.frame < first_ || p.frame >= end_) return false;
   out.frame = p.frame;
   out.slot_cycle = slot_cycle;

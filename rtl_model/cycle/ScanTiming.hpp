@@ -5,7 +5,7 @@
 // scan-out will count it as an underflow, but never lost.
 #pragma once
 #include <cstdint>
-#include <deque>
+#include <vector>
 #include <limits>
 
 #include "PixelTokens.hpp"
@@ -42,7 +42,7 @@ class ScanTiming {
     int field = 0;
     ScanPosition pos;
   };
-  ScanPosition position(int64_t cycle, Cursor& cur) const;
+  const ScanPosition& position(int64_t cycle, Cursor& cur) const;  // a reference: no copy of a just-written struct
   bool decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const;
   // The last active slot of a frame.
   int64_t last_slot(int64_t frame) const { return timing_.frame_start_cycle(frame) + last_offset_; }
@@ -53,20 +53,25 @@ class ScanTiming {
   // One clock of the issue logic.
   template <class OutFifo>
   void tick(int64_t cycle, OutFifo& out) {
-    PixelSlot s;
-    if (decode(cycle + sched_.issue_lead(), s, issue_cursor_)) backlog_.push_back(s);
+    // Decode straight into the backlog (a ring): no copy of a just-written slot.
+    if (count_ == ring_.size()) grow();
+    PixelSlot& s = ring_[(head_ + count_) % ring_.size()];
+    if (decode(cycle + sched_.issue_lead(), s, issue_cursor_)) ++count_;
     issued = false;
-    if (!backlog_.empty()) {
+    if (count_ > 0) {
       if (out.can_write()) {
-        out.write(backlog_.front(), cycle);
-        backlog_.pop_front();
+        out.write(ring_[head_], cycle);
+        head_ = (head_ + 1) % ring_.size();
+        --count_;
         issued = true;
       } else {
         ++issue_stalls_;
         out.note_blocked();
       }
     }
-    const ScanPosition p = position(cycle, panel_cursor_);
+    backlog = static_cast<uint32_t>(count_);
+    if (!track_position) return;
+    const ScanPosition& p = position(cycle, panel_cursor_);
     h_count = p.hpos;
     v_count = p.line;
     frame_count = p.frame;
@@ -74,8 +79,9 @@ class ScanTiming {
     hsync = p.hsync;
     vsync = p.vsync;
     vblank = p.vblank;
-    backlog = static_cast<uint32_t>(backlog_.size());
   }
+  // The panel's scan position is only computed for waveforms.
+  bool track_position = false;
   int64_t issue_stalls() const { return issue_stalls_; }
 
   // Traced: the panel's scan position now, and the issue handshake.
@@ -94,7 +100,14 @@ class ScanTiming {
   int64_t field_cycles_;
   int row_pixels_;      // active pixel clocks per line
   int64_t last_offset_;
-  std::deque<PixelSlot> backlog_;
+  void grow() {
+    std::vector<PixelSlot> r(ring_.size() * 2);
+    for (size_t i = 0; i < count_; ++i) r[i] = ring_[(head_ + i) % ring_.size()];
+    ring_.swap(r);
+    head_ = 0;
+  }
+  std::vector<PixelSlot> ring_ = std::vector<PixelSlot>(64);  // the backlog
+  size_t head_ = 0, count_ = 0;
   Cursor issue_cursor_, panel_cursor_;
   mutable Cursor scratch_;
   int64_t issue_stalls_ = 0;

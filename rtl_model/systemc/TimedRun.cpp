@@ -151,7 +151,10 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
   std::unique_ptr<LooselyTimedModel> lt;
   switch (opt.fidelity) {
     case Fidelity::Rtl: rtl = std::make_unique<ArpPipelineTop>("arp", k, in.config, *in.orientation, w); break;
-    case Fidelity::Cycle: fast = std::make_unique<FastCycleModel>("arp", k, in.config, *in.orientation, w); break;
+    case Fidelity::Cycle:
+      fast = std::make_unique<FastCycleModel>("arp", k, in.config, *in.orientation, w);
+      k.enable_speculation(opt.vcd.path.empty() && opt.speculate);  // waveforms show every stage's data
+      break;
     default: lt = std::make_unique<LooselyTimedModel>("arp", run_in, w); break;
   }
 
@@ -199,6 +202,10 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
     r.issue_stalls = k.scan.issue_stalls();
     r.orientation_writes = rtl ? rtl->tracker_interface().writes() : fast->tracker_interface().writes();
     r.late_discarded = k.scanout.late_discarded();
+    if (k.speculation()) {
+      r.speculated_pixels = k.speculation()->speculated;
+      r.fallback_pixels = k.speculation()->fallbacks;
+    }
   } else {
     r.host_jobs = lt->host_timings();
     r.swaps = lt->swaps();

@@ -33,6 +33,7 @@ struct TimedRunOptions {
   VcdOptions vcd;
   std::function<void(double fraction, const std::string& what)> progress;
   int threads = 0;  // functional level only
+  bool speculate = true;  // fast cycle-accurate level: FrameSpeculation (off: every stage computes every pixel)
 };
 
 struct TimedResult {
@@ -42,6 +43,7 @@ struct TimedResult {
   std::array<cycle::StageStats, dp::kStageCount> stages{};
   std::vector<std::pair<std::string, cycle::FifoStats>> fifos;
   std::vector<cycle::HostJobTiming> host_jobs;
+  int64_t speculated_pixels = 0, fallback_pixels = 0;  // fast level: on/off the nominal schedule
   int64_t swaps = 0, underflows = 0, late_discarded = 0, issue_stalls = 0, orientation_writes = 0;
   int64_t first_cycle = 0, end_cycle = 0;  // pixel clocks simulated: [first, end)
   int64_t issue_lead = 0, orientation_lead = 0;
