@@ -109,8 +109,9 @@ TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
 // and with itself with speculation off.
 TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
   TempDir d;
-  const std::string args = " run -q --frames 2 --every 0 --motion rotate --rate 1000" + kSmall +
-                           " --stall rotate:3000:200 --stall fetch:9000:30";
+  // Tracker samples every 50 us (1259 clocks): a 300-clock stall moves latches across sample boundaries.
+  const std::string args = " run -q --frames 2 --every 0 --motion rotate --rate 1000 --hz 20000" + kSmall +
+                           " --stall rotate:3500:300 --stall fetch:9000:30";
   std::map<std::string, nlohmann::json> rep;
   for (const std::string v : {"cycle", "rtl", "cycle --no-speculation"}) {
     const std::string name = v.substr(0, v.find(' ')) + std::to_string(rep.size());
