@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "PixelTokens.hpp"
+
 namespace arp::cycle {
 
 struct FifoStats {
@@ -35,9 +37,17 @@ class ClockedFifo {
   bool can_write() const { return count_ < depth_ && !write_pending_; }
   void write(const T& v, int64_t cycle) {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
-    buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()] = v;
+    copy_token(buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()], v);
     write_pending_ = true;
     cycle_ = cycle;
+  }
+  // Write in place: the slot the next write would fill (fill it, then nothing
+  // else) -- a stage with one register can compute straight into its output.
+  T& emplace(int64_t cycle) {
+    if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
+    write_pending_ = true;
+    cycle_ = cycle;
+    return buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()];
   }
   void note_blocked() { ++blocked_; }
 

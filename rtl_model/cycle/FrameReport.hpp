@@ -29,8 +29,11 @@ class LatencyCollector {
     lat_.clear();
     reset_ = 0;
   }
-  void add(int64_t photon_ps, int64_t sample_ps) {
-    if (sample_ps > photon_ps) ++reset_;
+  // `pixels` pixels (the eyes of one slot) share this latency; it is kept
+  // once -- the median over a list where every value appears equally often
+  // is the same as over the list with each value once.
+  void add(int64_t photon_ps, int64_t sample_ps, int pixels = 1) {
+    if (sample_ps > photon_ps) reset_ += pixels;
     else lat_.push_back(photon_ps - sample_ps);
   }
   void summarise(FrameReport& r) {

@@ -148,9 +148,16 @@ BufferSwapper::BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, 
 
 void BufferSwapper::tick(int64_t cycle) {
   swap_strobe = false;
+  if (cycle < next_swap_ && cycle >= last_cycle_) {  // clocks only move forward: no swap before next_swap_
+    last_cycle_ = cycle;
+    return;
+  }
+  last_cycle_ = cycle;
   const int64_t F = timing_.frame_cycles();
   const int64_t f = floor_div(cycle - sched_.swap_cycle(0), F);
+  next_swap_ = sched_.swap_cycle(f) >= cycle ? sched_.swap_cycle(f) : sched_.swap_cycle(f + 1);
   if (sched_.swap_cycle(f) != cycle) return;
+  next_swap_ = sched_.swap_cycle(f + 1);
   swap_strobe = true;
   const int64_t now = timing_.cycles_to_ps(cycle);
   for (int e = 0; e < mem_.eyes(); ++e)

@@ -7,6 +7,7 @@
 // vertical blank strictly after the commit.
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,7 @@ class BufferSwapper {
   dp::VideoTiming timing_;
   dp::PipelineSchedule sched_;
   int64_t swaps_ = 0;
+  int64_t next_swap_ = std::numeric_limits<int64_t>::min(), last_cycle_ = std::numeric_limits<int64_t>::max();
 };
 
 }  // namespace arp::cycle

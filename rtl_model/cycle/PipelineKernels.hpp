@@ -109,6 +109,7 @@ class PipelineKernels {
             if (spec_->swaps_at_render(t.slot.frame) == swapper.swaps()) {
               o.slot = t.slot;
               o.sample = t.sample;
+              o.memories = o.taps = 0;  // no words travel with it
               return;
             }
             recompute_address(t, o);  // a swap since the frame was rendered: fetch for real
@@ -158,6 +159,13 @@ class PipelineKernels {
     scanout.use_speculation(spec_.get());
   }
   const FrameSpeculation* speculation() const { return spec_.get(); }
+
+  // Waveform tracing: the scan position and every stage's data are kept up to date.
+  void set_tracing(bool on) {
+    scan.track_position = on;
+    lens.probe_data = rotate.probe_data = address.probe_data = on;
+    fetch.probe_data = compose.probe_data = filter.probe_data = on;
+  }
 
   // No pixel in any stage and none waiting to be issued (the FIFOs are the caller's to check).
   bool stages_idle() const {

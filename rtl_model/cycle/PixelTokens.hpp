@@ -49,6 +49,7 @@ struct AddressToken {
 struct FetchToken {
   PixelSlot slot;
   uint32_t sample;
+  uint8_t memories = 0, taps = 0;                          // words in use per eye: taps x memories
   uint32_t wx[kMaxEyes], wy[kMaxEyes];                    // bilinear weights (0 when off)
   uint64_t words[kMaxEyes][kMaxTaps][dp::kCompositionInputs];  // texel words per eye, tap, memory
 };
@@ -65,6 +66,25 @@ struct ColorToken {
   uint32_t sample;
   uint32_t color[kMaxEyes];  // memory colour code
 };
+
+// Copying a token into a FIFO: whole, except the large fetch token, of which
+// only the words in use are copied (the rest is never read).
+template <class T>
+inline void copy_token(T& dst, const T& src) {
+  dst = src;
+}
+inline void copy_token(FetchToken& dst, const FetchToken& src) {
+  dst.slot = src.slot;
+  dst.sample = src.sample;
+  dst.memories = src.memories;
+  dst.taps = src.taps;
+  for (int k = 0; k < src.slot.eye_count; ++k) {
+    dst.wx[k] = src.wx[k];
+    dst.wy[k] = src.wy[k];
+    for (int t = 0; t < src.taps; ++t)
+      for (int m = 0; m < src.memories; ++m) dst.words[k][t][m] = src.words[k][t][m];
+  }
+}
 
 // What a waveform shows of a token leaving a stage (first eye): up to three
 // values, named by probe_names().

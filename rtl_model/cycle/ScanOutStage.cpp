@@ -11,21 +11,22 @@ ScanOutStage::ScanOutStage(const StageArithmetic& a, const ScanTiming& scan, con
       latency_(a.config().timed.stage[static_cast<size_t>(dp::Stage::ScanOut)].latency_cycles),
       photon_delay_(a.config().pipeline.photon_delay_ps),
       delay_(static_cast<size_t>(latency_)),
-      bad_(underflow_color(a.config().pipeline.display_bits)) {
+      bad_(underflow_color(a.config().pipeline.display_bits)),
+      clock_(a.config().timing.pixel_clock_hz) {
   frame_.resize(a.lens_table().width(), a.lens_table().height(), a.lens_table().eyes(), true);
   frame_.display_bits = a.config().pipeline.display_bits;
   frame_.frame_index = scan.first_frame();
 }
 
 void ScanOutStage::show(const ColorToken& t, int64_t slot) {
-  const int64_t photon = scan_.timing().cycles_to_ps(slot) + photon_delay_;
+  const int64_t photon = clock_.ps(slot) + photon_delay_;
   const int64_t sample_ps = stream_[t.sample].time_ps;
+  lat_.add(photon, sample_ps, t.slot.eye_count);
   const HmdFrame* spec = t.slot.on_schedule ? &spec_->frame(t.slot.frame, -1) : nullptr;
   for (int k = 0; k < t.slot.eye_count; ++k) {
     const size_t i = frame_.index(t.slot.eye_first + k, t.slot.x, t.slot.y);
     frame_.pixels[i] = spec ? spec->pixels[i] : arith_.display(t.color[k]);
     frame_.photon_ps[i] = photon;
-    lat_.add(photon, sample_ps);
   }
   Shown& d = delay_[ring(slot)];
   d.valid = true;
@@ -33,7 +34,7 @@ void ScanOutStage::show(const ColorToken& t, int64_t slot) {
 }
 
 void ScanOutStage::underflow(const PixelSlot& s) {
-  const int64_t photon = scan_.timing().cycles_to_ps(s.slot_cycle) + photon_delay_;
+  const int64_t photon = clock_.ps(s.slot_cycle) + photon_delay_;
   for (int k = 0; k < s.eye_count; ++k) {
     const size_t i = frame_.index(s.eye_first + k, s.x, s.y);
     frame_.pixels[i] = bad_;

@@ -86,6 +86,7 @@ class ScanOutStage {
   uint32_t bad_;
   ScanTiming::Cursor cursor_;
   FrameSpeculation* spec_ = nullptr;
+  dp::ClockTimeCursor clock_;
 };
 
 }  // namespace arp::cycle

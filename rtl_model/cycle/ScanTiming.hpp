@@ -50,15 +50,18 @@ class ScanTiming {
   int64_t first_cycle() const { return timing_.frame_start_cycle(first_) - sched_.issue_lead(); }
   int64_t end_cycle() const { return sched_.swap_cycle(end_ - 1) + 1; }
 
-  // One clock of the issue logic.
+  // One clock of the issue logic. The slot a clock ahead is decoded now and
+  // becomes due next clock (a pure function of the clock: same behaviour),
+  // so a pixel is never copied out right after its fields were written.
   template <class OutFifo>
   void tick(int64_t cycle, OutFifo& out) {
-    // Decode straight into the backlog (a ring): no copy of a just-written slot.
-    if (count_ == ring_.size()) grow();
-    PixelSlot& s = ring_[(head_ + count_) % ring_.size()];
-    if (decode(cycle + sched_.issue_lead(), s, issue_cursor_)) ++count_;
+    // Clocks a model skipped issue nothing (it only skips when nothing is due).
+    if (next_decode_ < cycle) next_decode_ = cycle;
+    if (next_decode_ == cycle) decode_into_ring(next_decode_++);
+    const size_t due = count_;  // pixels whose issue clock has come
+    const bool ahead = decode_into_ring(next_decode_++);
     issued = false;
-    if (count_ > 0) {
+    if (due > 0) {
       if (out.can_write()) {
         out.write(ring_[head_], cycle);
         head_ = (head_ + 1) % ring_.size();
@@ -69,7 +72,7 @@ class ScanTiming {
         out.note_blocked();
       }
     }
-    backlog = static_cast<uint32_t>(count_);
+    backlog = static_cast<uint32_t>(count_ - (ahead ? 1 : 0));
     if (!track_position) return;
     const ScanPosition& p = position(cycle, panel_cursor_);
     h_count = p.hpos;
@@ -100,6 +103,15 @@ class ScanTiming {
   int64_t field_cycles_;
   int row_pixels_;      // active pixel clocks per line
   int64_t last_offset_;
+  // The slot issued at clock `issue_cycle`, if any, onto the ring's tail.
+  bool decode_into_ring(int64_t issue_cycle) {
+    if (count_ == ring_.size()) grow();
+    PixelSlot& s = ring_[(head_ + count_) % ring_.size()];
+    if (!decode(issue_cycle + sched_.issue_lead(), s, issue_cursor_)) return false;
+    ++count_;
+    return true;
+  }
+  int64_t next_decode_ = std::numeric_limits<int64_t>::min();
   void grow() {
     std::vector<PixelSlot> r(ring_.size() * 2);
     for (size_t i = 0; i < count_; ++i) r[i] = ring_[(head_ + i) % ring_.size()];

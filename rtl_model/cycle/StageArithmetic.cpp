@@ -22,6 +22,8 @@ void StageArithmetic::fetch(const AddressToken& in, const dp::DisplayMemorySet& 
   t.slot = in.slot;
   t.sample = in.sample;
   const int n = cfg_.memory.count;
+  t.memories = static_cast<uint8_t>(n);
+  t.taps = static_cast<uint8_t>(bilinear_ ? 4 : 1);
   for (int k = 0; k < in.slot.eye_count; ++k) {
     const int eye = in.slot.eye_first + k;
     const dp::CubeAddress& a = in.address[k];

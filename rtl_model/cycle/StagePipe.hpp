@@ -42,6 +42,17 @@ class StagePipe {
       ready_in = false;
       return;
     }
+    if (latency_ == 1 && count_ == 0 && in.can_read() && out.can_write()) {
+      // One register: the result goes straight into the output FIFO (no copy).
+      ready_in = true;
+      Out& o = out.emplace(cycle);
+      compute(in.front(), o);
+      in.read(cycle);
+      record(1);
+      if (probe_data) probe(o, data_out);
+      valid_out = true;
+      return;
+    }
     const bool head_done = count_ > 0 && entry(0).done <= cycle;
     const bool out_ready = out.can_write();
     const bool pops = head_done && out_ready;
@@ -58,7 +69,7 @@ class StagePipe {
       if (out.can_write()) {
         const Entry& e = entry(0);
         out.write(e.value, cycle);
-        probe(e.value, data_out);
+        if (probe_data) probe(e.value, data_out);
         record(cycle + 1 - e.taken);
         head_ = (head_ + 1) % ring_.size();
         --count_;
@@ -86,6 +97,7 @@ class StagePipe {
   // and the last pixel's data (see probe() in PixelTokens.hpp).
   bool valid_out = false, ready_in = true;
   std::array<int64_t, 3> data_out{};
+  bool probe_data = false;  // set while a waveform is traced
 
  private:
   struct Entry {

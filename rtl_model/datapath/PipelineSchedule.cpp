@@ -1,6 +1,7 @@
 #include "PipelineSchedule.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace arp::dp {
 
@@ -26,15 +27,35 @@ PipelineSchedule::PipelineSchedule(const ArpConfig& c)
   swap_offset_ = last + c.timing.h_total();
 }
 
+ClockTimeCursor::ClockTimeCursor(int64_t hz)
+    : hz_(hz), q_(kPsPerSecond / hz), r_(kPsPerSecond % hz), cycle_(std::numeric_limits<int64_t>::min()) {}
+
+void ClockTimeCursor::seek(int64_t cycle) {
+  // floor(cycle * 1e12 / hz) and its remainder, for any sign.
+  const i128 num = static_cast<i128>(cycle) * kPsPerSecond;
+  i128 q = num / hz_, r = num % hz_;
+  if (r < 0) {
+    r += hz_;
+    --q;
+  }
+  cycle_ = cycle;
+  ps_ = static_cast<int64_t>(q);
+  rem_ = static_cast<int64_t>(r);
+}
+
 int64_t clock_cycle_to_ps(int64_t cycle, int64_t hz) {
-  return static_cast<int64_t>(static_cast<i128>(cycle) * kPsPerSecond / hz);
+  const i128 num = static_cast<i128>(cycle) * kPsPerSecond;
+  i128 q = num / hz;
+  if (num % hz < 0) --q;  // floor, also before time 0
+  return static_cast<int64_t>(q);
 }
 
 int64_t clock_cycle_at_or_after(int64_t ps, int64_t hz) {
-  if (ps <= 0) return 0;
-  // Smallest n with floor(n * 1e12 / hz) >= ps  <=>  n * 1e12 >= ps * hz.
+  // Smallest n with floor(n * 1e12 / hz) >= ps  <=>  n * 1e12 >= ps * hz  <=>  n >= ceil(ps * hz / 1e12).
   const i128 num = static_cast<i128>(ps) * hz;
-  return static_cast<int64_t>((num + kPsPerSecond - 1) / kPsPerSecond);
+  i128 q = num / kPsPerSecond;
+  if (num % kPsPerSecond > 0) ++q;  // ceil, for either sign
+  return static_cast<int64_t>(q);
 }
 
 }  // namespace arp::dp

@@ -91,7 +91,7 @@ bool ArpPipelineTop::idle() const {
 
 void ArpPipelineTop::trace(sc_trace_file* tf) {
   tracing_ = true;
-  k_.scan.track_position = true;
+  k_.set_tracing(true);
   const std::string n = name();
   sc_trace(tf, pixel_clk, n + ".pixel_clk");
   sc_trace(tf, host_clk, n + ".host_clk");

@@ -103,7 +103,7 @@ void FastCycleModel::host_domain() {
 
 void FastCycleModel::trace(sc_trace_file* tf) {
   tracing_ = true;
-  k_.scan.track_position = true;
+  k_.set_tracing(true);
   const std::string n = name();
   sc_trace(tf, cycle_, n + ".pixel_cycle");
   const cycle::ScanTiming& s = k_.scan;

@@ -29,7 +29,10 @@ class FastCycleModel : public sc_core::sc_module {
                  const dp::OrientationStream& o, const RunWindow& w);
 
   void trace(sc_core::sc_trace_file* tf);
-  void stop_tracing() { tracing_ = false; }
+  void stop_tracing() {
+    tracing_ = false;
+    k_.set_tracing(false);
+  }
   const TrackerInterface& tracker_interface() const { return tracker; }
   std::vector<std::pair<std::string, cycle::FifoStats>> fifo_stats(int64_t end_cycle) const;
   int64_t evaluated_cycles() const { return evaluated_; }

@@ -16,6 +16,7 @@ class FifoWriteIf : virtual public sc_core::sc_interface {
  public:
   virtual bool can_write() const = 0;
   virtual void write(const T& v, int64_t cycle) = 0;
+  virtual T& emplace(int64_t cycle) = 0;
   virtual void note_blocked() = 0;
 };
 
@@ -36,6 +37,10 @@ class FifoChannel : public sc_core::sc_prim_channel, public FifoWriteIf<T>, publ
   void write(const T& v, int64_t cycle) override {
     core_.write(v, cycle);
     request_update();
+  }
+  T& emplace(int64_t cycle) override {
+    request_update();
+    return core_.emplace(cycle);
   }
   void note_blocked() override { core_.note_blocked(); }
   bool can_read() const override { return core_.can_read(); }

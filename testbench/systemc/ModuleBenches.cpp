@@ -376,6 +376,8 @@ TEST(ModuleBench, CompositionUnit) {
   for (int i = 0; i < 600; ++i) {
     cycle::FetchToken t{};
     t.slot = slot_of(i, 0, 0);
+    t.memories = static_cast<uint8_t>(N);
+    t.taps = 4;
     for (int e = 0; e < 2; ++e) {
       t.wx[e] = std::uniform_int_distribution<uint32_t>(0, 255)(rng);
       t.wy[e] = std::uniform_int_distribution<uint32_t>(0, 255)(rng);
