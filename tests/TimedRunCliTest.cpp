@@ -135,3 +135,20 @@ TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
   const auto bad2 = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity rtl --stall divider:10:5");
   EXPECT_EQ(bad2.status, 2);
 }
+
+// Each module bench writes its waveform on request, and the view committed
+// for it in waveforms/ matches what `arpsim gtkw` makes of that waveform.
+TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {
+  TempDir d;
+  for (const std::string m : {"LensVectorTable", "OrientationMatrixUnit", "CubeFaceAddressGenerator", "DisplayMemoryBanks",
+                              "CompositionUnit", "AntiAliasingFilter", "VideoTimingGenerator", "HmdScanOut"}) {
+    const auto r = run_command("ARPSIM_BENCH_VCD=" + d.path() + " " + ARPSIM_SC_BENCHES + " --gtest_filter=ModuleBench." + m);
+    ASSERT_EQ(r.status, 0) << m << "\n" << r.output;
+    const std::string vcd = d.file("bench_" + m + ".vcd");
+    ASSERT_TRUE(std::filesystem::exists(vcd)) << m;
+    ASSERT_EQ(run_command(kArpsim + " gtkw " + vcd).status, 0) << m;
+    EXPECT_EQ(read_all(d.file("bench_" + m + ".gtkw")),
+              read_all(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/bench_" + m + ".gtkw"))
+        << m;
+  }
+}

@@ -34,7 +34,7 @@ const char* flags_for(const Var& v) {
 
 // Clocks and scan position first, then the data path in pipeline order.
 int group_rank(const std::string& g) {
-  static const char* const order[] = {"clocks", "video_timing_generator", "tracker_interface", "lens_vector_table",
+  static const char* const order[] = {"clocks", "dut", "video_timing_generator", "tracker_interface", "lens_vector_table",
                                       "orientation_matrix_unit", "cube_face_address_generator", "display_memory_banks",
                                       "composition_unit", "anti_aliasing_filter", "hmd_scan_out", "fifos"};
   for (int i = 0; i < static_cast<int>(sizeof order / sizeof *order); ++i)
@@ -73,8 +73,9 @@ std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfil
       v.leaf = name;
       v.width = width;
       // Group: the module below the top (SystemC.arp.<module>), FIFO occupancies together, clocks apart.
-      const std::string top_rel = scope.size() >= 3 ? scope[2] : "";
-      if (name.find("clk") != std::string::npos || name == "pixel_cycle") v.group = "clocks";
+      // SystemC.arp.<module>.<signal> in a run; SystemC.<module>.<signal> in a module bench.
+      const std::string top_rel = scope.size() >= 3 ? scope[2] : (scope.size() == 2 ? scope[1] : "");
+      if (name.find("clk") != std::string::npos || name == "pixel_cycle" || name == "cycle") v.group = "clocks";
       else if (name == "occupancy") v.group = "fifos";
       else v.group = top_rel.empty() ? "top" : top_rel;
       if (name == "occupancy") v.leaf = top_rel + "_occupancy";

@@ -1,4 +1,4 @@
-// The loosely timed model: one thread whose quantum is a scanline. At the
+// The loosely timed model: one process whose quantum is a scanline. At the
 // time a line's first pixel would be issued it computes the whole line
 // through the same stage arithmetic, latching the orientation for each pixel
 // at the cycle the schedule says it enters the orientation matrix unit, and
@@ -10,6 +10,8 @@
 #include <systemc>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "ArpPipelineTop.hpp"
 #include "TrackerInterface.hpp"
@@ -33,7 +35,10 @@ class LooselyTimedModel : public sc_core::sc_module {
  private:
   void run();
   void line(int64_t frame, int y);
-  void wait_until_cycle(int64_t c);
+  void resume_at(int64_t c);
+  std::vector<std::pair<int64_t, int>> lines_;  // (line start offset in the frame, y), scan order
+  size_t next_line_ = 0;
+  int64_t frame_no_ = 0;
 
   const cycle::TimedInputs& in_;
   RunWindow w_;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <random>
@@ -57,6 +58,35 @@ struct Result {
   size_t phase_one = 0;
 };
 
+// With ARPSIM_BENCH_VCD=DIR, a bench writes DIR/bench_<test>.vcd: the clock,
+// both FIFOs' occupancy and everything the module under test traces
+// (waveforms/bench_<test>.gtkw is its view).
+class BenchWaveform {
+ public:
+  BenchWaveform(const scm::ClockGenerator& gen, const sc_signal<bool>& clk, const int& in_occupancy,
+                const int& out_occupancy, cycle::PipelineKernels& k) {
+    const char* dir = std::getenv("ARPSIM_BENCH_VCD");
+    if (!dir) return;
+    const std::string name = std::string(dir) + "/bench_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    tf_ = sc_create_vcd_trace_file(name.c_str());
+    tf_->set_time_unit(1, SC_PS);
+    sc_trace(tf_, clk, "bench.clk");
+    sc_trace(tf_, gen.cycle_ref(), "bench.cycle");
+    sc_trace(tf_, in_occupancy, "stimulus_fifo.occupancy");
+    sc_trace(tf_, out_occupancy, "response_fifo.occupancy");
+    k.set_tracing(true);
+  }
+  ~BenchWaveform() {
+    if (tf_) sc_close_vcd_trace_file(tf_);
+  }
+  BenchWaveform(const BenchWaveform&) = delete;
+  BenchWaveform& operator=(const BenchWaveform&) = delete;
+  sc_trace_file* file() const { return tf_; }
+
+ private:
+  sc_trace_file* tf_ = nullptr;
+};
+
 // Runs a stage module between driver and monitor for `cycles` pixel clocks.
 template <class In, class Out, class Module>
 Result<In, Out> run_bench(World& w, std::vector<In> stimulus, int64_t cycles,
@@ -87,6 +117,8 @@ Result<In, Out> run_bench(World& w, std::vector<In> stimulus, int64_t cycles,
   ResponseMonitor<Out> mon("monitor", gen.cycle_ref(), drv.phase_one(), 23);
   mon.clk(clk);
   mon.response_in(out_fifo);
+  BenchWaveform wave(gen, clk, in_fifo.core().occupancy_ref(), out_fifo.core().occupancy_ref(), *w.k);
+  if (wave.file()) dut->trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(dp::clock_cycle_to_ps(cycles + 1, w.c.timing.pixel_clock_hz))));
   Result<In, Out> r;
   r.stimulus = std::move(stimulus);
@@ -480,6 +512,9 @@ TEST(ModuleBench, VideoTimingGenerator) {
   ResponseMonitor<cycle::PixelSlot> mon("monitor", gen.cycle_ref(), SIZE_MAX, 7);
   mon.clk(clk);
   mon.response_in(out_fifo);
+  const int none = 0;
+  BenchWaveform wave(gen, clk, none, out_fifo.core().occupancy_ref(), *w.k);
+  if (wave.file()) dut.trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(t.cycles_to_ps(end + 1))));
   const int W = w.c.timing.h_active, H = w.c.timing.v_active;
   ASSERT_EQ(mon.got.size(), static_cast<size_t>(W * H));
@@ -563,6 +598,9 @@ TEST(ModuleBench, HmdScanOut) {
     size_t next = 0;
   } drv("driver", gen.cycle_ref(), in_fifo, tokens, due);
   drv.clk(clk);
+  const int none = 0;
+  BenchWaveform wave(gen, clk, in_fifo.core().occupancy_ref(), none, *w.k);
+  if (wave.file()) dut.trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(t.cycles_to_ps(end + 1))));
   ASSERT_EQ(frames.size(), 1u);
   const HmdFrame& f = frames[0].first;
