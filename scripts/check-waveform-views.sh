@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Opens each committed GTKWave view with its waveform in a real GTKWave
+# (under Xvfb) and checks that every signal of the VCD is displayed.
+# Needs the Debian packages gtkwave, xvfb and xauth (not part of the test
+# command: a desktop tool). Run after building.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+command -v gtkwave >/dev/null && command -v xvfb-run >/dev/null ||
+  { echo "check-waveform-views: needs gtkwave and xvfb-run (apt-get install gtkwave xvfb xauth)" >&2; exit 2; }
+ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
+BENCHES=${BENCHES:-build/testbench/arp_sc_benches}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat > "$tmp/count.tcl" <<'TCL'
+puts "displayed [llength [gtkwave::getDisplayedSignals]]"
+gtkwave::/File/Quit
+TCL
+"$ARPSIM" run -q --fidelity rtl --frames 1 --every 0 --vcd "$tmp/arp.vcd" --vcd-lines 0:2 >/dev/null
+pairs=("$tmp/arp.vcd waveforms/arp.gtkw" "testbench/systemc/golden/tiny_rtl.vcd waveforms/tiny_rtl.gtkw")
+for g in waveforms/bench_*.gtkw; do
+  m=$(basename "$g" .gtkw); m=${m#bench_}
+  ARPSIM_BENCH_VCD="$tmp" "$BENCHES" --gtest_filter="ModuleBench.$m" >/dev/null
+  pairs+=("$tmp/bench_$m.vcd $g")
+done
+status=0
+for p in "${pairs[@]}"; do
+  set -- $p
+  want=$(grep -c '^\$var' "$1")
+  got=$(timeout 120 xvfb-run -a gtkwave -S "$tmp/count.tcl" "$1" "$2" 2>/dev/null | sed -n 's/^displayed //p')
+  printf "%-40s %3s of %3s signals displayed\n" "$2" "${got:-0}" "$want"
+  [ "${got:-0}" = "$want" ] || status=1
+done
+exit $status
