@@ -9,6 +9,7 @@ PKGS=(
   libglm-dev libcli11-dev nlohmann-json3-dev
   libusb-1.0-0-dev
   libsystemc-dev
+  libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
 )
 missing=()
 for p in "${PKGS[@]}"; do

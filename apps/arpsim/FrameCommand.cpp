@@ -58,9 +58,9 @@ int run_frame(const FrameArgs& a) {
   const FunctionalModel model(c);
   const int S = c.memory.face_size;
   std::string source;
-  const host::CubeMapImages cm = a.cubemap.load(S, source);
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
-  host::load_into_memories(mem, 0, cm, host::far_depth(mem.format()));
+  a.cubemap.fill(mem, q, source);
+  (void)S;
 
   HmdFrame f;
   RenderOptions ro;

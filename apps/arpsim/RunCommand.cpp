@@ -116,7 +116,7 @@ int run(const RunArgs& a) {
 
   std::string source;
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
-  host::load_into_memories(mem, 0, a.cubemap.load(c.memory.face_size, source), host::far_depth(mem.format()));
+  a.cubemap.fill(mem, stream[stream.index_at(start_ps)].q, source);
   std::error_code ec;
   if (a.every > 0 || a.photon_times) {
     fs::create_directories(a.out_dir, ec);

@@ -1,0 +1,241 @@
+#include "CubeFaceRenderer.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace arp::host {
+
+namespace {
+
+// Face f's frame: texel (x, y) centre looks along fwd + sc a + tc b, with
+// sc = 2 (x + 1/2) / S - 1 (memory_texel_direction, inverted).
+struct FaceFrame {
+  glm::dvec3 fwd, a, b;
+};
+const FaceFrame kFaces[6] = {
+    {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}},   // +X
+    {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}},   // -X
+    {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}},     // +Y
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}},   // -Y
+    {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}},    // +Z
+    {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}},  // -Z
+};
+
+struct ClipVertex {
+  double u, v, w;
+  glm::dvec3 color;
+};
+
+// Signed distance to clip plane k (>= 0 inside): w >= near, w -/+ u >= 0, w -/+ v >= 0.
+double inside(const ClipVertex& p, int k, double near) {
+  switch (k) {
+    case 0: return p.w - near;
+    case 1: return p.w - p.u;
+    case 2: return p.w + p.u;
+    case 3: return p.w - p.v;
+    default: return p.w + p.v;
+  }
+}
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
+  return {a.u + (b.u - a.u) * t, a.v + (b.v - a.v) * t, a.w + (b.w - a.w) * t, a.color + (b.color - a.color) * t};
+}
+
+// Sutherland-Hodgman against the five planes; `poly` in, clipped polygon out.
+void clip(std::vector<ClipVertex>& poly, std::vector<ClipVertex>& tmp, double near) {
+  for (int k = 0; k < 5 && !poly.empty(); ++k) {
+    tmp.clear();
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const ClipVertex& p = poly[i];
+      const ClipVertex& q = poly[(i + 1) % poly.size()];
+      const double dp = inside(p, k, near), dq = inside(q, k, near);
+      if (dp >= 0) tmp.push_back(p);
+      if ((dp >= 0) != (dq >= 0)) tmp.push_back(lerp(p, q, dp / (dp - dq)));
+    }
+    poly.swap(tmp);
+  }
+}
+
+struct Snapped {
+  int64_t x, y;  // 1/256 texel
+  double inv_w;
+  glm::dvec3 color_over_w;
+};
+
+// A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
+bool top_left(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
+
+void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled) {
+  int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
+  if (area == 0) return;
+  if (area < 0) {  // one winding for the edge tests; both are drawn
+    std::swap(v1, v2);
+    area = -area;
+  }
+  const int S = img.size;
+  const int64_t minx = std::max<int64_t>(0, (std::min({v0.x, v1.x, v2.x}) - 128) >> 8);
+  const int64_t maxx = std::min<int64_t>(S - 1, (std::max({v0.x, v1.x, v2.x}) + 127) >> 8);
+  const int64_t miny = std::max<int64_t>(0, (std::min({v0.y, v1.y, v2.y}) - 128) >> 8);
+  const int64_t maxy = std::min<int64_t>(S - 1, (std::max({v0.y, v1.y, v2.y}) + 127) >> 8);
+  // Edge e_i is opposite vertex i: e0 = v1 -> v2, e1 = v2 -> v0, e2 = v0 -> v1.
+  const Snapped* p[3] = {&v0, &v1, &v2};
+  int64_t ex[3], ey[3];
+  bool incl[3];
+  for (int i = 0; i < 3; ++i) {
+    const Snapped& a = *p[(i + 1) % 3];
+    const Snapped& b = *p[(i + 2) % 3];
+    ex[i] = b.x - a.x;
+    ey[i] = b.y - a.y;
+    incl[i] = top_left(ex[i], ey[i]);
+  }
+  const double inv_area = 1.0 / static_cast<double>(area);
+  for (int64_t y = miny; y <= maxy; ++y) {
+    const int64_t py = (y << 8) + 128;
+    for (int64_t x = minx; x <= maxx; ++x) {
+      const int64_t px = (x << 8) + 128;
+      int64_t e[3];
+      bool in = true;
+      for (int i = 0; i < 3 && in; ++i) {
+        const Snapped& a = *p[(i + 1) % 3];
+        e[i] = ex[i] * (py - a.y) - ey[i] * (px - a.x);
+        in = e[i] > 0 || (e[i] == 0 && incl[i]);
+      }
+      if (!in) continue;
+      if (!img.hits.empty()) ++img.hits[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)];
+      const double l0 = e[0] * inv_area, l1 = e[1] * inv_area, l2 = e[2] * inv_area;
+      const double inv_w = l0 * v0.inv_w + l1 * v1.inv_w + l2 * v2.inv_w;
+      const double w = 1.0 / inv_w;
+      const double sc = 2.0 * (x + 0.5) / S - 1.0, tc = 2.0 * (y + 0.5) / S - 1.0;
+      const double r = w * std::sqrt(1.0 + sc * sc + tc * tc);
+      const size_t k = static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x);
+      if (!(r < img.distance[k])) continue;
+      img.distance[k] = r;
+      img.color[k] = (l0 * v0.color_over_w + l1 * v1.color_over_w + l2 * v2.color_over_w) * w;
+      ++filled;
+    }
+  }
+}
+
+// Can a sphere (centre relative to the eye) reach face f's frustum?
+bool sphere_meets_face(const glm::dvec3& c, double r, int f, double near) {
+  const FaceFrame& F = kFaces[f];
+  const double k = 1.0 / std::sqrt(2.0);
+  if (glm::dot(c, F.fwd) < near - r) return false;
+  for (const glm::dvec3& side : {F.a, -F.a, F.b, -F.b})
+    if (glm::dot(c, (F.fwd - side) * k) < -r) return false;
+  return true;
+}
+
+}  // namespace
+
+void FaceImage::reset(int s) {
+  const bool count = !hits.empty();
+  size = s;
+  if (count) hits.assign(static_cast<size_t>(s) * static_cast<size_t>(s), 0);
+  distance.assign(static_cast<size_t>(s) * static_cast<size_t>(s), std::numeric_limits<double>::infinity());
+  color.assign(distance.size(), glm::dvec3(0.0));
+}
+
+RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector<size_t>& objects, double t,
+                                           const glm::dvec3& eye, int S, std::vector<FaceImage>& faces) const {
+  RenderStats st;
+  faces.resize(6);
+  std::vector<size_t> all;
+  const std::vector<size_t>* list = &objects;
+  if (objects.empty()) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) all.push_back(i);
+    list = &all;
+  }
+  // Per face, the objects whose bound reaches it (drawn in scene order: deterministic ties).
+  std::vector<std::vector<size_t>> per_face(6);
+  std::vector<glm::dmat4> model(scene.objects.size());
+  for (size_t i : *list) {
+    const SceneObject& o = scene.objects[i];
+    model[i] = o.model_at(t);
+    const Sphere b = o.world_bound(t);
+    bool any = false;
+    for (int f = 0; f < 6; ++f)
+      if (sphere_meets_face(b.center - eye, b.radius, f, depth_.near_m)) {
+        per_face[static_cast<size_t>(f)].push_back(i);
+        any = true;
+      }
+    st.objects += any ? 1 : 0;
+  }
+  std::vector<ClipVertex> poly, tmp;
+  std::vector<glm::dvec3> world, normal;
+  for (int f = 0; f < 6; ++f) {
+    FaceImage& img = faces[static_cast<size_t>(f)];
+    img.reset(S);
+    if (per_face[static_cast<size_t>(f)].empty()) continue;
+    ++st.faces_rendered;
+    const FaceFrame& F = kFaces[f];
+    for (size_t i : per_face[static_cast<size_t>(f)]) {
+      const SceneObject& o = scene.objects[i];
+      const Mesh& m = *o.mesh;
+      const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
+      world.resize(m.positions.size());
+      for (size_t k = 0; k < m.positions.size(); ++k) world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
+      const bool smooth = o.material.smooth && !m.normals.empty();
+      if (smooth) {
+        normal.resize(m.normals.size());
+        for (size_t k = 0; k < m.normals.size(); ++k) normal[k] = glm::normalize(nmat * m.normals[k]);
+      }
+      auto shade = [&](const glm::dvec3& n) {
+        return o.material.color * (light_.ambient + light_.diffuse * std::abs(glm::dot(n, light_.direction)));
+      };
+      for (size_t t3 = 0; t3 + 2 < m.indices.size(); t3 += 3) {
+        const uint32_t id[3] = {m.indices[t3], m.indices[t3 + 1], m.indices[t3 + 2]};
+        const glm::dvec3 fn = glm::cross(world[id[1]] - world[id[0]], world[id[2]] - world[id[0]]);
+        const double fl = glm::length(fn);
+        if (!(fl > 0)) continue;  // degenerate in world space
+        const glm::dvec3 flat = shade(fn / fl);
+        poly.clear();
+        for (uint32_t k : id) {
+          const glm::dvec3 d = world[k] - eye;
+          poly.push_back({glm::dot(d, F.a), glm::dot(d, F.b), glm::dot(d, F.fwd), smooth ? shade(normal[k]) : flat});
+        }
+        clip(poly, tmp, depth_.near_m);
+        if (poly.size() < 3) continue;
+        ++st.triangles;
+        std::vector<Snapped> sn;
+        sn.reserve(poly.size());
+        for (const ClipVertex& c : poly) {
+          const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
+          sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w});
+        }
+        for (size_t k = 1; k + 1 < sn.size(); ++k) raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled);
+      }
+    }
+  }
+  return st;
+}
+
+RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_t>& objects, double t,
+                                     const glm::dvec3& eye, dp::DisplayMemoryBank& bank) const {
+  const dp::MemoryFormat& fmt = bank.format();
+  std::vector<FaceImage> faces;
+  RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces);
+  DepthCode dc = depth_;
+  dc.bits = fmt.depth_bits;
+  bank.clear_back();
+  for (int f = 0; f < 6; ++f) {
+    const FaceImage& img = faces[static_cast<size_t>(f)];
+    for (int y = 0; y < img.size; ++y)
+      for (int x = 0; x < img.size; ++x) {
+        const size_t k = static_cast<size_t>(y) * static_cast<size_t>(img.size) + static_cast<size_t>(x);
+        if (!std::isfinite(img.distance[k])) continue;
+        const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
+        bank.write(f, x, y, fmt.pack_rgb8(static_cast<int>(std::lround(c.r)), static_cast<int>(std::lround(c.g)),
+                                          static_cast<int>(std::lround(c.b))),
+                   dc.code(img.distance[k]));
+        ++st.texels_written;
+      }
+  }
+  bank.commit();
+  return st;
+}
+
+}  // namespace arp::host

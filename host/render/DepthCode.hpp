@@ -1,0 +1,28 @@
+// Depth in display memory: the distance from the eye (radial, so the codes of
+// different faces and of memories rendered from nearby positions compare
+// sensibly in the composition unit), quantised logarithmically between a near
+// and a far distance into codes 0 .. 2^D - 2 (2^D - 1 is "empty"). A
+// logarithmic scale keeps the relative depth resolution constant:
+// 16 bits over 0.05 .. 1000 m resolve about 0.015 % of the distance.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace arp::host {
+
+struct DepthCode {
+  double near_m = 0.05, far_m = 1000.0;
+  int bits = 16;
+  uint32_t max_code() const { return static_cast<uint32_t>((uint64_t{1} << bits) - 2); }
+  uint32_t code(double distance_m) const {
+    const double t = std::log(std::max(distance_m, near_m) / near_m) / std::log(far_m / near_m);
+    const double c = std::nearbyint(std::min(t, 1.0) * max_code());
+    return static_cast<uint32_t>(c);
+  }
+  double distance(uint32_t c) const {
+    return near_m * std::exp(static_cast<double>(c) / max_code() * std::log(far_m / near_m));
+  }
+};
+
+}  // namespace arp::host

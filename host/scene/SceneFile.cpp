@@ -1,0 +1,175 @@
+#include "SceneFile.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "ModelImport.hpp"
+#include "Primitives.hpp"
+#include "common/InputError.hpp"
+
+namespace arp::host {
+
+using nlohmann::json;
+
+namespace {
+
+// One JSON object read key by key; leftovers are unknown keys.
+class Fields {
+ public:
+  Fields(const json& j, std::string source, std::string place) : j_(j), source_(std::move(source)), place_(std::move(place)) {
+    if (!j.is_object()) fail("", "must be an object");
+  }
+  bool has(const char* k) const { return j_.contains(k); }
+  double number(const char* k, double def, double lo, double hi) {
+    seen_.insert(k);
+    if (!j_.contains(k)) return def;
+    const json& v = j_.at(k);
+    if (!v.is_number()) fail(k, "must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < lo || x > hi) fail(k, "must be in [" + num(lo) + ", " + num(hi) + "]");
+    return x;
+  }
+  glm::dvec3 vec3(const char* k, glm::dvec3 def, double lo, double hi) {
+    seen_.insert(k);
+    if (!j_.contains(k)) return def;
+    const json& v = j_.at(k);
+    if (!v.is_array() || v.size() != 3) fail(k, "must be an array of three numbers");
+    glm::dvec3 r;
+    for (int i = 0; i < 3; ++i) {
+      if (!v[static_cast<size_t>(i)].is_number()) fail(k, "must be an array of three numbers");
+      r[i] = v[static_cast<size_t>(i)].get<double>();
+      if (!std::isfinite(r[i]) || r[i] < lo || r[i] > hi) fail(k, "elements must be in [" + num(lo) + ", " + num(hi) + "]");
+    }
+    return r;
+  }
+  std::string text(const char* k, const std::string& def) {
+    seen_.insert(k);
+    if (!j_.contains(k)) return def;
+    if (!j_.at(k).is_string()) fail(k, "must be a string");
+    return j_.at(k).get<std::string>();
+  }
+  const json* sub(const char* k) {
+    seen_.insert(k);
+    return j_.contains(k) ? &j_.at(k) : nullptr;
+  }
+  void finish() {
+    for (auto it = j_.begin(); it != j_.end(); ++it)
+      if (!seen_.count(it.key())) fail(it.key(), "unknown key");
+  }
+  [[noreturn]] void fail(const std::string& k, const std::string& why) const {
+    throw InputError(source_, k.empty() ? place_ : (place_.empty() ? k : place_ + "." + k), why);
+  }
+  const std::string& place() const { return place_; }
+
+ private:
+  static std::string num(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
+  const json& j_;
+  std::string source_, place_;
+  std::set<std::string> seen_;
+};
+
+}  // namespace
+
+Scene scene_from_json(const json& j, const std::string& source, const std::string& base_dir) {
+  Fields top(j, source, "");
+  Scene s;
+  s.name = top.text("name", "scene");
+  if (const json* ext = top.sub("extent")) {
+    Fields e(*ext, source, "extent");
+    s.extent_min = e.vec3("min", s.extent_min, -1e6, 1e6);
+    s.extent_max = e.vec3("max", s.extent_max, -1e6, 1e6);
+    e.finish();
+    if (!(s.extent_min.x < s.extent_max.x && s.extent_min.y < s.extent_max.y && s.extent_min.z < s.extent_max.z))
+      e.fail("", "min must be below max on every axis");
+  }
+  const json* objs = top.sub("objects");
+  top.finish();
+  if (!objs || !objs->is_array()) throw InputError(source, "objects", "must be an array (it may be empty)");
+  std::map<std::string, std::shared_ptr<const Mesh>> models;  // one import per file
+  for (size_t i = 0; i < objs->size(); ++i) {
+    Fields o((*objs)[i], source, "objects[" + std::to_string(i) + "]");
+    std::shared_ptr<const Mesh> mesh;
+    int kinds = 0;
+    for (const char* k : {"box", "quad", "cylinder", "sphere", "model"}) kinds += o.has(k) ? 1 : 0;
+    if (kinds != 1) o.fail("", "needs exactly one of box, quad, cylinder, sphere, model");
+    const int segments = static_cast<int>(o.number("segments", 24, 3, 1024));
+    if (o.has("box")) {
+      mesh = std::make_shared<Mesh>(make_box(o.vec3("box", {1, 1, 1}, 1e-4, 1e5)));
+    } else if (o.has("quad")) {
+      const glm::dvec3 q = o.vec3("quad", {1, 1, 0}, 0, 1e5);
+      if (q.x <= 0 || q.y <= 0) o.fail("quad", "width and height must be positive ([w, h, 0])");
+      mesh = std::make_shared<Mesh>(make_quad(q.x, q.y));
+    } else if (o.has("cylinder")) {
+      const glm::dvec3 c = o.vec3("cylinder", {0.5, 1, 0}, 0, 1e5);
+      if (c.x <= 0 || c.y <= 0) o.fail("cylinder", "radius and height must be positive ([r, h, 0])");
+      mesh = std::make_shared<Mesh>(make_cylinder(c.x, c.y, segments));
+    } else if (o.has("sphere")) {
+      mesh = std::make_shared<Mesh>(make_sphere(o.number("sphere", 0.5, 1e-4, 1e5), segments));
+    } else {
+      std::string file = o.text("model", "");
+      if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
+      auto it = models.find(file);
+      if (it == models.end()) it = models.emplace(file, std::make_shared<Mesh>(import_model(file))).first;
+      mesh = it->second;
+    }
+    if (mesh->indices.empty()) o.fail("", "the object has no triangles");
+    Material mat;
+    mat.color = o.vec3("color", mat.color, 0, 1);
+    const std::string shading = o.text("shading", "flat");
+    if (shading != "flat" && shading != "gouraud") o.fail("shading", "must be flat or gouraud");
+    mat.smooth = shading == "gouraud";
+    SceneObject& so = add_object(s, o.text("name", "object " + std::to_string(i)), mesh,
+                                 o.vec3("position", {0, 0, 0}, -1e6, 1e6), mat);
+    so.rotation_deg = o.vec3("rotation_deg", {0, 0, 0}, -3600, 3600);
+    so.scale = o.vec3("scale", {1, 1, 1}, 1e-6, 1e6);
+    // "size": scale the model uniformly so its bounding sphere has this diameter.
+    const double size = o.number("size", 0, 0, 1e5);
+    if (size > 0 && so.model_bound.radius > 0) so.scale = glm::dvec3(size / (2 * so.model_bound.radius));
+    if (const json* sp = o.sub("spin")) {
+      Fields f(*sp, source, o.place() + ".spin");
+      so.animation.spin_axis = f.vec3("axis", {0, 1, 0}, -1, 1);
+      so.animation.spin_deg_per_s = f.number("deg_per_s", 0, -36000, 36000);
+      f.finish();
+      if (glm::length(so.animation.spin_axis) == 0) f.fail("axis", "must not be zero");
+    }
+    if (const json* pa = o.sub("path")) {
+      Fields f(*pa, source, o.place() + ".path");
+      so.animation.path_speed = f.number("speed", 1, 0, 1e4);
+      const json* pts = f.sub("points");
+      f.finish();
+      if (!pts || !pts->is_array() || pts->size() < 2) f.fail("points", "needs at least two [x, y, z] points");
+      for (size_t k = 0; k < pts->size(); ++k) {
+        const json& p = (*pts)[k];
+        if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+          f.fail("points", "point " + std::to_string(k) + " must be [x, y, z]");
+        so.animation.path.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+      }
+    }
+    o.finish();
+  }
+  return s;
+}
+
+Scene load_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open the scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw InputError(path, "byte " + std::to_string(e.byte), "not valid JSON");
+  }
+  return scene_from_json(j, path, std::filesystem::path(path).parent_path().string());
+}
+
+}  // namespace arp::host

@@ -1,0 +1,19 @@
+// The scene file (JSON; docs/scenes.md): a name, the world extent, and
+// objects -- a primitive (box, quad, cylinder, sphere) or a model file
+// (assimp), placed, coloured, shaded, optionally spinning or moving along a
+// path. Strict: an unknown key, a wrong type or a value out of range is an
+// InputError naming the file and the object's key.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "Scene.hpp"
+
+namespace arp::host {
+
+Scene load_scene_file(const std::string& path);
+// `base_dir` resolves relative model paths; `source` names the text in errors.
+Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
+
+}  // namespace arp::host

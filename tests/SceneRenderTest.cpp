@@ -1,0 +1,241 @@
+// Scenes and the cube-face renderer: the renderer's faces follow the address
+// generator's convention (a point lands where the pipeline looks for it), the
+// fill rule covers shared edges exactly once, clipping and culling hold at
+// the extremes, scene files and model imports fail clearly on bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "TestSupport.hpp"
+#include "common/InputError.hpp"
+#include "host/cubemap/CubeFaceBasis.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
+#include "host/scene/Gallery.hpp"
+#include "host/scene/ModelImport.hpp"
+#include "host/scene/Primitives.hpp"
+#include "host/scene/SceneFile.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+using namespace arp;
+using namespace arp::host;
+
+namespace {
+
+Scene one_object(const Mesh& m, const glm::dvec3& at, const glm::dvec3& color = {1, 0, 0}) {
+  Scene s;
+  add_object(s, "thing", std::make_shared<Mesh>(m), at, {color, false});
+  return s;
+}
+
+}  // namespace
+
+TEST(CubeFaceRenderer, APointLandsOnTheTexelThePipelineReadsForItsDirection) {
+  const int S = 32;
+  const CubeFaceRenderer r;
+  const glm::dvec3 eye{1, 2, 3};
+  // Texels in the middle, at the edges and in the corners of every face: a
+  // small sphere along the texel's own direction (memory_texel_direction, the
+  // address generator's convention) must cover that texel.
+  for (int f = 0; f < 6; ++f)
+    for (const auto& [x, y] : {std::pair{16, 16}, {0, 0}, {S - 1, 0}, {0, S - 1}, {S - 1, S - 1}, {5, 27}}) {
+      const Dir3 t = memory_texel_direction(f, x, y, S);
+      const glm::dvec3 d = glm::normalize(glm::dvec3(t.x, t.y, t.z));
+      const Scene s = one_object(make_sphere(0.05, 16), eye + 10.0 * d);
+      std::vector<FaceImage> faces;
+      r.render_faces(s, {}, 0, eye, S, faces);
+      const double got = faces[static_cast<size_t>(f)].distance[static_cast<size_t>(y * S + x)];
+      EXPECT_NEAR(got, 10.0 - 0.05, 0.01) << "face " << f << " texel " << x << "," << y;
+    }
+}
+
+TEST(CubeFaceRenderer, SharedEdgesAreCoveredExactlyOnce) {
+  // A disc of 64 thin triangles fanned around a centre, facing the eye, filling most of -Z.
+  Mesh disc;
+  disc.positions.push_back({0, 0, 0});
+  const int n = 64;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * i / n;
+    disc.positions.push_back({0.9 * std::cos(a), 0.9 * std::sin(a), 0});
+  }
+  for (int i = 0; i < n; ++i)
+    disc.indices.insert(disc.indices.end(), {0, static_cast<uint32_t>(1 + i), static_cast<uint32_t>(1 + (i + 1) % n)});
+  // Plus a grid of 2-triangle quads behind it whose diagonals and edges hit texel centres exactly.
+  const Scene s = one_object(disc, {0.013, -0.007, -1});
+  std::vector<FaceImage> faces(6);
+  for (auto& f : faces) f.hits.assign(1, 0);
+  CubeFaceRenderer().render_faces(s, {}, 0, {0, 0, 0}, 128, faces);
+  const FaceImage& img = faces[5];
+  int covered = 0, twice = 0;
+  for (uint16_t h : img.hits) {
+    covered += h > 0;
+    twice += h > 1;
+  }
+  EXPECT_EQ(twice, 0);
+  // No cracks: every texel centre inside the disc's polygon (shrunk by a texel) is covered.
+  int holes = 0;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      const double sc = 2.0 * (x + 0.5) / 128 - 1, tc = 2.0 * (y + 0.5) / 128 - 1;
+      // -Z: direction (-sc, -tc, -1) hits the plane z = -1 at (-sc, -tc).
+      const double px = -sc - 0.013, py = -tc + 0.007;
+      if (std::hypot(px, py) < 0.9 * std::cos(3.14159265358979 / n) - 2.0 / 128 && img.hits[static_cast<size_t>(y * 128 + x)] == 0)
+        ++holes;
+    }
+  EXPECT_EQ(holes, 0);
+  EXPECT_GT(covered, 3000);
+
+  // A grid of quads whose shared edges pass exactly through texel centres.
+  Mesh grid;
+  for (int j = 0; j <= 8; ++j)
+    for (int i = 0; i <= 8; ++i) grid.positions.push_back({-0.5 + i / 8.0, -0.5 + j / 8.0, 0});
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const uint32_t a = static_cast<uint32_t>(j * 9 + i), b = a + 1, c = a + 9, d = c + 1;
+      grid.indices.insert(grid.indices.end(), {a, b, d, a, d, c});
+    }
+  // At distance 1 on -Z with S = 64, texel centres sit at multiples of 1/32 + 1/64: shift so edges hit them.
+  const Scene g = one_object(grid, {1.0 / 64, 1.0 / 64, -1});
+  std::vector<FaceImage> gf(6);
+  for (auto& f : gf) f.hits.assign(1, 0);
+  CubeFaceRenderer().render_faces(g, {}, 0, {0, 0, 0}, 64, gf);
+  int gtwice = 0, gcovered = 0;
+  for (uint16_t h : gf[5].hits) {
+    gtwice += h > 1;
+    gcovered += h > 0;
+  }
+  EXPECT_EQ(gtwice, 0);
+  EXPECT_EQ(gcovered, 32 * 32);  // a 1 m square at 1 m covers exactly half the face: 32 x 32 centres
+}
+
+TEST(CubeFaceRenderer, ClipsAtTheEyeAndCullsFacesNothingReaches) {
+  // The eye inside a box: every texel of every face is written, at the right distance.
+  const Scene room = one_object(make_box({4, 4, 4}), {0, 0, 0});
+  dp::MemoryConfig mc;
+  mc.face_size = 16;
+  dp::DisplayMemorySet mem(mc, 1);
+  const CubeFaceRenderer r;
+  const RenderStats st = r.render(room, {}, 0, {0.3, -0.2, 0.1}, mem.bank(0, 0));
+  EXPECT_EQ(st.faces_rendered, 6);
+  EXPECT_EQ(st.texels_written, 6 * 16 * 16);
+  // A triangle through the eye plane and one right at the eye: clipped, no crash, no NaN.
+  Mesh m;
+  m.positions = {{-1, -1, 1}, {1, -1, -1}, {0, 1, -1}, {0, 0, 0}, {0.001, 0, 0}, {0, 0.001, 0}};
+  m.indices = {0, 1, 2, 3, 4, 5};
+  std::vector<FaceImage> faces;
+  r.render_faces(one_object(m, {0, 0, 0}), {}, 0, {0, 0, 0}, 16, faces);
+  for (const auto& f : faces)
+    for (double d : f.distance) EXPECT_FALSE(std::isnan(d));
+  // One small object straight ahead: only the faces its bound reaches are rendered.
+  const RenderStats one = r.render(one_object(make_sphere(0.1, 8), {0, 0, -5}), {}, 0, {0, 0, 0}, mem.bank(0, 0));
+  EXPECT_EQ(one.faces_rendered, 1);
+  // An empty scene renders nothing and leaves an empty (committed) buffer.
+  const RenderStats none = r.render(Scene{}, {}, 0, {0, 0, 0}, mem.bank(0, 0));
+  EXPECT_EQ(none.faces_rendered, 0);
+  EXPECT_EQ(none.texels_written, 0);
+}
+
+TEST(CubeFaceRenderer, ThroughThePipelineTheObjectAheadIsInTheMiddleOfTheView) {
+  dp::ArpConfig c;
+  c.timing.h_active = 160;
+  c.timing.v_active = 120;
+  c.memory.face_size = 128;
+  c.memory.count = 1;
+  dp::DisplayMemorySet mem(c.memory, 2);
+  Scene s = one_object(make_box({0.5, 0.5, 0.5}), {0, 1.6, -3}, {1, 0, 0});
+  add_object(s, "left wall", std::make_shared<Mesh>(make_box({0.1, 4, 20})), {-3, 1.6, 0}, {{0, 0, 1}, false});
+  const CubeFaceRenderer r;
+  for (int e = 0; e < 2; ++e) {
+    r.render(s, {}, 0, {0, 1.6, 0}, mem.bank(e, 0));
+    mem.bank(e, 0).vblank();
+  }
+  HmdFrame f;
+  FunctionalModel(c).render(mem, dp::OrientationStream::constant(dp::Quat{}), 0, f);
+  EXPECT_GT(f.channel(0, 80, 60, 0), 150u);  // red ahead
+  EXPECT_LT(f.channel(0, 80, 60, 2), 60u);
+  EXPECT_GT(f.channel(0, 2, 60, 2), 100u);   // blue wall on the left edge
+  EXPECT_LT(f.channel(0, 2, 60, 0), 30u);
+  EXPECT_EQ(f.at(0, 80, 5), 0u);             // nothing above: background
+}
+
+TEST(CubeFaceRenderer, IsDeterministic) {
+  const Scene g = make_gallery();
+  std::vector<FaceImage> a, b;
+  const CubeFaceRenderer r;
+  r.render_faces(g, {}, 1.25, {3, 1.6, -1}, 64, a);
+  r.render_faces(g, {}, 1.25, {3, 1.6, -1}, 64, b);
+  for (int f = 0; f < 6; ++f) {
+    EXPECT_EQ(a[static_cast<size_t>(f)].distance, b[static_cast<size_t>(f)].distance);
+    EXPECT_TRUE(a[static_cast<size_t>(f)].color == b[static_cast<size_t>(f)].color);
+  }
+}
+
+TEST(Scenes, GalleryHasRoomsPillarsPicturesAndExhibits) {
+  const Scene g = make_gallery();
+  int pillars = 0, pictures = 0, exhibits = 0;
+  for (const auto& o : g.objects) {
+    pillars += o.name.find("pillar") != std::string::npos;
+    pictures += o.name.find("picture") != std::string::npos;
+    exhibits += o.name.rfind("exhibit", 0) == 0;
+  }
+  EXPECT_EQ(pillars, 12);
+  EXPECT_EQ(pictures, 12);
+  EXPECT_EQ(exhibits, 6);
+  EXPECT_GT(g.triangles(), 1000u);
+  // Without the model packages the gallery still loads, and says what stands in.
+  const Scene bare = make_gallery({"/nonexistent"});
+  EXPECT_EQ(bare.objects.size(), g.objects.size());
+  ASSERT_EQ(bare.notes.size(), 6u);
+  EXPECT_NE(bare.notes[0].find("a sphere stands in"), std::string::npos);
+  EXPECT_GE(gallery_walk().size(), 5u);
+}
+
+TEST(Scenes, SceneFilesLoadAndBadOnesSayWhereAndWhy) {
+  arp::test::TempDir d;
+  std::ofstream(d.file("ok.json")) << R"({"name": "t", "extent": {"min": [-5,-1,-5], "max": [5,4,5]},
+    "objects": [{"name": "b", "box": [1,2,3], "position": [0,1,-2], "color": [1,0,0], "spin": {"axis": [0,1,0], "deg_per_s": 90}},
+                {"sphere": 0.5, "segments": 12, "shading": "gouraud", "path": {"points": [[0,1,0],[2,1,0]], "speed": 0.5}},
+                {"cylinder": [0.2, 3, 0], "rotation_deg": [0, 90, 0]},
+                {"quad": [2, 1, 0]}]})";
+  const Scene s = load_scene_file(d.file("ok.json"));
+  ASSERT_EQ(s.objects.size(), 4u);
+  EXPECT_TRUE(s.objects[0].animation.animated());
+  EXPECT_NEAR(s.objects[1].position_at(2.0).x, 1.0, 1e-12);
+  EXPECT_TRUE(s.objects[1].material.smooth);
+  auto fails = [&](const std::string& text, const std::string& where) {
+    std::ofstream(d.file("bad.json")) << text;
+    try {
+      load_scene_file(d.file("bad.json"));
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+    }
+  };
+  fails(R"({"objects": [{"box": [1,1,1], "colour": [1,0,0]}]})", "objects[0].colour");
+  fails(R"({"objects": [{"box": [1,1,1], "sphere": 1}]})", "exactly one of");
+  fails(R"({"objects": [{"box": [1,0,1]}]})", "objects[0].box");
+  fails(R"({"objects": [{"model": "missing.obj"}]})", "missing.obj");
+  fails(R"({"objects": [{"box": [1,1,1], "path": {"points": [[0,0,0]]}}]})", "path.points");
+  fails(R"({"objects": [{"box": [1,1,1], "spin": {"axis": [0,0,0]}}]})", "spin.axis");
+  fails(R"({"objects": 3})", "objects");
+  fails(R"({"objects": [], "extent": {"min": [1,1,1], "max": [0,0,0]}})", "extent");
+  fails("{\"objects\": [", "byte");
+  // An empty scene is a scene.
+  std::ofstream(d.file("empty.json")) << R"({"objects": []})";
+  EXPECT_TRUE(load_scene_file(d.file("empty.json")).objects.empty());
+}
+
+TEST(Scenes, BrokenModelsFromAssimpTestModelsAreRefusedClearly) {
+  const std::string root = "/usr/share/assimp/models/glTF2/";
+  if (!std::filesystem::exists(root)) GTEST_SKIP() << "assimp-testmodels not installed";
+  for (const std::string f : {"IndexOutOfRange/IndexOutOfRange.gltf", "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"}) {
+    try {
+      import_model(root + f);
+      ADD_FAILURE() << "accepted " << f;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(f.substr(f.find('/') + 1)), std::string::npos) << e.what();
+    }
+  }
+  const Mesh bunny = import_model("/usr/share/glmark2/models/bunny.obj");
+  EXPECT_GT(bunny.triangles(), 1000u);
+}
