@@ -21,6 +21,11 @@
 #include "common/InputError.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
+#include "host/priority/HostSimulation.hpp"
+#include "host/scene/Gallery.hpp"
+#include "host/scene/SceneFile.hpp"
+#include <glm/gtc/quaternion.hpp>
+#include <memory>
 #include "rtl_model/systemc/TimedRun.hpp"
 #include "tracker/TraceFile.hpp"
 
@@ -38,6 +43,10 @@ struct RunArgs {
   std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us;
   std::vector<std::string> stalls;
   bool no_speculation = false;
+  std::string walk;
+  double walk_speed = 0, threshold_deg = 0;
+  bool baseline = false;
+  host::RenderEngine engine;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
   bool photon_times = false, quiet = false;
@@ -108,6 +117,31 @@ int run(const RunArgs& a) {
     poses = a.motion.make(static_cast<double>(start_ps) * 1e-12 - 1.0, static_cast<double>(end_ps - start_ps) * 1e-12 + 1.01);
     motion_source = "synthetic " + a.motion.motion;
   }
+  // A walk: the head moves along it and faces where it goes; head motion or a trace turns it on top.
+  std::unique_ptr<host::WalkPath> walk;
+  if (!a.walk.empty()) {
+    if (a.cubemap.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
+    if (a.walk == "gallery") walk = std::make_unique<host::WalkPath>(host::gallery_walk(), a.walk_speed > 0 ? a.walk_speed : 1.0, "gallery walk");
+    else {
+      walk = std::make_unique<host::WalkPath>(host::load_walk_file(a.walk));
+      if (a.walk_speed > 0) *walk = host::WalkPath(walk->points(), a.walk_speed, a.walk);
+    }
+    if (poses.empty()) {  // still head on the walk: sample it at 1 kHz
+      const double t0 = static_cast<double>(start_ps) * 1e-12 - 1.0, t1 = static_cast<double>(end_ps) * 1e-12 + 0.01;
+      for (double tt = t0; tt <= t1; tt += 1e-3) {
+        tracker::PoseSample p;
+        p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+        poses.push_back(p);
+      }
+    }
+    for (auto& p : poses) {
+      const double tt = static_cast<double>(p.time_ps) * 1e-12;
+      const glm::dvec3 v = walk->velocity(tt);
+      const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
+      p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
+    }
+    motion_source = (a.walk == "gallery" ? std::string("gallery walk") : a.walk) + " with " + motion_source;
+  }
   std::vector<dp::OrientationSample> samples;
   for (const auto& p : poses)
     samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
@@ -116,7 +150,34 @@ int run(const RunArgs& a) {
 
   std::string source;
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
-  a.cubemap.fill(mem, stream[stream.index_at(start_ps)].q, source);
+  std::unique_ptr<host::Scene> scene;
+  std::unique_ptr<host::HostSimulation> hostsim;
+  if (walk) {
+    if (fid != scm::Fidelity::Functional)
+      throw InputError("--walk", "", "the host renders between frames at the functional level only (for now)");
+    scene = std::make_unique<host::Scene>(a.cubemap.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.cubemap.scene));
+    for (const auto& n : scene->notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());
+    host::PriorityConfig pc;
+    pc.memories = c.memory.count;
+    pc.display_hz = t.refresh_hz();
+    pc.baseline = a.baseline;
+    if (!(a.threshold_deg >= 0) || a.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+    pc.threshold_rad = a.threshold_deg * 3.14159265358979323846 / 180.0;
+    for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", a.engine.triangles_per_s},
+                           {"--engine-fill", a.engine.pixels_per_s}})
+      if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");
+    if (!(a.engine.object_setup_s >= 0) || !std::isfinite(a.engine.object_setup_s)) throw InputError("--engine-setup", "", "must be >= 0");
+    auto head = [&stream](double tt) {
+      const dp::Quat& q = stream[stream.index_at(static_cast<int64_t>(std::llround(tt * 1e12)))].q;
+      return glm::dquat(q.w, q.x, q.y, q.z);
+    };
+    hostsim = std::make_unique<host::HostSimulation>(*scene, pc, a.engine, *walk, head, mem, a.cubemap.ipd_m, t.refresh_hz());
+    hostsim->prime(static_cast<double>(start_ps) * 1e-12);
+    source = "scene " + scene->name + " (" + std::to_string(scene->objects.size()) + " objects, " +
+             std::to_string(scene->triangles()) + " triangles), host rendering " + (a.baseline ? "everything every frame (baseline)" : "by priority");
+  } else {
+    a.cubemap.fill(mem, stream[stream.index_at(start_ps)].q, source);
+  }
   std::error_code ec;
   if (a.every > 0 || a.photon_times) {
     fs::create_directories(a.out_dir, ec);
@@ -189,6 +250,12 @@ int run(const RunArgs& a) {
   in.first_frame = a.first;
   in.frames = a.frames;
   in.stalls = stalls;
+  int64_t baseline_triangles = 0;
+  if (hostsim)
+    in.before_frame = [&](int64_t frame, double tt) {
+      hostsim->before_frame(frame, tt);
+      baseline_triangles += hostsim->full_render_triangles(tt);
+    };
   nlohmann::json frames = nlohmann::json::array();
   std::string csv = frame_csv_header();
   int images = 0;
@@ -333,6 +400,35 @@ int run(const RunArgs& a) {
           {"vcd", vcd_final}}},
         {"images", images},
         {"config", config::to_json(c)}};
+    if (hostsim) {
+      const double secs = static_cast<double>(a.frames) / t.refresh_hz();
+      nlohmann::json mems = nlohmann::json::array();
+      int64_t tris = 0;
+      for (size_t m = 0; m < hostsim->load().size(); ++m) {
+        const auto& L = hostsim->load()[m];
+        tris += L.triangles;
+        const double n = L.updates > 0 ? static_cast<double>(L.updates) : 1.0;
+        mems.push_back({{"memory", m},
+                        {"objects_now", hostsim->scheduler().objects_in(static_cast<int>(m)).size()},
+                        {"updates", L.updates},
+                        {"skipped_overload", L.skipped},
+                        {"update_rate_hz", static_cast<double>(L.updates) / secs},
+                        {"objects_per_update", static_cast<double>(L.objects) / n},
+                        {"triangles_per_update", static_cast<double>(L.triangles) / n},
+                        {"triangles_per_s", static_cast<double>(L.triangles) / secs},
+                        {"texels_per_s", static_cast<double>(L.texels) / secs},
+                        {"engine_busy_s", L.busy_s}});
+      }
+      r["host"] = {{"threshold_deg", hostsim->scheduler().threshold_rad() * 180.0 / 3.14159265358979323846},
+                   {"baseline", a.baseline},
+                   {"engine", {{"triangles_per_s", a.engine.triangles_per_s}, {"pixels_per_s", a.engine.pixels_per_s},
+                               {"object_setup_s", a.engine.object_setup_s}}},
+                   {"memories", mems},
+                   {"object_moves", hostsim->scheduler().moves()},
+                   {"triangles_per_s", static_cast<double>(tris) / secs},
+                   {"full_render_every_frame_triangles_per_s", static_cast<double>(baseline_triangles) / secs},
+                   {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0}};
+    }
     write_text_atomic(a.report, r.dump(2) + "\n");
   }
   return 0;
@@ -376,6 +472,15 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--vcd", a->vcd, "VCD waveform (lt, cycle, rtl); a bare name goes into waveforms/; a .gtkw is written beside it");
   cmd->add_option("--vcd-lines", a->vcd_lines, "Trace only scanlines START:END counted from the first frame's start");
   cmd->add_option("--vcd-time-us", a->vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
+  cmd->add_option("--walk", a->walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
+                  "the host renders by priority between frames (functional level)");
+  cmd->add_option("--speed", a->walk_speed, "Walking speed, m/s (default 1, or the walk file's)");
+  cmd->add_flag("--baseline", a->baseline, "Host baseline: everything in memory 0, rendered every frame");
+  cmd->add_option("--threshold-deg", a->threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
+      ->capture_default_str();
+  cmd->add_option("--engine-triangles", a->engine.triangles_per_s, "Simulated renderer: triangles per second")->capture_default_str();
+  cmd->add_option("--engine-fill", a->engine.pixels_per_s, "Simulated renderer: texels filled per second")->capture_default_str();
+  cmd->add_option("--engine-setup", a->engine.object_setup_s, "Simulated renderer: set-up per object, seconds")->capture_default_str();
   cmd->add_option("--stall", a->stalls,
                   "Inject a stall, STAGE:CLOCK:CYCLES (clock counted from the first frame's first pixel); repeatable")
       ->take_all();

@@ -168,13 +168,20 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
   std::vector<glm::dvec3> world, normal;
   for (int f = 0; f < 6; ++f) {
     FaceImage& img = faces[static_cast<size_t>(f)];
+    if (per_face[static_cast<size_t>(f)].empty()) {  // nothing reaches it: no storage, nothing drawn
+      img.size = S;
+      img.distance.clear();
+      img.color.clear();
+      if (!img.hits.empty()) img.hits.assign(1, 0);
+      continue;
+    }
     img.reset(S);
-    if (per_face[static_cast<size_t>(f)].empty()) continue;
     ++st.faces_rendered;
     const FaceFrame& F = kFaces[f];
     for (size_t i : per_face[static_cast<size_t>(f)]) {
       const SceneObject& o = scene.objects[i];
       const Mesh& m = *o.mesh;
+      st.triangles += static_cast<int64_t>(m.triangles());  // submitted to this face
       const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
       world.resize(m.positions.size());
       for (size_t k = 0; k < m.positions.size(); ++k) world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
@@ -199,7 +206,6 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         }
         clip(poly, tmp, depth_.near_m);
         if (poly.size() < 3) continue;
-        ++st.triangles;
         std::vector<Snapped> sn;
         sn.reserve(poly.size());
         for (const ClipVertex& c : poly) {
@@ -213,6 +219,31 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
   return st;
 }
 
+RenderStats CubeFaceRenderer::count(const Scene& scene, const std::vector<size_t>& objects, double t,
+                                    const glm::dvec3& eye) const {
+  RenderStats st;
+  std::vector<size_t> all;
+  const std::vector<size_t>* list = &objects;
+  if (objects.empty()) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) all.push_back(i);
+    list = &all;
+  }
+  bool face_used[6] = {};
+  for (size_t i : *list) {
+    const SceneObject& o = scene.objects[i];
+    const Sphere b = o.world_bound(t);
+    bool any = false;
+    for (int f = 0; f < 6; ++f)
+      if (sphere_meets_face(b.center - eye, b.radius, f, depth_.near_m)) {
+        st.triangles += static_cast<int64_t>(o.mesh->triangles());
+        face_used[f] = any = true;
+      }
+    st.objects += any ? 1 : 0;
+  }
+  for (bool u : face_used) st.faces_rendered += u ? 1 : 0;
+  return st;
+}
+
 RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_t>& objects, double t,
                                      const glm::dvec3& eye, dp::DisplayMemoryBank& bank) const {
   const dp::MemoryFormat& fmt = bank.format();
@@ -223,6 +254,7 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   bank.clear_back();
   for (int f = 0; f < 6; ++f) {
     const FaceImage& img = faces[static_cast<size_t>(f)];
+    if (img.distance.empty()) continue;
     for (int y = 0; y < img.size; ++y)
       for (int x = 0; x < img.size; ++x) {
         const size_t k = static_cast<size_t>(y) * static_cast<size_t>(img.size) + static_cast<size_t>(x);

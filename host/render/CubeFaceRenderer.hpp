@@ -30,7 +30,7 @@ namespace arp::host {
 
 struct RenderStats {
   int64_t objects = 0;            // objects drawn (on at least one face)
-  int64_t triangles = 0;          // triangles set up (per face they were sent to)
+  int64_t triangles = 0;          // triangles submitted, once per face the object's bound reaches
   int64_t texels_filled = 0;      // texels that passed the depth test, summed over triangles
   int64_t texels_written = 0;     // texels stored in the memory
   int faces_rendered = 0;
@@ -41,7 +41,8 @@ struct LightModel {
   double ambient = 0.35, diffuse = 0.65;
 };
 
-// One face's render target: radial distance and colour per texel.
+// One face's render target: radial distance and colour per texel (both
+// empty for a face nothing reached).
 struct FaceImage {
   int size = 0;
   std::vector<double> distance;  // +inf where nothing was drawn
@@ -62,6 +63,9 @@ class CubeFaceRenderer {
   // The same drawing into six float faces of any size (ground truth, tests).
   RenderStats render_faces(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
                            int face_size, std::vector<FaceImage>& faces) const;
+
+  // What render() would submit -- objects, triangles, faces -- without drawing (no fill count).
+  RenderStats count(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye) const;
 
   const DepthCode& depth() const { return depth_; }
 

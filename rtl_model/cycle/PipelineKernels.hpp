@@ -5,6 +5,7 @@
 // state from the start of the cycle, so evaluation order cannot matter.
 #pragma once
 #include <array>
+#include <functional>
 #include <memory>
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,9 @@ struct TimedInputs {
   int64_t first_frame = 0, frames = 1;
   std::vector<StallWindow> stalls;              // cycle-accurate levels only
   FrameSink sink;
+  // Functional level only: called before each frame is rendered (frame, its
+  // start in seconds) -- a host model updating the memories between frames.
+  std::function<void(int64_t, double)> before_frame;
 };
 
 class PipelineKernels {

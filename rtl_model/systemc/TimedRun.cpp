@@ -82,6 +82,7 @@ TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& 
   const int lead = static_cast<int>(model.orientation_lead());
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
+    if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
     model.render(*in.memories, *in.orientation, frame, f, ro);
     cycle::FrameReport fr;
     fr.frame = frame;
@@ -122,6 +123,8 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
     return run_functional(in, opt);
   }
   check_inputs(in, true);
+  if (in.before_frame)
+    throw InputError("host model", "", "a host that renders between frames runs at the functional level only (for now)");
   if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
   g_simulated = true;
   sc_set_time_resolution(1, SC_PS);

@@ -1,0 +1,84 @@
+#include "WalkPath.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/InputError.hpp"
+
+namespace arp::host {
+
+WalkPath::WalkPath(std::vector<glm::dvec3> points, double speed, const std::string& source) : points_(std::move(points)), speed_(speed) {
+  if (points_.size() < 2) throw InputError(source, "points", "a walk needs at least two points");
+  if (!(speed_ > 0) || !std::isfinite(speed_) || speed_ > 1000) throw InputError(source, "speed", "must be > 0 and at most 1000 m/s");
+  cumulative_.push_back(0);
+  for (size_t i = 1; i < points_.size(); ++i) {
+    const auto& p = points_[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw InputError(source, "points[" + std::to_string(i) + "]", "not finite");
+    length_ += glm::length(points_[i] - points_[i - 1]);
+    cumulative_.push_back(length_);
+  }
+  if (!(length_ > 0)) throw InputError(source, "points", "the path has zero length");
+}
+
+WalkPath WalkPath::standing(const glm::dvec3& at) {
+  WalkPath w;
+  w.points_ = {at};
+  w.cumulative_ = {0};
+  return w;
+}
+
+glm::dvec3 WalkPath::position(double t) const {
+  if (points_.size() < 2 || speed_ <= 0) return points_.empty() ? glm::dvec3(0) : points_.front();
+  double d = std::fmod(speed_ * t, length_);
+  if (d < 0) d += length_;
+  size_t i = 1;
+  while (i + 1 < cumulative_.size() && cumulative_[i] < d) ++i;
+  const double seg = cumulative_[i] - cumulative_[i - 1];
+  const double f = seg > 0 ? (d - cumulative_[i - 1]) / seg : 0.0;
+  return points_[i - 1] + (points_[i] - points_[i - 1]) * f;
+}
+
+glm::dvec3 WalkPath::velocity(double t) const {
+  if (points_.size() < 2 || speed_ <= 0) return glm::dvec3(0);
+  const double dt = 1e-3;
+  const glm::dvec3 v = (position(t + dt) - position(t - dt)) / (2 * dt);
+  const double l = glm::length(v);
+  return l > 0 ? v * (speed_ / l) : v;  // corners: the speed, in the averaged direction
+}
+
+glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd) {
+  if (eyes < 2) return head;
+  return head + (q * glm::dvec3(1, 0, 0)) * ((eye == 0 ? -0.5 : 0.5) * ipd);
+}
+
+WalkPath load_walk_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open the walk file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(ss.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path, "byte " + std::to_string(e.byte), "not valid JSON");
+  }
+  if (!j.is_object()) throw InputError(path, "", "must be an object with speed and points");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "speed" && it.key() != "points") throw InputError(path, it.key(), "unknown key");
+  const double speed = j.contains("speed") && j["speed"].is_number() ? j["speed"].get<double>() : (j.contains("speed") ? -1.0 : 1.0);
+  std::vector<glm::dvec3> pts;
+  if (!j.contains("points") || !j["points"].is_array()) throw InputError(path, "points", "must be an array of [x, y, z]");
+  for (size_t i = 0; i < j["points"].size(); ++i) {
+    const auto& p = j["points"][i];
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+      throw InputError(path, "points[" + std::to_string(i) + "]", "must be [x, y, z]");
+    pts.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+  }
+  return WalkPath(std::move(pts), speed, path);
+}
+
+}  // namespace arp::host

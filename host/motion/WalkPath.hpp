@@ -1,0 +1,38 @@
+// A walking path: a polyline of head positions walked at constant speed
+// (default 1 m/s, as in Chow 2005), looping; stereo eye positions from the
+// head orientation and the interpupillary distance.
+#pragma once
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <string>
+#include <vector>
+
+namespace arp::host {
+
+class WalkPath {
+ public:
+  WalkPath() = default;
+  // InputError naming `source` for fewer than two points, a zero-length path, or a speed <= 0.
+  WalkPath(std::vector<glm::dvec3> points, double speed_m_s, const std::string& source);
+  static WalkPath standing(const glm::dvec3& at);  // no motion at all
+
+  glm::dvec3 position(double t_s) const;
+  glm::dvec3 velocity(double t_s) const;
+  double speed() const { return speed_; }
+  double length() const { return length_; }
+  const std::vector<glm::dvec3>& points() const { return points_; }
+
+ private:
+  std::vector<glm::dvec3> points_;
+  std::vector<double> cumulative_;
+  double speed_ = 0, length_ = 0;
+};
+
+// Eye `eye` of `eyes` (0 = left) at head position p with orientation q.
+glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd_m);
+
+// A path file: {"speed": 1.0, "points": [[x,y,z], ...]} (metres, m/s).
+WalkPath load_walk_file(const std::string& path);
+
+}  // namespace arp::host

@@ -1,0 +1,71 @@
+// The host over time: a user walking through a scene, the priority
+// scheduler sorting objects into memories, one simulated rendering engine
+// rendering each memory when it is due (both eyes, from the eye positions at
+// the render's start), and the new images swapped in at the first vertical
+// blank after the render finishes. When a memory is due while its previous
+// render has not been swapped in yet, the update is skipped (overload): the
+// old image stays, still rotated correctly by the pipeline.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "PriorityScheduler.hpp"
+#include "RenderCost.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
+
+namespace arp::host {
+
+struct MemoryLoad {
+  int64_t updates = 0, skipped = 0;    // renders done, renders skipped for overload
+  int64_t objects = 0, triangles = 0, texels = 0;  // summed over updates (both eyes)
+  double busy_s = 0;                   // simulated render time
+};
+
+struct PendingImage {
+  int64_t swap_frame = -1;             // -1: nothing pending
+  double done_s = 0;
+};
+
+class HostSimulation {
+ public:
+  // `head(t)`: the head orientation at time t (for the eye positions).
+  HostSimulation(const Scene& scene, const PriorityConfig& pc, const RenderEngine& engine, WalkPath walk,
+                 std::function<glm::dquat(double)> head, dp::DisplayMemorySet& mem, double ipd_m,
+                 double display_hz);
+
+  // The state before the run: every memory rendered at t_s and on screen
+  // (a scene already loaded; not counted as load).
+  void prime(double t_s);
+  // The vertical blank before frame f, at time t_s: swaps finished images in,
+  // then starts the renders due at this frame.
+  void before_frame(int64_t f, double t_s);
+
+  const std::vector<MemoryLoad>& load() const { return load_; }
+  const PriorityScheduler& scheduler() const { return sched_; }
+  double engine_busy_until() const { return engine_free_; }
+  // Triangles a full render of the whole scene would set up now (both eyes): the baseline's load per frame.
+  int64_t full_render_triangles(double t_s) const;
+  // Where the eye was when memory m's displayed image was rendered (NaN before the first).
+  glm::dvec3 rendered_from(int m, int eye) const { return from_[static_cast<size_t>(m * 2 + eye)]; }
+  double rendered_at(int m) const { return rendered_at_[static_cast<size_t>(m)]; }
+
+ private:
+  const Scene& scene_;
+  PriorityScheduler sched_;
+  RenderEngine engine_;
+  WalkPath walk_;
+  std::function<glm::dquat(double)> head_;
+  dp::DisplayMemorySet& mem_;
+  double ipd_, display_hz_;
+  CubeFaceRenderer renderer_;
+  std::vector<MemoryLoad> load_;
+  std::vector<PendingImage> pending_;
+  std::vector<glm::dvec3> from_, pending_from_;
+  std::vector<double> rendered_at_, pending_at_;
+  double engine_free_ = -1e300;
+};
+
+}  // namespace arp::host

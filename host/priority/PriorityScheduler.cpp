@@ -1,0 +1,44 @@
+#include "PriorityScheduler.hpp"
+
+#include <cmath>
+
+namespace arp::host {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size)
+    : scene_(scene),
+      cfg_(cfg),
+      threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : (kPi / 2) / face_size),
+      memory_(scene.objects.size(), 0) {}
+
+void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double t) {
+  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    int m = 0;
+    if (!cfg_.baseline) {
+      const SceneObject& o = scene_.objects[i];
+      const Sphere b = o.world_bound(t);
+      const auto& a = o.animation;
+      const double own_speed = (a.path.size() >= 2 && a.path_speed > 0) ? a.path_speed : 0.0;
+      const Validity v = validity({glm::length(b.center - eye), b.radius, user_speed + own_speed,
+                                   std::abs(a.spin_deg_per_s) * kPi / 180.0},
+                                  threshold_);
+      const double p = v.period_s();
+      while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
+    }
+    if (m != memory_[i] && assigned_) ++moves_;
+    memory_[i] = m;
+  }
+  assigned_ = true;
+}
+
+std::vector<size_t> PriorityScheduler::objects_in(int m) const {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < memory_.size(); ++i)
+    if (memory_[i] == m) out.push_back(i);
+  return out;
+}
+
+}  // namespace arp::host

@@ -1,0 +1,48 @@
+// Object-level priority rendering (Regan & Pose): N display memories updated
+// at harmonic rates of the display (60, 30, 15, 7.5 Hz by default); each
+// object goes to the slowest memory whose update period is within its
+// validity period (memory 0 if none is), so objects whose image stays right
+// longer are rendered less often. Every object is in exactly one memory at
+// any time (tested). The baseline renders everything into memory 0 every frame.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "Validity.hpp"
+#include "host/scene/Scene.hpp"
+
+namespace arp::host {
+
+struct PriorityConfig {
+  int memories = 4;
+  double display_hz = 60.0;
+  double threshold_rad = 0.0;   // 0: the angle of one display-memory texel at a face centre, (pi/2) / face_size
+  bool baseline = false;        // everything in memory 0, rendered every frame
+};
+
+class PriorityScheduler {
+ public:
+  PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size);
+
+  // Frames between updates of memory m: 1, 2, 4, 8, ...
+  int frames_per_update(int m) const { return cfg_.baseline ? 1 : 1 << m; }
+  double period_s(int m) const { return frames_per_update(m) / cfg_.display_hz; }
+  double threshold_rad() const { return threshold_; }
+
+  // Re-sorts every object for the user at `eye` moving at `user_speed` at time t.
+  void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
+  int memory_of(size_t object) const { return memory_[object]; }
+  // The objects currently in memory m, in scene order.
+  std::vector<size_t> objects_in(int m) const;
+  int64_t moves() const { return moves_; }  // objects promoted or demoted so far
+
+ private:
+  const Scene& scene_;
+  PriorityConfig cfg_;
+  double threshold_;
+  std::vector<int> memory_;
+  int64_t moves_ = 0;
+  bool assigned_ = false;
+};
+
+}  // namespace arp::host

@@ -1,0 +1,37 @@
+// How long an object's image stays right to within a threshold angle theta_t
+// (Regan & Pose; Chow 2005 figure 3): the minimum of
+// - translational: the user (and the object) moving sideways by
+//   x = d sqrt(2 (1 - cos theta_t)) shifts an object at distance d by theta_t;
+//   valid for x / relative speed;
+// - size: walking toward an object of radius r at distance d changes its
+//   angular radius atan(r/d) by theta_t/2 after moving (theta_t/2)(d^2 + r^2)/r;
+// - animation: a spinning object's surface (radius r, omega rad/s) moves
+//   r omega t, which at distance d subtends theta_t after d theta_t / (r omega).
+// A component that cannot change (zero speed, no spin) is infinite.
+#pragma once
+#include <limits>
+
+namespace arp::host {
+
+struct ValidityInputs {
+  double distance_m;          // eye to the object's bounding-sphere centre
+  double radius_m;            // bounding sphere
+  double relative_speed_m_s;  // user speed plus the object's own
+  double spin_rad_s;          // |angular velocity| of its animation
+};
+
+struct Validity {
+  double translational_s, size_s, animation_s;
+  double period_s() const {
+    double p = translational_s;
+    if (size_s < p) p = size_s;
+    if (animation_s < p) p = animation_s;
+    return p;
+  }
+};
+
+Validity validity(const ValidityInputs& in, double threshold_rad);
+
+constexpr double kForever = std::numeric_limits<double>::infinity();
+
+}  // namespace arp::host
