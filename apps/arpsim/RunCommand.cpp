@@ -21,6 +21,7 @@
 #include "common/InputError.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
+#include "host/error/FrameError.hpp"
 #include "host/priority/HostSimulation.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
@@ -46,6 +47,7 @@ struct RunArgs {
   std::string walk;
   double walk_speed = 0, threshold_deg = 0;
   bool baseline = false;
+  int64_t error_every = 10;
   host::RenderEngine engine;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
@@ -259,6 +261,56 @@ int run(const RunArgs& a) {
   nlohmann::json frames = nlohmann::json::array();
   std::string csv = frame_csv_header();
   int images = 0;
+  // Error against the truth: the same pipeline reading memories freshly
+  // rendered, everything, for the true eye positions at the frame's middle.
+  std::unique_ptr<dp::DisplayMemorySet> truth_mem;
+  std::unique_ptr<FunctionalModel> truth_model;
+  dp::ArpConfig truth_cfg = c;
+  truth_cfg.memory.count = 1;
+  if (hostsim && a.error_every > 0) {
+    truth_mem = std::make_unique<dp::DisplayMemorySet>(truth_cfg.memory, c.timing.eyes);
+    truth_model = std::make_unique<FunctionalModel>(truth_cfg);
+  }
+  std::vector<double> psnrs;
+  double worst_px = 0;
+  const double px_rad = c.lens.fov_deg * 3.14159265358979323846 / 180.0 / c.timing.h_active;
+  auto frame_error = [&](const HmdFrame& f, int64_t frame, nlohmann::json& out) {
+    const double tm = static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame) + t.frame_cycles() / 2)) * 1e-12;
+    const dp::Quat& hq = stream[stream.index_at(static_cast<int64_t>(std::llround(tm * 1e12)))].q;
+    const glm::dquat q(hq.w, hq.x, hq.y, hq.z);
+    const host::CubeFaceRenderer renderer;
+    for (int e = 0; e < c.timing.eyes; ++e) {
+      renderer.render(*scene, {}, tm, host::eye_position(walk->position(tm), q, e, c.timing.eyes, a.cubemap.ipd_m),
+                      truth_mem->bank(e, 0));
+      truth_mem->bank(e, 0).vblank();
+    }
+    HmdFrame truth;
+    RenderOptions tro;
+    tro.threads = a.threads;
+    truth_model->render(*truth_mem, stream, frame, truth, tro);
+    const host::ImageError ie = host::image_error(f, truth);
+    // Tracked points: each object's centre, where its memory's image shows it against where it is.
+    const glm::dvec3 eye_now = host::eye_position(walk->position(tm), q, 0, c.timing.eyes, a.cubemap.ipd_m);
+    const glm::dvec3 ahead = q * glm::dvec3(0, 0, -1);
+    double max_px = 0;
+    for (size_t i = 0; i < scene->objects.size(); ++i) {
+      const auto& o = scene->objects[i];
+      const int m = hostsim->scheduler().memory_of(i);
+      const double then = hostsim->rendered_at(m);
+      if (!std::isfinite(then)) continue;
+      const glm::dvec3 now_p = o.world_bound(tm).center;
+      if (glm::dot(glm::normalize(now_p - eye_now), ahead) < std::cos(c.lens.fov_deg * 0.6 * 3.14159265358979323846 / 180.0))
+        continue;  // outside the view
+      const double d = host::displacement_rad(hostsim->rendered_from(m, 0), o.world_bound(then).center, eye_now, now_p);
+      max_px = std::max(max_px, d / px_rad);
+    }
+    out["error"] = {{"psnr_db", std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0},
+                    {"mse", ie.mse},
+                    {"pixels_differing", ie.differing},
+                    {"max_displacement_px", max_px}};
+    psnrs.push_back(std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0);
+    worst_px = std::max(worst_px, max_px);
+  };
   in.sink = [&](const HmdFrame& f, const cycle::FrameReport& r) {
     uint64_t ph = 0xcbf29ce484222325ull, th = ph;
     for (uint32_t p : f.pixels) ph = fnv(ph, p);
@@ -287,6 +339,8 @@ int run(const RunArgs& a) {
     const int64_t lead = dp::PipelineSchedule(c).orientation_lead();
     const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame) - lead));
     const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame + 1) - lead));
+    nlohmann::json err;
+    if (truth_model && (r.frame - a.first) % a.error_every == 0) frame_error(f, r.frame, err);
     frames.push_back({{"frame", r.frame},
                       {"first_sample", lo},
                       {"last_sample", hi},
@@ -299,6 +353,7 @@ int run(const RunArgs& a) {
                       {"last_photon_ps", r.last_photon_ps},
                       {"pixel_hash", hex[0]},
                       {"photon_hash", hex[1]}});
+    if (!err.is_null()) frames.back()["error"] = err["error"];
     char row[512];
     std::snprintf(row, sizeof row, "%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%.3f,%.3f,%.3f,%" PRId64 ",%" PRId64 ",%s,%s\n",
                   r.frame, r.pixels, r.underflows, r.late_discarded, r.reset_pixels, r.latency_min_ps * 1e-3,
@@ -428,6 +483,14 @@ int run(const RunArgs& a) {
                    {"triangles_per_s", static_cast<double>(tris) / secs},
                    {"full_render_every_frame_triangles_per_s", static_cast<double>(baseline_triangles) / secs},
                    {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0}};
+      if (!psnrs.empty()) {
+        double mean = 0;
+        for (double p : psnrs) mean += p;
+        r["host"]["error"] = {{"frames_measured", psnrs.size()},
+                              {"mean_psnr_db", mean / static_cast<double>(psnrs.size())},
+                              {"worst_psnr_db", *std::min_element(psnrs.begin(), psnrs.end())},
+                              {"max_displacement_px", worst_px}};
+      }
     }
     write_text_atomic(a.report, r.dump(2) + "\n");
   }
@@ -475,6 +538,9 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--walk", a->walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
                   "the host renders by priority between frames (functional level)");
   cmd->add_option("--speed", a->walk_speed, "Walking speed, m/s (default 1, or the walk file's)");
+  cmd->add_option("--error-every", a->error_every,
+                  "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
+      ->capture_default_str();
   cmd->add_flag("--baseline", a->baseline, "Host baseline: everything in memory 0, rendered every frame");
   cmd->add_option("--threshold-deg", a->threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
       ->capture_default_str();

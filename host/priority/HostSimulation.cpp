@@ -16,6 +16,7 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       mem_(mem),
       ipd_(ipd),
       display_hz_(display_hz),
+      baseline_(pc.baseline),
       load_(static_cast<size_t>(mem.count())),
       pending_(static_cast<size_t>(mem.count())),
       from_(static_cast<size_t>(mem.count() * 2), glm::dvec3(std::numeric_limits<double>::quiet_NaN())),
@@ -58,6 +59,7 @@ void HostSimulation::before_frame(int64_t f, double t) {
   sched_.assign(head_pos, walk_.speed(), t);
   for (int m = 0; m < mem_.count(); ++m) {
     if (f % sched_.frames_per_update(m) != 0) continue;
+    if (baseline_ && m > 0) continue;  // the baseline uses memory 0 only
     MemoryLoad& L = load_[static_cast<size_t>(m)];
     PendingImage& p = pending_[static_cast<size_t>(m)];
     if (p.swap_frame >= 0) {  // its last image is not even on screen yet

@@ -60,6 +60,7 @@ class HostSimulation {
   std::function<glm::dquat(double)> head_;
   dp::DisplayMemorySet& mem_;
   double ipd_, display_hz_;
+  bool baseline_;
   CubeFaceRenderer renderer_;
   std::vector<MemoryLoad> load_;
   std::vector<PendingImage> pending_;

@@ -1,0 +1,137 @@
+// Object-level priority rendering: validity periods follow the papers'
+// formulas at the extremes, objects sort into the memory their validity
+// allows and are always in exactly one, walks and the host simulation keep
+// their timing rules.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/InputError.hpp"
+#include "host/error/FrameError.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/priority/HostSimulation.hpp"
+#include "host/scene/Gallery.hpp"
+#include "host/scene/Primitives.hpp"
+
+using namespace arp;
+using namespace arp::host;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+TEST(Validity, TranslationalFollowsChowsFormulaAndExtremesAreFinite) {
+  const double th = 0.5 * kPi / 180;
+  // x = d sqrt(2 (1 - cos th)) over the speed; d is measured to the bound's surface.
+  const Validity v = validity({10.5, 0.5, 1.0, 0.0}, th);
+  EXPECT_NEAR(v.translational_s, 10.0 * std::sqrt(2 * (1 - std::cos(th))), 1e-12);
+  EXPECT_EQ(v.animation_s, kForever);
+  EXPECT_NEAR(v.size_s, 0.5 * th * (100 + 0.25) / 0.5, 1e-12);
+  // Standing still: nothing changes, forever valid; zero and huge speeds, inside the object.
+  EXPECT_EQ(validity({5, 1, 0, 0}, th).period_s(), kForever);
+  EXPECT_GT(validity({0, 1, 1e9, 0}, th).period_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(validity({0, 0, 1e9, 1e9}, th).period_s()));
+  // Spinning at 90 deg/s, radius 1 at 10 m: d th / (r omega).
+  EXPECT_NEAR(validity({11, 1, 0, kPi / 2}, th).animation_s, 10 * th / (kPi / 2), 1e-12);
+  // Farther means longer valid; a larger threshold too.
+  EXPECT_LT(validity({5, 0.5, 1, 0}, th).period_s(), validity({50, 0.5, 1, 0}, th).period_s());
+  EXPECT_LT(validity({5, 0.5, 1, 0}, th).period_s(), validity({5, 0.5, 1, 0}, 4 * th).period_s());
+}
+
+TEST(PriorityScheduler, ObjectsGoToTheSlowestMemoryTheirValidityAllowsAndToOneOnly) {
+  Scene s;
+  auto ball = std::make_shared<Mesh>(make_sphere(0.1, 8));
+  for (int i = 0; i < 200; ++i) add_object(s, "ball", ball, {0, 0, -0.5 - 0.25 * i}, {});
+  PriorityConfig pc;
+  pc.threshold_rad = 0.5 * kPi / 180;
+  PriorityScheduler sch(s, pc, 512);
+  EXPECT_EQ(sch.frames_per_update(0), 1);
+  EXPECT_EQ(sch.frames_per_update(3), 8);
+  for (double t = 0; t < 2; t += 0.25) {
+    const glm::dvec3 eye{0, 0, -10 * t};  // walking into the row of balls at 5 m/s
+    sch.assign(eye, 5.0, t);
+    size_t total = 0;
+    for (int m = 0; m < 4; ++m) total += sch.objects_in(m).size();
+    EXPECT_EQ(total, s.objects.size());  // each object in exactly one memory
+    for (size_t i = 0; i < s.objects.size(); ++i) {
+      const int m = sch.memory_of(i);
+      const Sphere b = s.objects[i].world_bound(t);
+      const double p = validity({glm::length(b.center - eye), b.radius, 5.0, 0}, pc.threshold_rad).period_s();
+      if (m > 0) {
+        EXPECT_LE(sch.period_s(m), p);
+      }
+      if (m < 3) {
+        EXPECT_GT(sch.period_s(m + 1), p);
+      }
+    }
+  }
+  EXPECT_GT(sch.moves(), 0);  // the walk promoted objects toward memory 0
+  // The baseline: everything in memory 0, every frame.
+  pc.baseline = true;
+  PriorityScheduler base(s, pc, 512);
+  base.assign({0, 0, 0}, 1.0, 0);
+  EXPECT_EQ(base.objects_in(0).size(), s.objects.size());
+  EXPECT_EQ(base.frames_per_update(3), 1);
+}
+
+TEST(WalkPath, WalksAtItsSpeedLoopsAndRefusesDegeneratePaths) {
+  const WalkPath w({{0, 0, 0}, {3, 0, 0}, {3, 0, -4}}, 1.0, "test");
+  EXPECT_DOUBLE_EQ(w.length(), 7.0);
+  EXPECT_NEAR(glm::length(w.position(2.0) - glm::dvec3(2, 0, 0)), 0, 1e-12);
+  EXPECT_NEAR(glm::length(w.position(5.0) - glm::dvec3(3, 0, -2)), 0, 1e-12);
+  EXPECT_NEAR(glm::length(w.position(7.0 + 1.0) - w.position(1.0)), 0, 1e-12);  // loops
+  EXPECT_NEAR(glm::length(w.velocity(1.0)), 1.0, 1e-9);
+  EXPECT_NEAR(glm::length(w.position(3600.0 * 1 + 0.5) - w.position(0.5 + 3600.0 - 7.0 * 514)), 0, 1e-6);  // an hour in
+  EXPECT_THROW(WalkPath({{0, 0, 0}}, 1.0, "one point"), InputError);
+  EXPECT_THROW(WalkPath({{1, 1, 1}, {1, 1, 1}}, 1.0, "zero length"), InputError);
+  EXPECT_THROW(WalkPath({{0, 0, 0}, {1, 0, 0}}, 0.0, "zero speed"), InputError);
+  EXPECT_THROW(WalkPath({{0, 0, 0}, {NAN, 0, 0}}, 1.0, "nan"), InputError);
+  // Stereo eyes: IPD apart along the head's x axis, which yaw turns.
+  const glm::dquat yaw90 = glm::angleAxis(kPi / 2, glm::dvec3(0, 1, 0));
+  const glm::dvec3 l = eye_position({0, 1.6, 0}, yaw90, 0, 2, 0.064), r = eye_position({0, 1.6, 0}, yaw90, 1, 2, 0.064);
+  EXPECT_NEAR(glm::length(r - l), 0.064, 1e-12);
+  EXPECT_NEAR(l.z, 0.032, 1e-12);  // turned left, the left eye is toward +z
+}
+
+TEST(HostSimulation, MemoriesUpdateAtTheirRatesAndAnOverloadedEngineKeepsTheOldImage) {
+  const Scene g = make_gallery({"/nonexistent"});  // spheres for exhibits: quick
+  dp::MemoryConfig mc;
+  mc.face_size = 64;
+  auto run = [&](double tri_rate, bool baseline) {
+    dp::DisplayMemorySet mem(mc, 2);
+    PriorityConfig pc;
+    pc.threshold_rad = 2 * kPi / 180;
+    pc.baseline = baseline;
+    RenderEngine e;
+    e.triangles_per_s = tri_rate;
+    HostSimulation h(g, pc, e, WalkPath(gallery_walk(), 1.0, "walk"), [](double) { return glm::dquat(1, 0, 0, 0); },
+                     mem, 0.064, 60.0);
+    h.prime(0);
+    for (int f = 0; f < 32; ++f) h.before_frame(f, f / 60.0);
+    return std::vector<MemoryLoad>(h.load());
+  };
+  const auto fast = run(1e9, false);
+  EXPECT_EQ(fast[0].updates, 32);  // 60 Hz
+  EXPECT_EQ(fast[1].updates, 16);  // 30 Hz
+  EXPECT_EQ(fast[2].updates, 8);   // 15 Hz
+  EXPECT_EQ(fast[3].updates, 4);   // 7.5 Hz
+  for (const auto& m : fast) EXPECT_EQ(m.skipped, 0);
+  const auto slow = run(1e5, true);  // far too slow: most updates are skipped, the old image stays
+  EXPECT_GT(slow[0].skipped, 20);
+  EXPECT_GE(slow[0].updates, 1);
+  EXPECT_EQ(slow[1].updates, 0);  // the baseline uses memory 0 only
+}
+
+TEST(FrameError, PsnrAndDisplacement) {
+  HmdFrame a, b;
+  a.resize(4, 4, 1, false);
+  b.resize(4, 4, 1, false);
+  EXPECT_TRUE(std::isinf(image_error(a, b).psnr_db));
+  b.pixels[0] = 0xff0000;  // one channel of one pixel off by 255
+  const ImageError e = image_error(a, b);
+  EXPECT_NEAR(e.mse, 255.0 * 255.0 / 48.0, 1e-9);
+  EXPECT_NEAR(e.psnr_db, 10 * std::log10(48.0), 1e-9);
+  EXPECT_NEAR(e.differing, 1.0 / 16, 1e-12);
+  EXPECT_NEAR(displacement_rad({0, 0, 0}, {0, 0, -1}, {0, 0, 0}, {1, 0, -1}), kPi / 4, 1e-12);
+  EXPECT_EQ(displacement_rad({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}), 0.0);
+}
