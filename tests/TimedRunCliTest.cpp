@@ -152,3 +152,33 @@ TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {
         << m;
   }
 }
+
+// The host and the pipeline over a walk: the report has the per-memory
+// rates and loads, the load against rendering everything, and the error
+// against the truth; bad host input is refused before anything runs.
+TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 8 --every 4 --error-every 4" +
+                             " --threshold-deg 2 --set memory.face_size=128" +
+                             " --out-dir " + d.file("f") + " --report " + d.file("w.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = load(d.file("w.json"));
+  ASSERT_EQ(j["host"]["memories"].size(), 4u);
+  EXPECT_EQ(j["host"]["memories"][0]["updates"], 8);
+  EXPECT_EQ(j["host"]["memories"][1]["updates"], 4);
+  EXPECT_EQ(j["host"]["memories"][3]["updates"], 1);
+  EXPECT_GT(j["host"]["load_reduction"].get<double>(), 1.0);
+  EXPECT_EQ(j["host"]["error"]["frames_measured"], 2);
+  EXPECT_GT(j["host"]["error"]["mean_psnr_db"].get<double>(), 15.0);
+  EXPECT_TRUE(std::filesystem::exists(d.file("f/frame_000004.png")));
+  std::ofstream(d.file("flat.json")) << R"({"speed": 1, "points": [[0,1.6,0],[0,1.6,0]]})";
+  for (const std::string& bad : std::vector<std::string>{" --walk gallery", " --scene gallery --walk gallery --fidelity rtl",
+                                " --scene gallery --walk " + d.file("flat.json"), " --scene gallery --walk " + d.file("none.json"),
+                                " --scene gallery --walk gallery --threshold-deg -1",
+                                " --scene gallery --walk gallery --engine-triangles 0",
+                                " --scene " + d.file("none.json") + " --walk gallery"}) {
+    const auto e = run_command(kArpsim + " run -q --frames 2 --every 0" + bad + " --report " + d.file("bad.json"));
+    EXPECT_EQ(e.status, 2) << bad << "\n" << e.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("bad.json"))) << bad;
+  }
+}

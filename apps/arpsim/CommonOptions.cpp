@@ -39,7 +39,7 @@ void CubeMapOptions::add_to(CLI::App& cmd) {
   g->add_option("--faces", faces, "Folder with px nx py ny pz nz.<ext>, each face_size square");
   g->add_option("--cross", cross, "One image, a 4:3 horizontal or 3:4 vertical cross");
   g->add_option("--equirect", equirect, "One 2:1 equirectangular panorama");
-  g->add_option("--scene", scene, "Render a scene into the memories: a scene file (docs/scenes.md) or 'gallery'");
+  g->add_option("--scene", scene, "Render a scene into the memories: a scene file (docs/host.md) or 'gallery'");
   g->require_option(0, 1);
   cmd.add_option("--position", position, "--scene: head position x,y,z in metres (default: the gallery walk's start)");
   cmd.add_option("--time", time_s, "--scene: scene time in seconds (animations)")->capture_default_str();

@@ -1,4 +1,4 @@
-// The scene file (JSON; docs/scenes.md): a name, the world extent, and
+// The scene file (JSON; docs/host.md): a name, the world extent, and
 // objects -- a primitive (box, quad, cylinder, sphere) or a model file
 // (assimp), placed, coloured, shaded, optionally spinning or moving along a
 // path. Strict: an unknown key, a wrong type or a value out of range is an

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# The priority-rendering trade: rendering load against image error as the
+# threshold angle theta_t grows, over the gallery walk. One `arpsim run` per
+# theta_t; writes OUT/theta-sweep.csv and, with gnuplot, OUT/theta-sweep.png.
+# Usage: scripts/theta-sweep.sh [OUT]   (env: FRAMES, THETAS, ARPSIM)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
+OUT=${1:-theta-sweep}
+FRAMES=${FRAMES:-45}
+THETAS=${THETAS:-"0.25 0.5 1 2 4 8"}
+mkdir -p "$OUT"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# The last occurrence of a key in arpsim's report (the host summary sorts after the frames).
+value() { grep "\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+]*\).*/\1/'; }
+csv="$OUT/theta-sweep.csv"
+echo "theta_deg,triangles_per_s,full_render_triangles_per_s,load_reduction,mean_psnr_db,worst_psnr_db,max_displacement_px" > "$tmp/sweep.csv"
+for th in $THETAS; do
+  "$ARPSIM" run -q --scene gallery --walk gallery --frames "$FRAMES" --every 0 --error-every 5 \
+    --threshold-deg "$th" --report "$tmp/r.json" >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
+  row="$th,$(value triangles_per_s "$tmp/r.json"),$(value full_render_every_frame_triangles_per_s "$tmp/r.json")"
+  row="$row,$(value load_reduction "$tmp/r.json"),$(value mean_psnr_db "$tmp/r.json"),$(value worst_psnr_db "$tmp/r.json")"
+  row="$row,$(value max_displacement_px "$tmp/r.json")"
+  echo "$row" >> "$tmp/sweep.csv"
+  echo "theta_t $th deg: $row"
+done
+mv "$tmp/sweep.csv" "$csv"
+echo "written $csv"
+if command -v gnuplot >/dev/null; then
+  gnuplot <<GP
+set terminal pngcairo size 900,560 font ",11"
+set output "$OUT/theta-sweep.png"
+set datafile separator ","
+set title "Priority rendering on the gallery walk: rendering load against image error"
+set xlabel "threshold angle theta_t (degrees)"
+set logscale x 2
+set ylabel "triangles rendered per second (millions)"
+set y2label "PSNR against the truth (dB)"
+set ytics nomirror
+set y2tics
+set key bottom left
+set grid
+plot "$csv" using 1:(\$2/1e6) skip 1 with linespoints lw 2 title "priority rendering load", \
+     "$csv" using 1:(\$3/1e6) skip 1 with lines dt 2 lw 2 title "everything every frame", \
+     "$csv" using 1:5 skip 1 axes x1y2 with linespoints lw 2 title "mean PSNR (right axis)"
+GP
+  echo "written $OUT/theta-sweep.png"
+else
+  echo "theta-sweep: gnuplot not installed; CSV only" >&2
+fi
