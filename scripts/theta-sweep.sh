@@ -15,13 +15,13 @@ trap 'rm -rf "$tmp"' EXIT
 # The last occurrence of a key in arpsim's report (the host summary sorts after the frames).
 value() { grep "\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+]*\).*/\1/'; }
 csv="$OUT/theta-sweep.csv"
-echo "theta_deg,triangles_per_s,full_render_triangles_per_s,load_reduction,mean_psnr_db,worst_psnr_db,max_displacement_px" > "$tmp/sweep.csv"
+echo "theta_deg,triangles_per_s,full_render_triangles_per_s,load_reduction,mean_psnr_db,worst_psnr_db,max_displacement_px,worst_share_another_object" > "$tmp/sweep.csv"
 for th in $THETAS; do
   "$ARPSIM" run -q --scene gallery --walk gallery --frames "$FRAMES" --every 0 --error-every 5 \
     --threshold-deg "$th" --report "$tmp/r.json" >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
   row="$th,$(value triangles_per_s "$tmp/r.json"),$(value full_render_every_frame_triangles_per_s "$tmp/r.json")"
   row="$row,$(value load_reduction "$tmp/r.json"),$(value mean_psnr_db "$tmp/r.json"),$(value worst_psnr_db "$tmp/r.json")"
-  row="$row,$(value max_displacement_px "$tmp/r.json")"
+  row="$row,$(value max_displacement_px "$tmp/r.json"),$(value worst_share_showing_another_object "$tmp/r.json")"
   echo "$row" >> "$tmp/sweep.csv"
   echo "theta_t $th deg: $row"
 done

@@ -170,6 +170,9 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
   EXPECT_GT(j["host"]["load_reduction"].get<double>(), 1.0);
   EXPECT_EQ(j["host"]["error"]["frames_measured"], 2);
   EXPECT_GT(j["host"]["error"]["mean_psnr_db"].get<double>(), 15.0);
+  const double share = j["host"]["error"]["worst_share_showing_another_object"].get<double>();
+  EXPECT_GE(share, 0.0);
+  EXPECT_LT(share, 0.2);
   EXPECT_TRUE(std::filesystem::exists(d.file("f/frame_000004.png")));
   std::ofstream(d.file("flat.json")) << R"({"speed": 1, "points": [[0,1.6,0],[0,1.6,0]]})";
   for (const std::string& bad : std::vector<std::string>{" --walk gallery", " --scene gallery --walk gallery --fidelity rtl",

@@ -272,7 +272,13 @@ int run(const RunArgs& a) {
     truth_model = std::make_unique<FunctionalModel>(truth_cfg);
   }
   std::vector<double> psnrs;
-  double worst_px = 0;
+  double worst_px = 0, worst_object_share = 0;
+  // The pipeline's own addressing, to ask which object each display pixel shows.
+  const dp::LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
+  const dp::RotateParams rot(c.widths);
+  const dp::AddressGeneratorParams addr(c.widths, c.memory.face_size);
+  const int latch_lead = static_cast<int>(dp::PipelineSchedule(c).orientation_lead());
+  std::vector<std::vector<host::FaceImage>> truth_ids(static_cast<size_t>(c.timing.eyes));
   const double px_rad = c.lens.fov_deg * 3.14159265358979323846 / 180.0 / c.timing.h_active;
   auto frame_error = [&](const HmdFrame& f, int64_t frame, nlohmann::json& out) {
     const double tm = static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame) + t.frame_cycles() / 2)) * 1e-12;
@@ -281,7 +287,7 @@ int run(const RunArgs& a) {
     const host::CubeFaceRenderer renderer;
     for (int e = 0; e < c.timing.eyes; ++e) {
       renderer.render(*scene, {}, tm, host::eye_position(walk->position(tm), q, e, c.timing.eyes, a.cubemap.ipd_m),
-                      truth_mem->bank(e, 0));
+                      truth_mem->bank(e, 0), &truth_ids[static_cast<size_t>(e)]);
       truth_mem->bank(e, 0).vblank();
     }
     HmdFrame truth;
@@ -304,7 +310,40 @@ int run(const RunArgs& a) {
       const double d = host::displacement_rad(hostsim->rendered_from(m, 0), o.world_bound(then).center, eye_now, now_p);
       max_px = std::max(max_px, d / px_rad);
     }
+    // Which object each pixel shows (the nearest texel the pipeline addresses,
+    // composited by depth across the memories) against the truth's.
+    int64_t differ = 0, total = 0;
+    const uint32_t empty = mem.format().empty_depth();
+    for (int e = 0; e < c.timing.eyes; ++e)
+      for (int y = 0; y < c.timing.v_active; ++y) {
+        size_t held = SIZE_MAX;
+        dp::Mat3q M{};
+        for (int x = 0; x < c.timing.h_active; ++x) {
+          const size_t sidx = stream.index_at(t.cycles_to_ps(dp::latch_cycle(t, c.pipeline.latch, latch_lead, frame, e, x, y)));
+          if (sidx != held) {
+            M = dp::quantise_rotation(stream[sidx].q, c.widths.mat_frac);
+            held = sidx;
+          }
+          const dp::CubeAddress ad = dp::generate_address(dp::rotate(M, lens.at(e, x, y), rot), addr);
+          uint32_t best_depth = empty, shown = 0;
+          for (int m = 0; m < mem.count(); ++m) {
+            const uint32_t dpt = dp::texel_depth(mem.bank(e, m).read(ad.face, ad.x, ad.y));
+            if (dpt < best_depth) {
+              best_depth = dpt;
+              shown = hostsim->shown_object(m, e, ad.face, ad.x, ad.y);
+            }
+          }
+          const auto& tf = truth_ids[static_cast<size_t>(e)][ad.face];
+          const uint32_t truth_object =
+              tf.object.empty() ? 0u : tf.object[static_cast<size_t>(ad.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(ad.x)];
+          differ += shown != truth_object;
+          ++total;
+        }
+      }
+    const double object_share = total ? static_cast<double>(differ) / static_cast<double>(total) : 0.0;
+    worst_object_share = std::max(worst_object_share, object_share);
     out["error"] = {{"psnr_db", std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0},
+                    {"pixels_showing_another_object", object_share},
                     {"mse", ie.mse},
                     {"pixels_differing", ie.differing},
                     {"max_displacement_px", max_px}};
@@ -489,7 +528,8 @@ int run(const RunArgs& a) {
         r["host"]["error"] = {{"frames_measured", psnrs.size()},
                               {"mean_psnr_db", mean / static_cast<double>(psnrs.size())},
                               {"worst_psnr_db", *std::min_element(psnrs.begin(), psnrs.end())},
-                              {"max_displacement_px", worst_px}};
+                              {"max_displacement_px", worst_px},
+                              {"worst_share_showing_another_object", worst_object_share}};
       }
     }
     write_text_atomic(a.report, r.dump(2) + "\n");

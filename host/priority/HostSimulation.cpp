@@ -22,7 +22,9 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       from_(static_cast<size_t>(mem.count() * 2), glm::dvec3(std::numeric_limits<double>::quiet_NaN())),
       pending_from_(from_.size()),
       rendered_at_(static_cast<size_t>(mem.count()), std::numeric_limits<double>::quiet_NaN()),
-      pending_at_(rendered_at_.size()) {}
+      pending_at_(rendered_at_.size()),
+      front_ids_(from_.size(), std::vector<FaceImage>(6)),
+      pending_ids_(from_.size(), std::vector<FaceImage>(6)) {}
 
 void HostSimulation::prime(double t) {
   sched_.assign(walk_.position(t), walk_.speed(), t);
@@ -31,11 +33,13 @@ void HostSimulation::prime(double t) {
     for (int e = 0; e < mem_.eyes(); ++e) {
       const glm::dvec3 eye = eye_position(walk_.position(t), head_(t), e, mem_.eyes(), ipd_);
       dp::DisplayMemoryBank& bank = mem_.bank(e, m);
+      auto& ids = front_ids_[static_cast<size_t>(m * 2 + e)];
       if (objs.empty()) {
         bank.clear_back();
         bank.commit();
+        for (auto& f : ids) f.object.clear();
       } else {
-        renderer_.render(scene_, objs, t, eye, bank);
+        renderer_.render(scene_, objs, t, eye, bank, &ids);
       }
       bank.vblank();
       from_[static_cast<size_t>(m * 2 + e)] = eye;
@@ -50,7 +54,10 @@ void HostSimulation::before_frame(int64_t f, double t) {
     PendingImage& p = pending_[static_cast<size_t>(m)];
     if (p.swap_frame < 0 || p.swap_frame > f) continue;
     for (int e = 0; e < mem_.eyes(); ++e) mem_.bank(e, m).vblank();
-    for (int e = 0; e < 2; ++e) from_[static_cast<size_t>(m * 2 + e)] = pending_from_[static_cast<size_t>(m * 2 + e)];
+    for (int e = 0; e < 2; ++e) {
+      from_[static_cast<size_t>(m * 2 + e)] = pending_from_[static_cast<size_t>(m * 2 + e)];
+      std::swap(front_ids_[static_cast<size_t>(m * 2 + e)], pending_ids_[static_cast<size_t>(m * 2 + e)]);
+    }
     rendered_at_[static_cast<size_t>(m)] = pending_at_[static_cast<size_t>(m)];
     p.swap_frame = -1;
   }
@@ -73,11 +80,13 @@ void HostSimulation::before_frame(int64_t f, double t) {
     for (int e = 0; e < mem_.eyes(); ++e) {
       const glm::dvec3 eye = eye_position(walk_.position(start), head_(start), e, mem_.eyes(), ipd_);
       RenderStats st;
+      auto& ids = pending_ids_[static_cast<size_t>(m * 2 + e)];
       if (objs.empty()) {
         mem_.bank(e, m).clear_back();  // nothing assigned: the memory shows nothing
         mem_.bank(e, m).commit();
+        for (auto& face : ids) face.object.clear();
       } else {
-        st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m));
+        st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids);
       }
       sum.objects += st.objects;
       sum.triangles += st.triangles;

@@ -50,6 +50,11 @@ class HostSimulation {
   int64_t full_render_triangles(double t_s) const;
   // Where the eye was when memory m's displayed image was rendered (NaN before the first).
   glm::dvec3 rendered_from(int m, int eye) const { return from_[static_cast<size_t>(m * 2 + eye)]; }
+  // The visible object (scene index + 1, 0: none) of texel (x, y) of `face` in memory m's image on screen.
+  uint32_t shown_object(int m, int eye, int face, int x, int y) const {
+    const FaceImage& f = front_ids_[static_cast<size_t>(m * 2 + eye)][static_cast<size_t>(face)];
+    return f.object.empty() ? 0u : f.object[static_cast<size_t>(y) * static_cast<size_t>(f.size) + static_cast<size_t>(x)];
+  }
   double rendered_at(int m) const { return rendered_at_[static_cast<size_t>(m)]; }
 
  private:
@@ -66,6 +71,7 @@ class HostSimulation {
   std::vector<PendingImage> pending_;
   std::vector<glm::dvec3> from_, pending_from_;
   std::vector<double> rendered_at_, pending_at_;
+  std::vector<std::vector<FaceImage>> front_ids_, pending_ids_;  // per memory and eye: visible objects
   double engine_free_ = -1e300;
 };
 

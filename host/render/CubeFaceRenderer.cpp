@@ -68,7 +68,7 @@ struct Snapped {
 // A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
 bool top_left(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
 
-void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled) {
+void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled, uint32_t object_id) {
   int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
   if (area == 0) return;
   if (area < 0) {  // one winding for the edge tests; both are drawn
@@ -114,6 +114,7 @@ void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled)
       if (!(r < img.distance[k])) continue;
       img.distance[k] = r;
       img.color[k] = (l0 * v0.color_over_w + l1 * v1.color_over_w + l2 * v2.color_over_w) * w;
+      img.object[k] = object_id;
       ++filled;
     }
   }
@@ -137,6 +138,7 @@ void FaceImage::reset(int s) {
   if (count) hits.assign(static_cast<size_t>(s) * static_cast<size_t>(s), 0);
   distance.assign(static_cast<size_t>(s) * static_cast<size_t>(s), std::numeric_limits<double>::infinity());
   color.assign(distance.size(), glm::dvec3(0.0));
+  object.assign(distance.size(), 0);
 }
 
 RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector<size_t>& objects, double t,
@@ -172,6 +174,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       img.size = S;
       img.distance.clear();
       img.color.clear();
+      img.object.clear();
       if (!img.hits.empty()) img.hits.assign(1, 0);
       continue;
     }
@@ -212,7 +215,8 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
           const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
           sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w});
         }
-        for (size_t k = 1; k + 1 < sn.size(); ++k) raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled);
+        for (size_t k = 1; k + 1 < sn.size(); ++k)
+          raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled, static_cast<uint32_t>(i + 1));
       }
     }
   }
@@ -245,7 +249,8 @@ RenderStats CubeFaceRenderer::count(const Scene& scene, const std::vector<size_t
 }
 
 RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_t>& objects, double t,
-                                     const glm::dvec3& eye, dp::DisplayMemoryBank& bank) const {
+                                     const glm::dvec3& eye, dp::DisplayMemoryBank& bank,
+                                     std::vector<FaceImage>* visible) const {
   const dp::MemoryFormat& fmt = bank.format();
   std::vector<FaceImage> faces;
   RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces);
@@ -267,6 +272,16 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
       }
   }
   bank.commit();
+  if (visible) {
+    visible->resize(6);
+    for (int f = 0; f < 6; ++f) {
+      FaceImage& v = (*visible)[static_cast<size_t>(f)];
+      v.size = fmt.face_size;
+      v.object = std::move(faces[static_cast<size_t>(f)].object);
+      v.distance.clear();
+      v.color.clear();
+    }
+  }
   return st;
 }
 

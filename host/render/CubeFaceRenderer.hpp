@@ -47,6 +47,7 @@ struct FaceImage {
   int size = 0;
   std::vector<double> distance;  // +inf where nothing was drawn
   std::vector<glm::dvec3> color;  // linear 0..1
+  std::vector<uint32_t> object;   // the visible object per texel: its scene index + 1 (0: nothing)
   std::vector<uint16_t> hits;     // if sized by the caller: how many triangles covered each texel centre (tests)
   void reset(int s);
 };
@@ -57,8 +58,9 @@ class CubeFaceRenderer {
 
   // Renders `objects` (indices into scene.objects; all if empty) at time t
   // from `eye` into the bank's back buffer, which is cleared first; commits.
+  // `visible`, if given, receives the six faces' visible objects (FaceImage::object; distance and colour left empty).
   RenderStats render(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
-                     dp::DisplayMemoryBank& bank) const;
+                     dp::DisplayMemoryBank& bank, std::vector<FaceImage>* visible = nullptr) const;
 
   // The same drawing into six float faces of any size (ground truth, tests).
   RenderStats render_faces(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
