@@ -22,9 +22,15 @@ using namespace arp::host;
 
 namespace {
 
+Material plain(const glm::dvec3& color) {
+  Material m;
+  m.color = color;
+  return m;
+}
+
 Scene one_object(const Mesh& m, const glm::dvec3& at, const glm::dvec3& color = {1, 0, 0}) {
   Scene s;
-  add_object(s, "thing", std::make_shared<Mesh>(m), at, {color, false});
+  add_object(s, "thing", std::make_shared<Mesh>(m), at, plain(color));
   return s;
 }
 
@@ -143,7 +149,7 @@ TEST(CubeFaceRenderer, ThroughThePipelineTheObjectAheadIsInTheMiddleOfTheView) {
   c.memory.count = 1;
   dp::DisplayMemorySet mem(c.memory, 2);
   Scene s = one_object(make_box({0.5, 0.5, 0.5}), {0, 1.6, -3}, {1, 0, 0});
-  add_object(s, "left wall", std::make_shared<Mesh>(make_box({0.1, 4, 20})), {-3, 1.6, 0}, {{0, 0, 1}, false});
+  add_object(s, "left wall", std::make_shared<Mesh>(make_box({0.1, 4, 20})), {-3, 1.6, 0}, plain({0, 0, 1}));
   const CubeFaceRenderer r;
   for (int e = 0; e < 2; ++e) {
     r.render(s, {}, 0, {0, 1.6, 0}, mem.bank(e, 0));
@@ -156,6 +162,29 @@ TEST(CubeFaceRenderer, ThroughThePipelineTheObjectAheadIsInTheMiddleOfTheView) {
   EXPECT_GT(f.channel(0, 2, 60, 2), 100u);   // blue wall on the left edge
   EXPECT_LT(f.channel(0, 2, 60, 0), 30u);
   EXPECT_EQ(f.at(0, 80, 5), 0u);             // nothing above: background
+}
+
+TEST(CubeFaceRenderer, TexturesMapOntoQuadsTheRightWayUp) {
+  // A quad facing the eye with a texture whose top half is red and bottom half blue.
+  auto tex = std::make_shared<RgbImage>(8, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      uint8_t* p = tex->px(x, y);
+      p[0] = y < 4 ? 255 : 0;
+      p[2] = y < 4 ? 0 : 255;
+    }
+  Scene s;
+  Material m = plain({1, 1, 1});
+  m.texture = tex;
+  add_object(s, "canvas", std::make_shared<Mesh>(make_quad(2, 2)), {0, 0, -2}, m);
+  std::vector<FaceImage> faces;
+  CubeFaceRenderer().render_faces(s, {}, 0, {0, 0, 0}, 64, faces);
+  const FaceImage& f = faces[5];  // -Z: texel row 0 looks up (tc = -1 -> direction y = +1)
+  const glm::dvec3 top = f.color[static_cast<size_t>(20 * 64 + 32)], bottom = f.color[static_cast<size_t>(44 * 64 + 32)];
+  EXPECT_GT(top.r, 0.2);
+  EXPECT_LT(top.b, 0.05);
+  EXPECT_GT(bottom.b, 0.2);
+  EXPECT_LT(bottom.r, 0.05);
 }
 
 TEST(CubeFaceRenderer, IsDeterministic) {
@@ -220,6 +249,8 @@ TEST(Scenes, SceneFilesLoadAndBadOnesSayWhereAndWhy) {
   fails(R"({"objects": 3})", "objects");
   fails(R"({"objects": [], "extent": {"min": [1,1,1], "max": [0,0,0]}})", "extent");
   fails("{\"objects\": [", "byte");
+  fails(R"({"objects": [{"cylinder": [1,1,0], "texture": "t.png"}]})", "texture coordinates");
+  fails(R"({"objects": [{"quad": [1,1,0], "texture": "missing.png"}]})", "missing.png");
   // An empty scene is a scene.
   std::ofstream(d.file("empty.json")) << R"({"objects": []})";
   EXPECT_TRUE(load_scene_file(d.file("empty.json")).objects.empty());

@@ -27,6 +27,7 @@ const FaceFrame kFaces[6] = {
 struct ClipVertex {
   double u, v, w;
   glm::dvec3 color;
+  glm::dvec2 uv;
 };
 
 // Signed distance to clip plane k (>= 0 inside): w >= near, w -/+ u >= 0, w -/+ v >= 0.
@@ -41,7 +42,8 @@ double inside(const ClipVertex& p, int k, double near) {
 }
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
-  return {a.u + (b.u - a.u) * t, a.v + (b.v - a.v) * t, a.w + (b.w - a.w) * t, a.color + (b.color - a.color) * t};
+  return {a.u + (b.u - a.u) * t, a.v + (b.v - a.v) * t, a.w + (b.w - a.w) * t, a.color + (b.color - a.color) * t,
+          a.uv + (b.uv - a.uv) * t};
 }
 
 // Sutherland-Hodgman against the five planes; `poly` in, clipped polygon out.
@@ -63,12 +65,29 @@ struct Snapped {
   int64_t x, y;  // 1/256 texel
   double inv_w;
   glm::dvec3 color_over_w;
+  glm::dvec2 uv_over_w;
 };
+
+// Bilinear, repeating; texture row 0 is the image's top (v = 1).
+glm::dvec3 sample(const RgbImage& img, glm::dvec2 uv) {
+  const double x = (uv.x - std::floor(uv.x)) * img.width - 0.5, y = (1.0 - (uv.y - std::floor(uv.y))) * img.height - 0.5;
+  const double fx = std::floor(x), fy = std::floor(y);
+  const double ax = x - fx, ay = y - fy;
+  auto at = [&](int ix, int iy) {
+    ix = ((ix % img.width) + img.width) % img.width;
+    iy = ((iy % img.height) + img.height) % img.height;
+    const uint8_t* p = img.px(ix, iy);
+    return glm::dvec3(p[0], p[1], p[2]) / 255.0;
+  };
+  const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
+  return (at(ix, iy) * (1 - ax) + at(ix + 1, iy) * ax) * (1 - ay) + (at(ix, iy + 1) * (1 - ax) + at(ix + 1, iy + 1) * ax) * ay;
+}
 
 // A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
 bool top_left(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
 
-void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled, uint32_t object_id) {
+void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled, uint32_t object_id,
+            const RgbImage* texture) {
   int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
   if (area == 0) return;
   if (area < 0) {  // one winding for the edge tests; both are drawn
@@ -114,6 +133,7 @@ void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled,
       if (!(r < img.distance[k])) continue;
       img.distance[k] = r;
       img.color[k] = (l0 * v0.color_over_w + l1 * v1.color_over_w + l2 * v2.color_over_w) * w;
+      if (texture) img.color[k] *= sample(*texture, (l0 * v0.uv_over_w + l1 * v1.uv_over_w + l2 * v2.uv_over_w) * w);
       img.object[k] = object_id;
       ++filled;
     }
@@ -189,6 +209,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       world.resize(m.positions.size());
       for (size_t k = 0; k < m.positions.size(); ++k) world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
       const bool smooth = o.material.smooth && !m.normals.empty();
+      const RgbImage* texture = o.material.texture && !m.uvs.empty() ? o.material.texture.get() : nullptr;
       if (smooth) {
         normal.resize(m.normals.size());
         for (size_t k = 0; k < m.normals.size(); ++k) normal[k] = glm::normalize(nmat * m.normals[k]);
@@ -205,7 +226,8 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         poly.clear();
         for (uint32_t k : id) {
           const glm::dvec3 d = world[k] - eye;
-          poly.push_back({glm::dot(d, F.a), glm::dot(d, F.b), glm::dot(d, F.fwd), smooth ? shade(normal[k]) : flat});
+          poly.push_back({glm::dot(d, F.a), glm::dot(d, F.b), glm::dot(d, F.fwd), smooth ? shade(normal[k]) : flat,
+                          texture ? m.uvs[k] : glm::dvec2(0.0)});
         }
         clip(poly, tmp, depth_.near_m);
         if (poly.size() < 3) continue;
@@ -213,10 +235,10 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         sn.reserve(poly.size());
         for (const ClipVertex& c : poly) {
           const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
-          sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w});
+          sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w, c.uv / c.w});
         }
         for (size_t k = 1; k + 1 < sn.size(); ++k)
-          raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled, static_cast<uint32_t>(i + 1));
+          raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled, static_cast<uint32_t>(i + 1), texture);
       }
     }
   }

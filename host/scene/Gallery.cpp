@@ -3,6 +3,8 @@
 #include <filesystem>
 
 #include "ModelImport.hpp"
+#include "host/cubemap/BitmapFont.hpp"
+#include <cmath>
 #include "Primitives.hpp"
 #include "common/InputError.hpp"
 
@@ -13,6 +15,47 @@ constexpr double kRoom = 8.0, kHeight = 3.0, kWall = 0.2, kDoor = 1.6;
 constexpr int kRoomsX = 3, kRoomsZ = 2;
 
 std::shared_ptr<const Mesh> box(const glm::dvec3& s) { return std::make_shared<Mesh>(make_box(s)); }
+
+Material mat(const glm::dvec3& color, bool smooth, std::shared_ptr<const RgbImage> texture = nullptr) {
+  Material m;
+  m.color = color;
+  m.smooth = smooth;
+  m.texture = std::move(texture);
+  return m;
+}
+
+// The pictures' canvases, drawn in code so the gallery needs no image files:
+// rings, stripes, a checkerboard, a sunset, a lettering and a Mondrian.
+std::shared_ptr<const RgbImage> painting(int kind) {
+  auto img = std::make_shared<RgbImage>(160, 104);
+  for (int y = 0; y < img->height; ++y)
+    for (int x = 0; x < img->width; ++x) {
+      uint8_t* p = img->px(x, y);
+      const double u = (x + 0.5) / img->width, v = (y + 0.5) / img->height;
+      glm::dvec3 c{0.9, 0.9, 0.85};
+      switch (kind % 6) {
+        case 0: c = std::fmod(std::hypot(u - 0.5, (v - 0.5) * 0.65) * 14, 1.0) < 0.5 ? glm::dvec3(0.8, 0.15, 0.1) : glm::dvec3(0.95, 0.85, 0.3); break;
+        case 1: c = std::fmod((u + v) * 8, 1.0) < 0.5 ? glm::dvec3(0.1, 0.3, 0.7) : glm::dvec3(0.9, 0.9, 0.95); break;
+        case 2: c = ((x / 20) + (y / 13)) % 2 ? glm::dvec3(0.05, 0.05, 0.05) : glm::dvec3(0.95, 0.95, 0.9); break;
+        case 3: c = std::hypot(u - 0.5, v - 0.55) < 0.15 ? glm::dvec3(1, 0.85, 0.3) : glm::dvec3(0.9 - 0.5 * v, 0.35 + 0.2 * v, 0.3 + 0.5 * v); break;
+        case 4: c = glm::dvec3(0.15, 0.45, 0.25); break;
+        default: c = u < 0.3 ? (v < 0.6 ? glm::dvec3(0.85, 0.1, 0.1) : glm::dvec3(0.95, 0.95, 0.9))
+                             : (v < 0.35 ? glm::dvec3(0.95, 0.95, 0.9) : (u > 0.75 ? glm::dvec3(0.1, 0.2, 0.7) : glm::dvec3(0.95, 0.85, 0.1)));
+          if (std::abs(u - 0.3) < 0.015 || std::abs(v - 0.35) < 0.02 || std::abs(u - 0.75) < 0.015) c = glm::dvec3(0.05);
+      }
+      p[0] = static_cast<uint8_t>(c.r * 255);
+      p[1] = static_cast<uint8_t>(c.g * 255);
+      p[2] = static_cast<uint8_t>(c.b * 255);
+    }
+  if (kind % 6 == 4)
+    draw_text("ARP", 30, 28, 7, [&](int x, int y) {
+      if (x >= 0 && y >= 0 && x < img->width && y < img->height) {
+        uint8_t* q = img->px(x, y);
+        q[0] = 240, q[1] = 230, q[2] = 180;
+      }
+    });
+  return img;
+}
 
 // A wall from a to b (on the floor plane, y = 0) with an optional centred doorway.
 void add_wall(Scene& s, const std::string& name, glm::dvec2 a, glm::dvec2 b, bool door, const Material& m) {
@@ -49,8 +92,10 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
   s.name = "gallery";
   s.extent_min = {-kRoom / 2 - 1, -1, -kRoom * (kRoomsZ - 0.5) - 1};
   s.extent_max = {kRoom * (kRoomsX - 0.5) + 1, kHeight + 1, kRoom / 2 + 1};
-  const Material wall{{0.85, 0.82, 0.75}, false}, floor{{0.45, 0.35, 0.25}, false}, ceiling{{0.95, 0.95, 0.95}, false};
-  const Material pillar{{0.7, 0.7, 0.72}, true}, plinth{{0.3, 0.3, 0.32}, false}, frame{{0.55, 0.4, 0.15}, false};
+  const Material wall = mat({0.85, 0.82, 0.75}, false), floor = mat({0.45, 0.35, 0.25}, false),
+                 ceiling = mat({0.95, 0.95, 0.95}, false);
+  const Material pillar = mat({0.7, 0.7, 0.72}, true), plinth = mat({0.3, 0.3, 0.32}, false),
+                 frame = mat({0.55, 0.4, 0.15}, false);
   const double x0 = -kRoom / 2, x1 = kRoom * (kRoomsX - 0.5), z0 = kRoom / 2, z1 = -kRoom * (kRoomsZ - 0.5);
   add_object(s, "floor", box({x1 - x0, 0.1, z0 - z1}), {(x0 + x1) / 2, -0.05, (z0 + z1) / 2}, floor);
   add_object(s, "ceiling", box({x1 - x0, 0.1, z0 - z1}), {(x0 + x1) / 2, kHeight + 0.05, (z0 + z1) / 2}, ceiling);
@@ -85,8 +130,9 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
         const glm::dvec3 p = c + glm::dvec3(dx, 1.7, k == 0 ? zwall : zwall);
         add_object(s, room + " frame", frame_mesh, p, frame);
         auto canvas = std::make_shared<Mesh>(make_quad(1.4, 0.9));
+        (void)picture_colors;
         SceneObject& o = add_object(s, room + " picture", canvas, p + glm::dvec3(0, 0, k == 0 ? -0.035 : 0.035),
-                                    {picture_colors[picture++ % 6], false});
+                                    mat({1, 1, 1}, false, painting(picture++)));
         o.rotation_deg.x = k == 0 ? 180 : 0;  // facing into the room
       }
       add_object(s, room + " plinth", plinth_mesh, c + glm::dvec3(0, 0.5, -1.5), plinth);
@@ -129,7 +175,7 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
       s.notes.push_back(std::string("exhibit ") + e.name + ": " + e.relative +
                         " not found (Debian packages glmark2-data, assimp-testmodels); a sphere stands in");
     }
-    SceneObject& o = add_object(s, std::string("exhibit ") + e.name, mesh, top, {e.color, true});
+    SceneObject& o = add_object(s, std::string("exhibit ") + e.name, mesh, top, mat(e.color, true));
     const double scale = o.model_bound.radius > 0 ? e.size / (2 * o.model_bound.radius) : 1.0;
     o.scale = glm::dvec3(scale);
     // Stand it on the plinth: its bound's lowest point at the plinth top.

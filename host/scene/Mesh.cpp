@@ -35,6 +35,11 @@ void check_mesh(const Mesh& m, const std::string& source) {
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
       throw InputError(source, "normal " + std::to_string(i), "is not finite");
   }
+  if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
+    throw InputError(source, "texture coordinates", "must be absent or one per vertex");
+  for (size_t i = 0; i < m.uvs.size(); ++i)
+    if (!std::isfinite(m.uvs[i].x) || !std::isfinite(m.uvs[i].y))
+      throw InputError(source, "texture coordinate " + std::to_string(i), "is not finite");
   for (size_t i = 0; i < m.indices.size(); ++i)
     if (m.indices[i] >= m.positions.size())
       throw InputError(source, "triangle " + std::to_string(i / 3),

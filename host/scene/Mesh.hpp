@@ -12,6 +12,7 @@ namespace arp::host {
 struct Mesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // empty, or one per position
+  std::vector<glm::dvec2> uvs;      // empty, or one per position: texture coordinates (v = 1 at the image's top)
   std::vector<uint32_t> indices;    // three per triangle
   size_t triangles() const { return indices.size() / 3; }
 };

@@ -47,8 +47,11 @@ Mesh import_model(const std::string& path) {
     const aiMesh* am = sc->mMeshes[k];
     if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;  // points and lines draw nothing
     const auto base = static_cast<uint32_t>(out.positions.size());
-    for (unsigned i = 0; i < am->mNumVertices; ++i)
+    for (unsigned i = 0; i < am->mNumVertices; ++i) {
       out.positions.push_back({am->mVertices[i].x, am->mVertices[i].y, am->mVertices[i].z});
+      const aiVector3D* uv = am->mTextureCoords[0];
+      out.uvs.push_back(uv ? glm::dvec2(uv[i].x, uv[i].y) : glm::dvec2(0.0));
+    }
     for (unsigned f = 0; f < am->mNumFaces; ++f) {
       const aiFace& face = am->mFaces[f];
       if (face.mNumIndices != 3) continue;

@@ -9,6 +9,7 @@ constexpr double kPi = 3.14159265358979323846;
 void add_quad(Mesh& m, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
   const auto base = static_cast<uint32_t>(m.positions.size());
   m.positions.insert(m.positions.end(), {a, b, c, d});
+  m.uvs.insert(m.uvs.end(), {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
   m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
 }
 }  // namespace
@@ -42,6 +43,7 @@ Mesh make_cylinder(double r, double height, int n) {
     const glm::dvec3 p0{r * std::cos(a0), 0, -r * std::sin(a0)}, p1{r * std::cos(a1), 0, -r * std::sin(a1)};
     add_quad(m, p0 + glm::dvec3(0, y0, 0), p1 + glm::dvec3(0, y0, 0), p1 + glm::dvec3(0, y1, 0), p0 + glm::dvec3(0, y1, 0));
   }
+  m.uvs.clear();  // no texture coordinates on cylinders
   // Caps as fans.
   for (const double y : {y0, y1}) {
     const auto c = static_cast<uint32_t>(m.positions.size());

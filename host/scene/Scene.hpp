@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "Mesh.hpp"
+#include "host/cubemap/CubeMapImages.hpp"
 
 namespace arp::host {
 
 struct Material {
   glm::dvec3 color{0.8, 0.8, 0.8};  // linear 0..1
   bool smooth = false;               // Gouraud (vertex normals) instead of flat
+  std::shared_ptr<const RgbImage> texture;  // multiplies the colour where the mesh has texture coordinates
 };
 
 struct Animation {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "ModelImport.hpp"
+#include "host/cubemap/ImageFiles.hpp"
 #include "Primitives.hpp"
 #include "common/InputError.hpp"
 
@@ -94,6 +95,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
   top.finish();
   if (!objs || !objs->is_array()) throw InputError(source, "objects", "must be an array (it may be empty)");
   std::map<std::string, std::shared_ptr<const Mesh>> models;  // one import per file
+  std::map<std::string, std::shared_ptr<const RgbImage>> textures;
   for (size_t i = 0; i < objs->size(); ++i) {
     Fields o((*objs)[i], source, "objects[" + std::to_string(i) + "]");
     std::shared_ptr<const Mesh> mesh;
@@ -126,6 +128,15 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
     const std::string shading = o.text("shading", "flat");
     if (shading != "flat" && shading != "gouraud") o.fail("shading", "must be flat or gouraud");
     mat.smooth = shading == "gouraud";
+    const std::string texture = o.text("texture", "");
+    if (!texture.empty()) {
+      if (mesh->uvs.empty()) o.fail("texture", "this shape has no texture coordinates (quads, boxes and models with them do)");
+      std::string file = texture;
+      if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
+      auto it = textures.find(file);
+      if (it == textures.end()) it = textures.emplace(file, std::make_shared<RgbImage>(read_rgb8(file))).first;
+      mat.texture = it->second;
+    }
     SceneObject& so = add_object(s, o.text("name", "object " + std::to_string(i)), mesh,
                                  o.vec3("position", {0, 0, 0}, -1e6, 1e6), mat);
     so.rotation_deg = o.vec3("rotation_deg", {0, 0, 0}, -3600, 3600);
