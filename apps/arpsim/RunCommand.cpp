@@ -155,8 +155,6 @@ int run(const RunArgs& a) {
   std::unique_ptr<host::Scene> scene;
   std::unique_ptr<host::HostSimulation> hostsim;
   if (walk) {
-    if (fid != scm::Fidelity::Functional)
-      throw InputError("--walk", "", "the host renders between frames at the functional level only (for now)");
     scene = std::make_unique<host::Scene>(a.cubemap.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.cubemap.scene));
     for (const auto& n : scene->notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());
     host::PriorityConfig pc;

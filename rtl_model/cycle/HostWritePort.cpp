@@ -159,11 +159,17 @@ void BufferSwapper::tick(int64_t cycle) {
   if (sched_.swap_cycle(f) != cycle) return;
   next_swap_ = sched_.swap_cycle(f + 1);
   swap_strobe = true;
+  if (hook_ && f + 1 < hook_end_) {  // the host model updates the memories in this blank, before the next frame
+    hook_(f + 1, static_cast<double>(timing_.cycles_to_ps(timing_.frame_start_cycle(f + 1))) * 1e-12);
+    ++host_calls_;
+  }
   const int64_t now = timing_.cycles_to_ps(cycle);
   for (int e = 0; e < mem_.eyes(); ++e)
     for (int m = 0; m < mem_.count(); ++m) {
       dp::DisplayMemoryBank& b = mem_.bank(e, m);
-      if (!b.committed() || !host_ || host_->commit_ps(e, m) >= now) continue;
+      // Only what the write port committed, strictly before this blank (a host
+      // model's own commits are its to swap).
+      if (!b.committed() || !host_ || host_->commit_ps(e, m) == kNever || host_->commit_ps(e, m) >= now) continue;
       b.vblank();
       ++swaps_;
       front_select ^= 1u << (e * mem_.count() + m);

@@ -7,6 +7,7 @@
 // vertical blank strictly after the commit.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -104,6 +105,14 @@ class BufferSwapper {
   // Call every pixel clock before the memories are read; swaps at swap cycles.
   void tick(int64_t cycle);
   int64_t swaps() const { return swaps_; }
+  // Changes to the front buffers so far: swaps and host-model calls (FrameSpeculation's check).
+  int64_t generation() const { return swaps_ + host_calls_; }
+  // A host model acting at each vertical blank before frames up to `end_frame`
+  // (exclusive): called with the next frame and its start in seconds.
+  void set_host_model(std::function<void(int64_t, double)> hook, int64_t end_frame) {
+    hook_ = std::move(hook);
+    hook_end_ = end_frame;
+  }
   // Traced: which buffer of each bank is in front (bit per bank), pulsed swap strobe.
   uint32_t front_select = 0;
   bool swap_strobe = false;
@@ -113,7 +122,9 @@ class BufferSwapper {
   const HostWritePort* host_;
   dp::VideoTiming timing_;
   dp::PipelineSchedule sched_;
-  int64_t swaps_ = 0;
+  int64_t swaps_ = 0, host_calls_ = 0;
+  std::function<void(int64_t, double)> hook_;
+  int64_t hook_end_ = 0;
   int64_t next_swap_ = std::numeric_limits<int64_t>::min(), last_cycle_ = std::numeric_limits<int64_t>::max();
 };
 

@@ -25,7 +25,9 @@ PipelineKernels::PipelineKernels(const TimedInputs& in)
       stalls_(in.stalls),
       any_stalls_(!in.stalls.empty()),
       orientation_(in.orientation),
-      rotate_to_scanout_(scan.schedule().stage_to_scanout(dp::Stage::Rotate)) {}
+      rotate_to_scanout_(scan.schedule().stage_to_scanout(dp::Stage::Rotate)) {
+  if (in.before_frame) swapper.set_host_model(in.before_frame, in.first_frame + in.frames);
+}
 
 void PipelineKernels::set_speculation(bool on) {
   if (!on) spec_.reset();
@@ -45,7 +47,7 @@ bool PipelineKernels::speculate_rotate(const LensToken& t, int64_t c, RotatedTok
     ++spec_->fallbacks;
     return false;
   }
-  spec_->frame(t.slot.frame, swapper.swaps());  // rendered on the frame's first pixel
+  spec_->frame(t.slot.frame, swapper.generation());  // rendered on the frame's first pixel
   o.slot = t.slot;
   o.slot.on_schedule = true;
   o.sample = latch.sample;

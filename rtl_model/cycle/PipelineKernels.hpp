@@ -36,8 +36,10 @@ struct TimedInputs {
   int64_t first_frame = 0, frames = 1;
   std::vector<StallWindow> stalls;              // cycle-accurate levels only
   FrameSink sink;
-  // Functional level only: called before each frame is rendered (frame, its
-  // start in seconds) -- a host model updating the memories between frames.
+  // A host model updating the memories between frames: called before each
+  // frame (the frame, its start in seconds) -- at the functional level before
+  // rendering it, at the timed levels at the start and then in the vertical
+  // blank before it (the buffer-swap clock), when no pixel is in flight.
   std::function<void(int64_t, double)> before_frame;
 };
 
@@ -110,7 +112,7 @@ class PipelineKernels {
         c, in, out,
         [this](const AddressToken& t, FetchToken& o) {
           if (t.slot.on_schedule) {
-            if (spec_->swaps_at_render(t.slot.frame) == swapper.swaps()) {
+            if (spec_->swaps_at_render(t.slot.frame) == swapper.generation()) {
               o.slot = t.slot;
               o.sample = t.sample;
               o.memories = o.taps = 0;  // no words travel with it

@@ -123,8 +123,6 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
     return run_functional(in, opt);
   }
   check_inputs(in, true);
-  if (in.before_frame)
-    throw InputError("host model", "", "a host that renders between frames runs at the functional level only (for now)");
   if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
   g_simulated = true;
   sc_set_time_resolution(1, SC_PS);
@@ -178,6 +176,11 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
     if (lt) lt->trace(tf);
   };
 
+  // The host model's state before the first frame (the timed levels call it in each later vertical blank).
+  if (in.before_frame) {
+    const dp::VideoTiming vt(in.config.timing);
+    in.before_frame(in.first_frame, static_cast<double>(vt.cycles_to_ps(vt.frame_start_cycle(in.first_frame))) * 1e-12);
+  }
   const auto t0 = Clock::now();
   auto advance_to = [](int64_t sim_ps) {
     const sc_time target = sc_time::from_value(static_cast<sc_time::value_type>(sim_ps));
