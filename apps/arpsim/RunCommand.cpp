@@ -299,7 +299,8 @@ int run(const RunArgs& a) {
     double max_px = 0;
     for (size_t i = 0; i < scene->objects.size(); ++i) {
       const auto& o = scene->objects[i];
-      const int m = hostsim->scheduler().memory_of(i);
+      const int m = hostsim->shown_in(i);
+      if (m < 0) continue;
       const double then = hostsim->rendered_at(m);
       if (!std::isfinite(then)) continue;
       const glm::dvec3 now_p = o.world_bound(tm).center;

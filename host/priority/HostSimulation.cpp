@@ -24,10 +24,14 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       rendered_at_(static_cast<size_t>(mem.count()), std::numeric_limits<double>::quiet_NaN()),
       pending_at_(rendered_at_.size()),
       front_ids_(from_.size(), std::vector<FaceImage>(6)),
-      pending_ids_(from_.size(), std::vector<FaceImage>(6)) {}
+      pending_ids_(from_.size(), std::vector<FaceImage>(6)),
+      shown_objects_(static_cast<size_t>(mem.count())),
+      pending_objects_(static_cast<size_t>(mem.count())),
+      shown_memory_(scene.objects.size(), -1) {}
 
 void HostSimulation::prime(double t) {
   sched_.assign(walk_.position(t), walk_.speed(), t);
+  sched_.settle();
   for (int m = 0; m < mem_.count(); ++m) {
     const std::vector<size_t> objs = sched_.objects_in(m);
     for (int e = 0; e < mem_.eyes(); ++e) {
@@ -45,6 +49,8 @@ void HostSimulation::prime(double t) {
       from_[static_cast<size_t>(m * 2 + e)] = eye;
     }
     rendered_at_[static_cast<size_t>(m)] = t;
+    shown_objects_[static_cast<size_t>(m)] = objs;
+    for (size_t i : objs) shown_memory_[i] = m;
   }
 }
 
@@ -59,20 +65,35 @@ void HostSimulation::before_frame(int64_t f, double t) {
       std::swap(front_ids_[static_cast<size_t>(m * 2 + e)], pending_ids_[static_cast<size_t>(m * 2 + e)]);
     }
     rendered_at_[static_cast<size_t>(m)] = pending_at_[static_cast<size_t>(m)];
+    shown_objects_[static_cast<size_t>(m)] = pending_objects_[static_cast<size_t>(m)];
+    for (size_t i : shown_objects_[static_cast<size_t>(m)]) shown_memory_[i] = m;
     p.swap_frame = -1;
   }
   const glm::dvec3 head_pos = walk_.position(t);
-  const glm::dquat q = head_(t);
   sched_.assign(head_pos, walk_.speed(), t);
-  for (int m = 0; m < mem_.count(); ++m) {
-    if (f % sched_.frames_per_update(m) != 0) continue;
-    if (baseline_ && m > 0) continue;  // the baseline uses memory 0 only
+  const int N = mem_.count();
+  std::vector<char> render(static_cast<size_t>(N), 0), free(static_cast<size_t>(N), 0), moved(static_cast<size_t>(N), 0);
+  for (int m = 0; m < N; ++m) {
+    free[static_cast<size_t>(m)] = pending_[static_cast<size_t>(m)].swap_frame < 0;
+    const bool due = f % sched_.frames_per_update(m) == 0 && !(baseline_ && m > 0);
+    if (due && !free[static_cast<size_t>(m)]) ++load_[static_cast<size_t>(m)].skipped;  // its last image is not even on screen yet
+    render[static_cast<size_t>(m)] = due && free[static_cast<size_t>(m)];
+  }
+  // An object changes memory only when both memories can render now: the
+  // one it leaves and the one it joins re-render together and swap together,
+  // so it is never on screen twice, nor missing.
+  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+    const int from = sched_.memory_of(i), to = sched_.belongs_in(i);
+    if (from == to || !free[static_cast<size_t>(from)] || !free[static_cast<size_t>(to)]) continue;
+    sched_.move(i);
+    render[static_cast<size_t>(from)] = render[static_cast<size_t>(to)] = 1;
+    moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(to)] = 1;
+  }
+  int64_t handover_swap = -1;
+  for (int m = 0; m < N; ++m) {
+    if (!render[static_cast<size_t>(m)]) continue;
     MemoryLoad& L = load_[static_cast<size_t>(m)];
     PendingImage& p = pending_[static_cast<size_t>(m)];
-    if (p.swap_frame >= 0) {  // its last image is not even on screen yet
-      ++L.skipped;
-      continue;
-    }
     // The engine renders memories one after another, lowest (fastest) first.
     const double start = std::max(t, engine_free_);
     const std::vector<size_t> objs = sched_.objects_in(m);
@@ -94,19 +115,23 @@ void HostSimulation::before_frame(int64_t f, double t) {
       pending_from_[static_cast<size_t>(m * 2 + e)] = eye;
     }
     pending_at_[static_cast<size_t>(m)] = start;
+    pending_objects_[static_cast<size_t>(m)] = objs;
     const double cost = engine_.seconds(sum);
     engine_free_ = start + cost;
     // The first vertical blank strictly after the render is done.
     p.done_s = engine_free_;
     p.swap_frame = static_cast<int64_t>(std::floor(engine_free_ * display_hz_ + 1e-9)) + 1;
     if (p.swap_frame <= f) p.swap_frame = f + 1;
+    if (moved[static_cast<size_t>(m)]) handover_swap = std::max(handover_swap, p.swap_frame);
     ++L.updates;
     L.objects += sum.objects;
     L.triangles += sum.triangles;
     L.texels += sum.texels_filled;
     L.busy_s += cost;
   }
-  (void)q;
+  // Memories exchanging objects swap at the same blank: the last of them to finish.
+  for (int m = 0; m < N; ++m)
+    if (moved[static_cast<size_t>(m)]) pending_[static_cast<size_t>(m)].swap_frame = handover_swap;
 }
 
 int64_t HostSimulation::full_render_triangles(double t) const {

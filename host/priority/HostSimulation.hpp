@@ -56,6 +56,10 @@ class HostSimulation {
     return f.object.empty() ? 0u : f.object[static_cast<size_t>(y) * static_cast<size_t>(f.size) + static_cast<size_t>(x)];
   }
   double rendered_at(int m) const { return rendered_at_[static_cast<size_t>(m)]; }
+  // The objects memory m's image on screen was rendered with.
+  const std::vector<size_t>& shown_objects(int m) const { return shown_objects_[static_cast<size_t>(m)]; }
+  // The memory whose image on screen shows object i (-1 before the first render).
+  int shown_in(size_t object) const { return shown_memory_[object]; }
 
  private:
   const Scene& scene_;
@@ -72,6 +76,8 @@ class HostSimulation {
   std::vector<glm::dvec3> from_, pending_from_;
   std::vector<double> rendered_at_, pending_at_;
   std::vector<std::vector<FaceImage>> front_ids_, pending_ids_;  // per memory and eye: visible objects
+  std::vector<std::vector<size_t>> shown_objects_, pending_objects_;  // per memory: the objects its image holds
+  std::vector<int> shown_memory_;  // per object
   double engine_free_ = -1e300;
 };
 

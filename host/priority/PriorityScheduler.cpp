@@ -12,7 +12,8 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
     : scene_(scene),
       cfg_(cfg),
       threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : (kPi / 2) / face_size),
-      memory_(scene.objects.size(), 0) {}
+      memory_(scene.objects.size(), 0),
+      desired_(scene.objects.size(), 0) {}
 
 void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double t) {
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -28,10 +29,8 @@ void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double 
       const double p = v.period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
     }
-    if (m != memory_[i] && assigned_) ++moves_;
-    memory_[i] = m;
+    desired_[i] = m;
   }
-  assigned_ = true;
 }
 
 std::vector<size_t> PriorityScheduler::objects_in(int m) const {

@@ -1,9 +1,12 @@
 // Object-level priority rendering (Regan & Pose): N display memories updated
 // at harmonic rates of the display (60, 30, 15, 7.5 Hz by default); each
-// object goes to the slowest memory whose update period is within its
+// object belongs in the slowest memory whose update period is within its
 // validity period (memory 0 if none is), so objects whose image stays right
-// longer are rendered less often. Every object is in exactly one memory at
-// any time (tested). The baseline renders everything into memory 0 every frame.
+// longer are rendered less often. assign() works out where each object
+// belongs; an object actually moves (move()) when the host re-renders both
+// memories together, so it is never shown by two memories, nor by none
+// (HostSimulation; tested). The baseline renders everything into memory 0
+// every frame.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -29,9 +32,17 @@ class PriorityScheduler {
   double period_s(int m) const { return frames_per_update(m) / cfg_.display_hz; }
   double threshold_rad() const { return threshold_; }
 
-  // Re-sorts every object for the user at `eye` moving at `user_speed` at time t.
+  // Works out where every object belongs for the user at `eye` moving at `user_speed` at time t.
   void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
-  int memory_of(size_t object) const { return memory_[object]; }
+  int memory_of(size_t object) const { return memory_[object]; }    // where it is
+  int belongs_in(size_t object) const { return desired_[object]; }  // where it should go
+  void move(size_t object) {
+    if (memory_[object] != desired_[object]) ++moves_;
+    memory_[object] = desired_[object];
+  }
+  void settle() {  // every object where it belongs (before a run)
+    for (size_t i = 0; i < memory_.size(); ++i) memory_[i] = desired_[i];
+  }
   // The objects currently in memory m, in scene order.
   std::vector<size_t> objects_in(int m) const;
   int64_t moves() const { return moves_; }  // objects promoted or demoted so far
@@ -40,9 +51,8 @@ class PriorityScheduler {
   const Scene& scene_;
   PriorityConfig cfg_;
   double threshold_;
-  std::vector<int> memory_;
+  std::vector<int> memory_, desired_;
   int64_t moves_ = 0;
-  bool assigned_ = false;
 };
 
 }  // namespace arp::host
