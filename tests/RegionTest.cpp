@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "common/InputError.hpp"
+#include "host/priority/HostSimulation.hpp"
 #include "host/regions/RegionScheduler.hpp"
 #include "host/regions/Segmentation.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
@@ -145,4 +146,35 @@ TEST(Segmentation, TheGalleryIsCutIntoRegions) {
   size_t tris = 0;
   for (const auto& o : seg.scene.objects) tris += o.mesh->triangles();
   EXPECT_GE(tris, gal.triangles());
+}
+
+// Region priority rendering in the host simulation: walking across regions
+// re-assigns them, and on screen every segment is in exactly one memory's
+// image at every frame.
+TEST(RegionScheduler, InTheHostEveryRegionIsInOneMemoryWhileWalkingAcross) {
+  const Scene gal = make_gallery({"/nonexistent"});
+  const RegionGrid g(gal.extent_min, gal.extent_max, 2.0, false, "gallery");
+  Segmented seg = segment_scene(gal, g, true);
+  RegionConfig rc;
+  rc.region_size_m = 2.0;
+  rc.margin_m = 0.3;
+  rc.threshold_rad = 1.0 * 3.14159265358979 / 180;
+  const WalkPath walk({{0, 1.6, 1.5}, {8, 1.6, 1.5}}, 4.0, "walk");
+  RegionScheduler rs(g, rc, 64, walk.position(0), "test");
+  dp::MemoryConfig mc;
+  mc.face_size = 64;
+  dp::DisplayMemorySet mem(mc, 2);
+  PriorityConfig pc;
+  HostSimulation h(seg.scene, pc, RenderEngine{}, walk, [](double) { return glm::dquat(1, 0, 0, 0); }, mem, 0.064, 60.0);
+  h.use_regions(&rs, seg.region);
+  h.prime(0);
+  for (int f = 0; f < 60; ++f) {
+    h.before_frame(f, f / 60.0);
+    std::vector<int> seen(seg.scene.objects.size(), 0);
+    for (int m = 0; m < 4; ++m)
+      for (size_t i : h.shown_objects(m)) ++seen[i];
+    for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "segment " << i << " frame " << f;
+  }
+  EXPECT_GE(rs.reassignments(), 2);  // 4 m/s for a second across 2 m regions
+  EXPECT_GT(h.load()[0].updates, 50);  // the user's region: every frame
 }

@@ -23,6 +23,7 @@
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/error/FrameError.hpp"
 #include "host/priority/HostSimulation.hpp"
+#include "host/regions/Segmentation.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
 #include <glm/gtc/quaternion.hpp>
@@ -48,6 +49,8 @@ struct RunArgs {
   double walk_speed = 0, threshold_deg = 0;
   bool baseline = false;
   int64_t error_every = 10;
+  double region_size = 0, margin = 0.5;
+  bool no_segmentation = false;
   host::RenderEngine engine;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
@@ -154,6 +157,9 @@ int run(const RunArgs& a) {
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
   std::unique_ptr<host::Scene> scene;
   std::unique_ptr<host::HostSimulation> hostsim;
+  std::unique_ptr<host::RegionGrid> grid;
+  std::unique_ptr<host::RegionScheduler> regions;
+  host::Segmented segmented;
   if (walk) {
     scene = std::make_unique<host::Scene>(a.cubemap.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.cubemap.scene));
     for (const auto& n : scene->notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());
@@ -171,7 +177,21 @@ int run(const RunArgs& a) {
       const dp::Quat& q = stream[stream.index_at(static_cast<int64_t>(std::llround(tt * 1e12)))].q;
       return glm::dquat(q.w, q.x, q.y, q.z);
     };
+    if (a.region_size != 0) {
+      // Region priority rendering: the world in columns, large objects cut along them.
+      grid = std::make_unique<host::RegionGrid>(scene->extent_min, scene->extent_max, a.region_size, false, "--regions");
+      segmented = host::segment_scene(*scene, *grid, !a.no_segmentation);
+      scene = std::make_unique<host::Scene>(std::move(segmented.scene));
+      host::RegionConfig rc;
+      rc.region_size_m = a.region_size;
+      rc.margin_m = a.margin;
+      rc.memories = c.memory.count;
+      rc.threshold_rad = pc.threshold_rad;
+      regions = std::make_unique<host::RegionScheduler>(*grid, rc, c.memory.face_size,
+                                                         walk->position(static_cast<double>(start_ps) * 1e-12), "--margin");
+    }
     hostsim = std::make_unique<host::HostSimulation>(*scene, pc, a.engine, *walk, head, mem, a.cubemap.ipd_m, t.refresh_hz());
+    if (regions) hostsim->use_regions(regions.get(), segmented.region);
     hostsim->prime(static_cast<double>(start_ps) * 1e-12);
     source = "scene " + scene->name + " (" + std::to_string(scene->objects.size()) + " objects, " +
              std::to_string(scene->triangles()) + " triangles), host rendering " + (a.baseline ? "everything every frame (baseline)" : "by priority");
@@ -513,6 +533,7 @@ int run(const RunArgs& a) {
                         {"engine_busy_s", L.busy_s}});
       }
       r["host"] = {{"threshold_deg", hostsim->scheduler().threshold_rad() * 180.0 / 3.14159265358979323846},
+                   {"mode", regions ? "regions" : (a.baseline ? "baseline" : "objects")},
                    {"baseline", a.baseline},
                    {"engine", {{"triangles_per_s", a.engine.triangles_per_s}, {"pixels_per_s", a.engine.pixels_per_s},
                                {"object_setup_s", a.engine.object_setup_s}}},
@@ -521,6 +542,15 @@ int run(const RunArgs& a) {
                    {"triangles_per_s", static_cast<double>(tris) / secs},
                    {"full_render_every_frame_triangles_per_s", static_cast<double>(baseline_triangles) / secs},
                    {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0}};
+      if (regions)
+        r["host"]["regions"] = {{"size_m", a.region_size},
+                                {"margin_m", a.margin},
+                                {"columns", grid->count()},
+                                {"segmentation", !a.no_segmentation},
+                                {"objects_cut", segmented.objects_cut},
+                                {"segments", segmented.segments},
+                                {"objects_after_segmentation", scene->objects.size()},
+                                {"reassignments", regions->reassignments()}};
       if (!psnrs.empty()) {
         double mean = 0;
         for (double p : psnrs) mean += p;
@@ -580,6 +610,12 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--error-every", a->error_every,
                   "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
       ->capture_default_str();
+  cmd->add_option("--regions", a->region_size,
+                  "With --walk: region priority rendering with square columns of this size, metres (0: object-level)")
+      ->capture_default_str();
+  cmd->add_option("--margin", a->margin, "--regions: how far into a new region before regions are re-assigned, metres")
+      ->capture_default_str();
+  cmd->add_flag("--no-segmentation", a->no_segmentation, "--regions: do not cut large objects along region boundaries");
   cmd->add_flag("--baseline", a->baseline, "Host baseline: everything in memory 0, rendered every frame");
   cmd->add_option("--threshold-deg", a->threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
       ->capture_default_str();

@@ -29,11 +29,25 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       pending_objects_(static_cast<size_t>(mem.count())),
       shown_memory_(scene.objects.size(), -1) {}
 
+void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region) {
+  regions_ = regions;
+  object_region_ = std::move(object_region);
+}
+
+std::vector<size_t> HostSimulation::objects_for(int m) const {
+  if (!regions_) return sched_.objects_in(m);
+  std::vector<size_t> out;
+  for (size_t i = 0; i < object_region_.size(); ++i)
+    if (regions_->memory_of_region(object_region_[i]) == m) out.push_back(i);
+  return out;
+}
+
 void HostSimulation::prime(double t) {
   sched_.assign(walk_.position(t), walk_.speed(), t);
   sched_.settle();
   for (int m = 0; m < mem_.count(); ++m) {
-    const std::vector<size_t> objs = sched_.objects_in(m);
+    if (regions_) regions_->rendered(m, walk_.position(t));
+    const std::vector<size_t> objs = objects_for(m);
     for (int e = 0; e < mem_.eyes(); ++e) {
       const glm::dvec3 eye = eye_position(walk_.position(t), head_(t), e, mem_.eyes(), ipd_);
       dp::DisplayMemoryBank& bank = mem_.bank(e, m);
@@ -73,8 +87,24 @@ void HostSimulation::before_frame(int64_t f, double t) {
   sched_.assign(head_pos, walk_.speed(), t);
   const int N = mem_.count();
   std::vector<char> render(static_cast<size_t>(N), 0), free(static_cast<size_t>(N), 0), moved(static_cast<size_t>(N), 0);
+  bool all_free = true;
   for (int m = 0; m < N; ++m) {
     free[static_cast<size_t>(m)] = pending_[static_cast<size_t>(m)].swap_frame < 0;
+    all_free = all_free && free[static_cast<size_t>(m)];
+  }
+  if (regions_) {
+    // Regions: memories update on need; a re-assignment moves whole regions, all together.
+    const RegionScheduler::Step st = regions_->step(head_pos, all_free);
+    for (int m : st.update) {
+      if (!free[static_cast<size_t>(m)]) {
+        ++load_[static_cast<size_t>(m)].skipped;
+        continue;
+      }
+      render[static_cast<size_t>(m)] = 1;
+      moved[static_cast<size_t>(m)] = st.reassigned;
+    }
+  }
+  for (int m = 0; m < N && !regions_; ++m) {
     const bool due = f % sched_.frames_per_update(m) == 0 && !(baseline_ && m > 0);
     if (due && !free[static_cast<size_t>(m)]) ++load_[static_cast<size_t>(m)].skipped;  // its last image is not even on screen yet
     render[static_cast<size_t>(m)] = due && free[static_cast<size_t>(m)];
@@ -82,7 +112,7 @@ void HostSimulation::before_frame(int64_t f, double t) {
   // An object changes memory only when both memories can render now: the
   // one it leaves and the one it joins re-render together and swap together,
   // so it is never on screen twice, nor missing.
-  for (size_t i = 0; i < scene_.objects.size(); ++i) {
+  for (size_t i = 0; i < scene_.objects.size() && !regions_; ++i) {
     const int from = sched_.memory_of(i), to = sched_.belongs_in(i);
     if (from == to || !free[static_cast<size_t>(from)] || !free[static_cast<size_t>(to)]) continue;
     sched_.move(i);
@@ -96,7 +126,8 @@ void HostSimulation::before_frame(int64_t f, double t) {
     PendingImage& p = pending_[static_cast<size_t>(m)];
     // The engine renders memories one after another, lowest (fastest) first.
     const double start = std::max(t, engine_free_);
-    const std::vector<size_t> objs = sched_.objects_in(m);
+    const std::vector<size_t> objs = objects_for(m);
+    if (regions_) regions_->rendered(m, walk_.position(start));
     RenderStats sum;
     for (int e = 0; e < mem_.eyes(); ++e) {
       const glm::dvec3 eye = eye_position(walk_.position(start), head_(start), e, mem_.eyes(), ipd_);

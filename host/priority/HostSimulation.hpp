@@ -13,6 +13,7 @@
 #include "PriorityScheduler.hpp"
 #include "RenderCost.hpp"
 #include "host/motion/WalkPath.hpp"
+#include "host/regions/RegionScheduler.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
 
@@ -35,6 +36,12 @@ class HostSimulation {
   HostSimulation(const Scene& scene, const PriorityConfig& pc, const RenderEngine& engine, WalkPath walk,
                  std::function<glm::dquat(double)> head, dp::DisplayMemorySet& mem, double ipd_m,
                  double display_hz);
+
+  // Region priority rendering instead of object-level: each object of the
+  // (segmented) scene belongs to `object_region[i]`, whose memory the region
+  // scheduler decides; memories update on need; a re-assignment re-renders
+  // every memory it changes and swaps them together.
+  void use_regions(RegionScheduler* regions, std::vector<int> object_region);
 
   // The state before the run: every memory rendered at t_s and on screen
   // (a scene already loaded; not counted as load).
@@ -78,6 +85,9 @@ class HostSimulation {
   std::vector<std::vector<FaceImage>> front_ids_, pending_ids_;  // per memory and eye: visible objects
   std::vector<std::vector<size_t>> shown_objects_, pending_objects_;  // per memory: the objects its image holds
   std::vector<int> shown_memory_;  // per object
+  RegionScheduler* regions_ = nullptr;
+  std::vector<int> object_region_;
+  std::vector<size_t> objects_for(int m) const;
   double engine_free_ = -1e300;
 };
 

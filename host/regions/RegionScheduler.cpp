@@ -32,14 +32,14 @@ double RegionScheduler::threshold_distance(int m) const {
   return d * std::sqrt(2.0 * (1.0 - std::cos(threshold_)));
 }
 
-RegionScheduler::Step RegionScheduler::step(const glm::dvec3& p) {
+RegionScheduler::Step RegionScheduler::step(const glm::dvec3& p, bool can_reassign) {
   Step s;
   const int N = cfg_.memories;
   std::vector<char> need(static_cast<size_t>(N), 0);
   for (int m = 0; m < N; ++m) need[static_cast<size_t>(m)] = glm::length(p - last_[static_cast<size_t>(m)]) > threshold_distance(m);
   const RegionIndex here = grid_.region_of(p);
   const bool pending = here != center_ && grid_.depth_inside(p, here) >= cfg_.margin_m;
-  if (pending && need[static_cast<size_t>(N - 1)]) {
+  if (pending && need[static_cast<size_t>(N - 1)] && can_reassign) {
     // Re-assign: every memory whose set of regions changes updates now, together.
     const std::vector<int> before = memory_;
     assign_from(here);

@@ -41,7 +41,8 @@ class RegionScheduler {
     bool reassigned = false;  // the ring centre moved: the memories in `update` swap together
   };
   // The user at p: which memories must update now. The caller renders them and calls rendered().
-  Step step(const glm::dvec3& p);
+  // `can_reassign`: every memory could render now (a re-assignment waits otherwise).
+  Step step(const glm::dvec3& p, bool can_reassign = true);
   void rendered(int m, const glm::dvec3& p) { last_[static_cast<size_t>(m)] = p; }
   int64_t reassignments() const { return reassignments_; }
 
