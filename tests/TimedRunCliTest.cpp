@@ -204,3 +204,25 @@ TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
     EXPECT_EQ(rep[level]["host"]["memories"], rep["functional"]["host"]["memories"]) << level;
   }
 }
+
+// Region priority rendering from the command line: the report has the
+// regions, segments, re-assignments and the tearing measure; bad region
+// settings are refused before anything runs.
+TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 3" +
+                             " --regions 4 --warp --set memory.face_size=128 --report " + d.file("r.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = load(d.file("r.json"));
+  EXPECT_EQ(j["host"]["mode"], "regions");
+  EXPECT_GT(j["host"]["regions"]["segments"].get<int>(), j["host"]["regions"]["objects_cut"].get<int>());
+  EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
+  EXPECT_GE(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
+  for (const std::string& bad : std::vector<std::string>{" --regions -1", " --regions 1000", " --regions 4 --margin 3",
+                                                         " --warp", " --regions 4 --warp --warp-falloff 9"}) {
+    const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --scene gallery --walk gallery" + bad + " --report " +
+                               d.file("bad.json"));
+    EXPECT_EQ(e.status, 2) << bad << "\n" << e.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("bad.json"))) << bad;
+  }
+}

@@ -4,6 +4,7 @@
 // images, a JSON report, a per-frame CSV, optionally each pixel's photon time
 // and a VCD waveform with a matching GTKWave save file.
 #include <algorithm>
+#include <numeric>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -49,8 +50,8 @@ struct RunArgs {
   double walk_speed = 0, threshold_deg = 0;
   bool baseline = false;
   int64_t error_every = 10;
-  double region_size = 0, margin = 0.5;
-  bool no_segmentation = false;
+  double region_size = 0, margin = 0.5, warp_falloff = 0;
+  bool no_segmentation = false, warp = false;
   host::RenderEngine engine;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
@@ -191,7 +192,13 @@ int run(const RunArgs& a) {
                                                          walk->position(static_cast<double>(start_ps) * 1e-12), "--margin");
     }
     hostsim = std::make_unique<host::HostSimulation>(*scene, pc, a.engine, *walk, head, mem, a.cubemap.ipd_m, t.refresh_hz());
-    if (regions) hostsim->use_regions(regions.get(), segmented.region);
+    if (regions) {
+      hostsim->use_regions(regions.get(), segmented.region);
+      if (!(a.warp_falloff >= 0) || a.warp_falloff > a.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
+      hostsim->use_warping(a.warp, a.warp_falloff > 0 ? a.warp_falloff : a.region_size / 2);
+    } else if (a.warp) {
+      throw InputError("--warp", "", "region warping needs --regions");
+    }
     hostsim->prime(static_cast<double>(start_ps) * 1e-12);
     source = "scene " + scene->name + " (" + std::to_string(scene->objects.size()) + " objects, " +
              std::to_string(scene->triangles()) + " triangles), host rendering " + (a.baseline ? "everything every frame (baseline)" : "by priority");
@@ -291,6 +298,7 @@ int run(const RunArgs& a) {
   }
   std::vector<double> psnrs;
   double worst_px = 0, worst_object_share = 0;
+  std::vector<int64_t> tears, gaps;
   // The pipeline's own addressing, to ask which object each display pixel shows.
   const dp::LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
   const dp::RotateParams rot(c.widths);
@@ -333,6 +341,8 @@ int run(const RunArgs& a) {
     // composited by depth across the memories) against the truth's.
     int64_t differ = 0, total = 0;
     const uint32_t empty = mem.format().empty_depth();
+    const int W = c.timing.h_active, H = c.timing.v_active;
+    std::vector<uint32_t> shown_px(static_cast<size_t>(W * H * c.timing.eyes)), truth_px(shown_px.size());
     for (int e = 0; e < c.timing.eyes; ++e)
       for (int y = 0; y < c.timing.v_active; ++y) {
         size_t held = SIZE_MAX;
@@ -357,12 +367,47 @@ int run(const RunArgs& a) {
               tf.object.empty() ? 0u : tf.object[static_cast<size_t>(ad.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(ad.x)];
           differ += shown != truth_object;
           ++total;
+          shown_px[static_cast<size_t>((e * H + y) * W + x)] = shown;
+          truth_px[static_cast<size_t>((e * H + y) * W + x)] = truth_object;
         }
       }
     const double object_share = total ? static_cast<double>(differ) / static_cast<double>(total) : 0.0;
     worst_object_share = std::max(worst_object_share, object_share);
+    // Tearing (regions with segmentation): within a pixel of where two pieces
+    // of one cut object meet in the truth, the pixel shows another object or
+    // the background.
+    int64_t tear = 0, gap = 0;
+    if (regions && !segmented.source.empty()) {
+      auto src = [&](uint32_t id) { return id == 0 ? SIZE_MAX : segmented.source[id - 1]; };
+      std::vector<char> seam(shown_px.size(), 0);
+      for (int e = 0; e < c.timing.eyes; ++e)
+        for (int y = 0; y < H; ++y)
+          for (int x = 0; x + 1 < W; ++x)
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}}) {
+              if (y + dy >= H) continue;
+              const size_t pa = static_cast<size_t>((e * H + y) * W + x), pb = static_cast<size_t>((e * H + y + dy) * W + x + dx);
+              // Two pieces of one cut object meeting, shown by different memories.
+              if (truth_px[pa] != truth_px[pb] && truth_px[pa] && truth_px[pb] && src(truth_px[pa]) == src(truth_px[pb]) &&
+                  hostsim->shown_in(truth_px[pa] - 1) != hostsim->shown_in(truth_px[pb] - 1)) {
+                for (int oy = -1; oy <= 1; ++oy)
+                  for (int ox = -1; ox <= 1; ++ox) {
+                    const int xx = x + ox, yy = y + oy;
+                    if (xx >= 0 && yy >= 0 && xx < W && yy < H) seam[static_cast<size_t>((e * H + yy) * W + xx)] = 1;
+                  }
+              }
+            }
+      for (size_t k = 0; k < seam.size(); ++k) {
+        if (!seam[k] || src(shown_px[k]) == src(truth_px[k])) continue;
+        ++tear;  // another object, or nothing
+        gap += shown_px[k] == 0 || src(shown_px[k]) != src(truth_px[k]) ? (shown_px[k] == 0 ? 1 : 0) : 0;
+      }
+    }
+    tears.push_back(tear);
+    gaps.push_back(gap);
     out["error"] = {{"psnr_db", std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0},
                     {"pixels_showing_another_object", object_share},
+                    {"tear_pixels", tear},
+                    {"tear_gap_pixels", gap},
                     {"mse", ie.mse},
                     {"pixels_differing", ie.differing},
                     {"max_displacement_px", max_px}};
@@ -550,7 +595,9 @@ int run(const RunArgs& a) {
                                 {"objects_cut", segmented.objects_cut},
                                 {"segments", segmented.segments},
                                 {"objects_after_segmentation", scene->objects.size()},
-                                {"reassignments", regions->reassignments()}};
+                                {"reassignments", regions->reassignments()},
+                                {"warping", a.warp},
+                                {"max_warp_displacement_px", hostsim->max_warp_rad() / px_rad}};
       if (!psnrs.empty()) {
         double mean = 0;
         for (double p : psnrs) mean += p;
@@ -558,7 +605,10 @@ int run(const RunArgs& a) {
                               {"mean_psnr_db", mean / static_cast<double>(psnrs.size())},
                               {"worst_psnr_db", *std::min_element(psnrs.begin(), psnrs.end())},
                               {"max_displacement_px", worst_px},
-                              {"worst_share_showing_another_object", worst_object_share}};
+                              {"worst_share_showing_another_object", worst_object_share},
+                              {"mean_tear_pixels", tears.empty() ? 0.0 : static_cast<double>(std::accumulate(tears.begin(), tears.end(), int64_t{0})) / static_cast<double>(tears.size())},
+                              {"max_tear_pixels", tears.empty() ? 0 : *std::max_element(tears.begin(), tears.end())},
+                              {"mean_tear_gap_pixels", gaps.empty() ? 0.0 : static_cast<double>(std::accumulate(gaps.begin(), gaps.end(), int64_t{0})) / static_cast<double>(gaps.size())}};
       }
     }
     write_text_atomic(a.report, r.dump(2) + "\n");
@@ -616,6 +666,8 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--margin", a->margin, "--regions: how far into a new region before regions are re-assigned, metres")
       ->capture_default_str();
   cmd->add_flag("--no-segmentation", a->no_segmentation, "--regions: do not cut large objects along region boundaries");
+  cmd->add_flag("--warp", a->warp, "--regions: warp the regions' edges toward slower neighbours (hides tearing)");
+  cmd->add_option("--warp-falloff", a->warp_falloff, "--warp: distance inside a region over which the warp fades, metres (0: half a region)");
   cmd->add_flag("--baseline", a->baseline, "Host baseline: everything in memory 0, rendered every frame");
   cmd->add_option("--threshold-deg", a->threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
       ->capture_default_str();

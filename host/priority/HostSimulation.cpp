@@ -137,6 +137,31 @@ void HostSimulation::before_frame(int64_t f, double t) {
         mem_.bank(e, m).clear_back();  // nothing assigned: the memory shows nothing
         mem_.bank(e, m).commit();
         for (auto& face : ids) face.object.clear();
+      } else if (regions_ && warp_) {
+        const RegionGrid& g = regions_->grid();
+        const glm::dvec3 now = walk_.position(start);
+        const VertexWarp warp = [&, m, now, eye](size_t i, const glm::dvec3& w) {
+          const RegionIndex r = g.unflat(object_region_[i]);
+          double best = 0;
+          glm::dvec3 shift(0.0);
+          const double x0 = g.boundary_x(r.x), z0 = g.boundary_z(r.z), sz = g.size();
+          const std::pair<RegionIndex, double> sides[4] = {{{r.x - 1, r.y, r.z}, w.x - x0}, {{r.x + 1, r.y, r.z}, x0 + sz - w.x},
+                                                           {{r.x, r.y, r.z - 1}, w.z - z0}, {{r.x, r.y, r.z + 1}, z0 + sz - w.z}};
+          for (const auto& [nb, dist] : sides) {
+            if (nb.x < 0 || nb.z < 0 || nb.x >= g.count_x() || nb.z >= g.count_z()) continue;
+            const int mn = regions_->memory_of_region(g.flat(nb));
+            if (mn <= m || render[static_cast<size_t>(mn)]) continue;  // toward slower memories not re-rendered now
+            const double wgt = std::max(0.0, 1.0 - std::max(0.0, dist) / falloff_);
+            if (wgt > best) {
+              best = wgt;
+              shift = wgt * (now - regions_->last_rendered(mn));
+            }
+          }
+          const double d = glm::length(w - eye);
+          if (d > 0) max_warp_rad_ = std::max(max_warp_rad_, glm::length(shift) / d);
+          return w + shift;
+        };
+        st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids, &warp);
       } else {
         st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids);
       }

@@ -42,6 +42,16 @@ class HostSimulation {
   // scheduler decides; memories update on need; a re-assignment re-renders
   // every memory it changes and swaps them together.
   void use_regions(RegionScheduler* regions, std::vector<int> object_region);
+  // Region warping (Chow 2005): when a memory renders, vertices near the edge
+  // of its regions toward a slower neighbouring memory's region move by the
+  // user's position now minus where that slower memory was rendered -- fully
+  // on the edge, falling off linearly to nothing at `falloff_m` inside.
+  void use_warping(bool on, double falloff_m) {
+    warp_ = on;
+    falloff_ = falloff_m;
+  }
+  // The largest vertex displacement warping has caused, in radians as seen from the eye.
+  double max_warp_rad() const { return max_warp_rad_; }
 
   // The state before the run: every memory rendered at t_s and on screen
   // (a scene already loaded; not counted as load).
@@ -86,6 +96,8 @@ class HostSimulation {
   std::vector<std::vector<size_t>> shown_objects_, pending_objects_;  // per memory: the objects its image holds
   std::vector<int> shown_memory_;  // per object
   RegionScheduler* regions_ = nullptr;
+  bool warp_ = false;
+  double falloff_ = 1.0, max_warp_rad_ = 0;
   std::vector<int> object_region_;
   std::vector<size_t> objects_for(int m) const;
   double engine_free_ = -1e300;

@@ -44,6 +44,9 @@ class RegionScheduler {
   // `can_reassign`: every memory could render now (a re-assignment waits otherwise).
   Step step(const glm::dvec3& p, bool can_reassign = true);
   void rendered(int m, const glm::dvec3& p) { last_[static_cast<size_t>(m)] = p; }
+  // Where the user was at memory m's last update.
+  const glm::dvec3& last_rendered(int m) const { return last_[static_cast<size_t>(m)]; }
+  const RegionGrid& grid() const { return grid_; }
   int64_t reassignments() const { return reassignments_; }
 
  private:

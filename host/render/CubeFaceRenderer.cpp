@@ -162,7 +162,8 @@ void FaceImage::reset(int s) {
 }
 
 RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector<size_t>& objects, double t,
-                                           const glm::dvec3& eye, int S, std::vector<FaceImage>& faces) const {
+                                           const glm::dvec3& eye, int S, std::vector<FaceImage>& faces,
+                                           const VertexWarp* warp) const {
   RenderStats st;
   faces.resize(6);
   std::vector<size_t> all;
@@ -208,6 +209,8 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
       world.resize(m.positions.size());
       for (size_t k = 0; k < m.positions.size(); ++k) world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
+      if (warp)
+        for (auto& w : world) w = (*warp)(i, w);
       const bool smooth = o.material.smooth && !m.normals.empty();
       const RgbImage* texture = o.material.texture && !m.uvs.empty() ? o.material.texture.get() : nullptr;
       if (smooth) {
@@ -272,10 +275,10 @@ RenderStats CubeFaceRenderer::count(const Scene& scene, const std::vector<size_t
 
 RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_t>& objects, double t,
                                      const glm::dvec3& eye, dp::DisplayMemoryBank& bank,
-                                     std::vector<FaceImage>* visible) const {
+                                     std::vector<FaceImage>* visible, const VertexWarp* warp) const {
   const dp::MemoryFormat& fmt = bank.format();
   std::vector<FaceImage> faces;
-  RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces);
+  RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces, warp);
   DepthCode dc = depth_;
   dc.bits = fmt.depth_bits;
   bank.clear_back();

@@ -20,6 +20,7 @@
 // A face no object's bounding sphere can reach is not rendered at all.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "DepthCode.hpp"
@@ -52,6 +53,9 @@ struct FaceImage {
   void reset(int s);
 };
 
+// Moves a world-space vertex of object i before it is drawn (region warping).
+using VertexWarp = std::function<glm::dvec3(size_t object, const glm::dvec3& world)>;
+
 class CubeFaceRenderer {
  public:
   explicit CubeFaceRenderer(DepthCode depth = {}, LightModel light = {}) : depth_(depth), light_(light) {}
@@ -60,11 +64,12 @@ class CubeFaceRenderer {
   // from `eye` into the bank's back buffer, which is cleared first; commits.
   // `visible`, if given, receives the six faces' visible objects (FaceImage::object; distance and colour left empty).
   RenderStats render(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
-                     dp::DisplayMemoryBank& bank, std::vector<FaceImage>* visible = nullptr) const;
+                     dp::DisplayMemoryBank& bank, std::vector<FaceImage>* visible = nullptr,
+                     const VertexWarp* warp = nullptr) const;
 
   // The same drawing into six float faces of any size (ground truth, tests).
   RenderStats render_faces(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
-                           int face_size, std::vector<FaceImage>& faces) const;
+                           int face_size, std::vector<FaceImage>& faces, const VertexWarp* warp = nullptr) const;
 
   // What render() would submit -- objects, triangles, faces -- without drawing (no fill count).
   RenderStats count(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye) const;
