@@ -4,6 +4,7 @@
 // images, a JSON report, a per-frame CSV, optionally each pixel's photon time
 // and a VCD waveform with a matching GTKWave save file.
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <cinttypes>
 #include <cmath>
@@ -43,7 +44,7 @@ struct RunArgs {
   CubeMapOptions cubemap;
   MotionOptions motion;
   std::string fidelity = "functional";
-  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us;
+  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us, host_csv;
   std::vector<std::string> stalls;
   bool no_speculation = false;
   std::string walk;
@@ -103,6 +104,7 @@ int run(const RunArgs& a) {
   if (a.first < 0 || a.first > 1'000'000'000) throw InputError("--first-frame", "", "must be 0 .. 1e9");
   if (a.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  if (!a.host_csv.empty() && (a.report.empty() || a.walk.empty())) throw InputError("--host-csv", "", "needs --walk and --report");
   if (!a.vcd.empty() && fid == scm::Fidelity::Functional)
     throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or rtl");
   if ((!a.vcd_lines.empty() || !a.vcd_time_us.empty()) && a.vcd.empty())
@@ -193,7 +195,7 @@ int run(const RunArgs& a) {
     }
     hostsim = std::make_unique<host::HostSimulation>(*scene, pc, a.engine, *walk, head, mem, a.cubemap.ipd_m, t.refresh_hz());
     if (regions) {
-      hostsim->use_regions(regions.get(), segmented.region);
+      hostsim->use_regions(regions.get(), segmented.region, segmented.span);
       if (!(a.warp_falloff >= 0) || a.warp_falloff > a.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
       hostsim->use_warping(a.warp, a.warp_falloff > 0 ? a.warp_falloff : a.region_size / 2);
     } else if (a.warp) {
@@ -278,9 +280,12 @@ int run(const RunArgs& a) {
   in.frames = a.frames;
   in.stalls = stalls;
   int64_t baseline_triangles = 0;
+  double host_wall_s = 0;  // our own host code: scheduling and rendering
   if (hostsim)
     in.before_frame = [&](int64_t frame, double tt) {
+      const auto w0 = std::chrono::steady_clock::now();
       hostsim->before_frame(frame, tt);
+      host_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
       baseline_triangles += hostsim->full_render_triangles(tt);
     };
   nlohmann::json frames = nlohmann::json::array();
@@ -586,7 +591,18 @@ int run(const RunArgs& a) {
                    {"object_moves", hostsim->scheduler().moves()},
                    {"triangles_per_s", static_cast<double>(tris) / secs},
                    {"full_render_every_frame_triangles_per_s", static_cast<double>(baseline_triangles) / secs},
-                   {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0}};
+                   {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0},
+                   {"host_wall_ms_per_frame", 1e3 * host_wall_s / static_cast<double>(a.frames)}};
+      if (!a.host_csv.empty()) {
+        std::string hc = "memory,updates,skipped_overload,update_rate_hz,objects_per_update,triangles_per_update,triangles_per_s,texels_per_s\n";
+        for (const auto& m : mems)
+          hc += std::to_string(m["memory"].get<int>()) + "," + std::to_string(m["updates"].get<int64_t>()) + "," +
+                std::to_string(m["skipped_overload"].get<int64_t>()) + "," + std::to_string(m["update_rate_hz"].get<double>()) +
+                "," + std::to_string(m["objects_per_update"].get<double>()) + "," +
+                std::to_string(m["triangles_per_update"].get<double>()) + "," + std::to_string(m["triangles_per_s"].get<double>()) +
+                "," + std::to_string(m["texels_per_s"].get<double>()) + "\n";
+        write_text_atomic(a.host_csv, hc);
+      }
       if (regions)
         r["host"]["regions"] = {{"size_m", a.region_size},
                                 {"margin_m", a.margin},
@@ -660,6 +676,7 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--error-every", a->error_every,
                   "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
       ->capture_default_str();
+  cmd->add_option("--host-csv", a->host_csv, "With --walk: CSV, one row per display memory (rates, load); needs --report");
   cmd->add_option("--regions", a->region_size,
                   "With --walk: region priority rendering with square columns of this size, metres (0: object-level)")
       ->capture_default_str();

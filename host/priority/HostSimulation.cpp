@@ -29,16 +29,29 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       pending_objects_(static_cast<size_t>(mem.count())),
       shown_memory_(scene.objects.size(), -1) {}
 
-void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region) {
+void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region,
+                                 std::vector<std::pair<RegionIndex, RegionIndex>> span) {
   regions_ = regions;
   object_region_ = std::move(object_region);
+  span_ = std::move(span);
+}
+
+int HostSimulation::memory_of_object(size_t i) const {
+  if (span_.empty()) return regions_->memory_of_region(object_region_[i]);
+  const RegionGrid& g = regions_->grid();
+  const auto& [lo, hi] = span_[i];
+  int best = mem_.count() - 1;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int z = lo.z; z <= hi.z; ++z)
+      for (int x = lo.x; x <= hi.x; ++x) best = std::min(best, regions_->memory_of_region(g.flat({x, y, z})));
+  return best;
 }
 
 std::vector<size_t> HostSimulation::objects_for(int m) const {
   if (!regions_) return sched_.objects_in(m);
   std::vector<size_t> out;
   for (size_t i = 0; i < object_region_.size(); ++i)
-    if (regions_->memory_of_region(object_region_[i]) == m) out.push_back(i);
+    if (memory_of_object(i) == m) out.push_back(i);
   return out;
 }
 

@@ -41,7 +41,10 @@ class HostSimulation {
   // (segmented) scene belongs to `object_region[i]`, whose memory the region
   // scheduler decides; memories update on need; a re-assignment re-renders
   // every memory it changes and swaps them together.
-  void use_regions(RegionScheduler* regions, std::vector<int> object_region);
+  // `span`: optional, per object the box of regions its bound reaches; the
+  // object then goes to the fastest memory among them.
+  void use_regions(RegionScheduler* regions, std::vector<int> object_region,
+                   std::vector<std::pair<RegionIndex, RegionIndex>> span = {});
   // Region warping (Chow 2005): when a memory renders, vertices near the edge
   // of its regions toward a slower neighbouring memory's region move by the
   // user's position now minus where that slower memory was rendered -- fully
@@ -99,6 +102,8 @@ class HostSimulation {
   bool warp_ = false;
   double falloff_ = 1.0, max_warp_rad_ = 0;
   std::vector<int> object_region_;
+  std::vector<std::pair<RegionIndex, RegionIndex>> span_;
+  int memory_of_object(size_t i) const;
   std::vector<size_t> objects_for(int m) const;
   double engine_free_ = -1e300;
 };

@@ -67,6 +67,7 @@ Segmented segment_scene(const Scene& s, const RegionGrid& grid, bool on) {
     if (!on || o.animation.animated() || !spans) {
       out.scene.objects.push_back(o);
       out.region.push_back(grid.flat(grid.region_of(wb.center)));
+      out.span.push_back({lo_r, hi_r});
       out.source.push_back(oi);
       continue;
     }
@@ -122,6 +123,7 @@ Segmented segment_scene(const Scene& s, const RegionGrid& grid, bool on) {
                                    std::make_shared<Mesh>(std::move(piece)), glm::dvec3(0.0), o.material);
       (void)so;
       out.region.push_back(r);
+      out.span.push_back({grid.unflat(r), grid.unflat(r)});
       out.source.push_back(oi);
       ++out.segments;
     }

@@ -5,7 +5,8 @@
 // computed from the edge's two ends in a fixed order (whichever end has the
 // smaller coordinate tuple first), so the pieces on both sides share
 // bit-identical boundary vertices -- no cracks (tested). Animated objects are
-// not cut (they move between regions); they go by their centre.
+// not cut (they move between regions); an uncut object goes to the fastest
+// memory among the regions its bound reaches.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -17,7 +18,11 @@ namespace arp::host {
 
 struct Segmented {
   Scene scene;                     // the pieces, as objects (static ones in world space)
-  std::vector<int> region;         // flat region of each object of `scene`
+  std::vector<int> region;         // flat region of each object of `scene` (of its centre, for uncut objects)
+  // The regions each object's bound overlaps, as a box of region indices: an
+  // uncut object spanning regions must be right everywhere it reaches, so it
+  // goes to the fastest memory among them.
+  std::vector<std::pair<RegionIndex, RegionIndex>> span;
   std::vector<size_t> source;      // the original object of each piece
   int64_t objects_cut = 0;         // originals that spanned more than one region
   int64_t segments = 0;            // pieces made from those
