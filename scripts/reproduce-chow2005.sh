@@ -65,5 +65,51 @@ col() { awk -F, -v c="$2" -v m="$3" 'NR == m + 2 { print $c }' "$1"; }
       "$(value host_wall_ms_per_frame "$f")"
   done
 } > "$OUT/tables.md"
+# Their future work: the region size. Load, region swaps, tearing and warp
+# distortion over region size x theta_t x walking speed (SWEEP_FRAMES each).
+SWEEP_FRAMES=${SWEEP_FRAMES:-90}
+echo "region_m,theta_deg,speed_m_s,triangles_per_s,swaps_per_min,tear_pixels,warped_tear_pixels,max_warp_px,mean_psnr_db" > "$OUT/region-sweep.csv"
+for size in ${SIZES:-2 4 8}; do
+  for th in ${THETAS:-0.5 2}; do
+    for sp in ${SPEEDS:-1 2}; do
+      for w in "" --warp; do
+        "$ARPSIM" run -q --scene gallery --walk scenes/gallery-worst-case-walk.json --speed "$sp" --frames "$SWEEP_FRAMES" \
+          --every 0 --error-every 15 --threshold-deg "$th" --regions "$size" --margin "$(awk -v s="$size" 'BEGIN { print s / 8 }')" \
+          $w --report "$OUT/sweep.json" >/dev/null
+        if [ -z "$w" ]; then
+          load=$(value triangles_per_s "$OUT/sweep.json"); swaps=$(value reassignments "$OUT/sweep.json")
+          tear=$(value mean_tear_pixels "$OUT/sweep.json"); psnr=$(value mean_psnr_db "$OUT/sweep.json")
+        else
+          wtear=$(value mean_tear_pixels "$OUT/sweep.json"); wpx=$(value max_warp_displacement_px "$OUT/sweep.json")
+        fi
+      done
+      echo "$size,$th,$sp,$load,$(awk -v n="$swaps" -v f="$SWEEP_FRAMES" 'BEGIN { print n * 3600 / f }'),$tear,$wtear,$wpx,$psnr" >> "$OUT/region-sweep.csv"
+      echo "  region $size m, theta_t $th deg, $sp m/s: load $load, tear $tear -> $wtear with warping"
+    done
+  done
+done
+rm -f "$OUT/sweep.json"
+if command -v gnuplot >/dev/null; then
+  gnuplot <<GP
+set terminal pngcairo size 1100,480 font ",10"
+set output "$OUT/region-sweep.png"
+set datafile separator ","
+set multiplot layout 1,2 title "Region size on the gallery's worst-case walk (1 and 2 m/s)"
+set xlabel "region size (m)"
+set logscale x 2
+set grid
+set key top right
+set ylabel "triangles rendered per second (millions)"
+plot for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$4 / 1e6 : 1/0) skip 1 \
+     with linespoints title sprintf("theta_t %s deg, %s m/s", th, sp)
+set ylabel "tear pixels per frame (dashed: with warping)"
+plot for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$6 : 1/0) skip 1 \
+     with linespoints title sprintf("theta_t %s, %s m/s", th, sp), \
+     for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$7 : 1/0) skip 1 \
+     with linespoints dt 2 notitle
+unset multiplot
+GP
+  echo "written $OUT/region-sweep.png"
+fi
 cat "$OUT/tables.md"
-echo "written $OUT/tables.md"
+echo "written $OUT/tables.md, $OUT/region-sweep.csv"
