@@ -218,6 +218,7 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_GT(j["host"]["regions"]["segments"].get<int>(), j["host"]["regions"]["objects_cut"].get<int>());
   EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
   EXPECT_GE(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
+  EXPECT_GE(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
   for (const std::string& bad : std::vector<std::string>{" --regions -1", " --regions 1000", " --regions 4 --margin 3",
                                                          " --warp", " --regions 4 --warp --warp-falloff 9"}) {
     const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --scene gallery --walk gallery" + bad + " --report " +

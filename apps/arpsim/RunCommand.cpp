@@ -303,7 +303,7 @@ int run(const RunArgs& a) {
   }
   std::vector<double> psnrs;
   double worst_px = 0, worst_object_share = 0;
-  std::vector<int64_t> tears, gaps;
+  std::vector<int64_t> tears, gaps, cracks;
   // The pipeline's own addressing, to ask which object each display pixel shows.
   const dp::LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
   const dp::RotateParams rot(c.widths);
@@ -407,12 +407,39 @@ int run(const RunArgs& a) {
         gap += shown_px[k] == 0 || src(shown_px[k]) != src(truth_px[k]) ? (shown_px[k] == 0 ? 1 : 0) : 0;
       }
     }
+    // Cracks: in the displayed image, a run of up to 3 pixels showing something
+    // else between two pieces of one cut object that come from different
+    // memories -- the seam opened by their different ages (what warping hides).
+    int64_t crack = 0;
+    if (regions && !segmented.source.empty()) {
+      auto src = [&](uint32_t id) { return id == 0 ? SIZE_MAX : segmented.source[id - 1]; };
+      auto mem_of = [&](uint32_t id) { return id == 0 ? -1 : hostsim->shown_in(id - 1); };
+      for (int e = 0; e < c.timing.eyes; ++e)
+        for (int y = 0; y < H; ++y)
+          for (int x = 1; x + 1 < W; ++x)
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}}) {
+              if (dy && (y == 0 || y + 1 >= H)) continue;
+              const uint32_t here = shown_px[static_cast<size_t>((e * H + y) * W + x)];
+              for (int len = 1; len <= 3; ++len) {
+                const int ax = x - dx, ay = y - dy, bx = x + len * dx, by = y + len * dy;
+                if (bx >= W || by >= H) break;
+                const uint32_t pa = shown_px[static_cast<size_t>((e * H + ay) * W + ax)];
+                const uint32_t pb = shown_px[static_cast<size_t>((e * H + by) * W + bx)];
+                if (pa && pb && src(pa) == src(pb) && mem_of(pa) != mem_of(pb) && src(here) != src(pa)) {
+                  ++crack;
+                  break;
+                }
+              }
+            }
+    }
     tears.push_back(tear);
+    cracks.push_back(crack);
     gaps.push_back(gap);
     out["error"] = {{"psnr_db", std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0},
                     {"pixels_showing_another_object", object_share},
                     {"tear_pixels", tear},
                     {"tear_gap_pixels", gap},
+                    {"crack_pixels", crack},
                     {"mse", ie.mse},
                     {"pixels_differing", ie.differing},
                     {"max_displacement_px", max_px}};
@@ -624,6 +651,7 @@ int run(const RunArgs& a) {
                               {"worst_share_showing_another_object", worst_object_share},
                               {"mean_tear_pixels", tears.empty() ? 0.0 : static_cast<double>(std::accumulate(tears.begin(), tears.end(), int64_t{0})) / static_cast<double>(tears.size())},
                               {"max_tear_pixels", tears.empty() ? 0 : *std::max_element(tears.begin(), tears.end())},
+                              {"mean_crack_pixels", cracks.empty() ? 0.0 : static_cast<double>(std::accumulate(cracks.begin(), cracks.end(), int64_t{0})) / static_cast<double>(cracks.size())},
                               {"mean_tear_gap_pixels", gaps.empty() ? 0.0 : static_cast<double>(std::accumulate(gaps.begin(), gaps.end(), int64_t{0})) / static_cast<double>(gaps.size())}};
       }
     }
