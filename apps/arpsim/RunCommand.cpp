@@ -471,7 +471,7 @@ int run(const RunArgs& a) {
     std::snprintf(hex[0], sizeof hex[0], "%016" PRIx64, ph);
     std::snprintf(hex[1], sizeof hex[1], "%016" PRIx64, th);
     // The samples the frame's latches can take: from its first latch to the next frame's.
-    const int64_t lead = dp::PipelineSchedule(c).orientation_lead();
+    const int64_t lead = latch_lead;  // the schedule computed once above
     const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame) - lead));
     const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame + 1) - lead));
     nlohmann::json err;
