@@ -8,6 +8,9 @@
 #                     object-level against region-level priority rendering
 #   *.json, *-memories.csv   the reports behind the tables
 #   frames-*/         every 60th frame of each run
+#   tear-segmented.png, tear-warped.png   a magnified tear (8x): the window
+#                     with the most crack pixels, then the same place with warping
+#   region-sweep.csv/.png  region size x theta_t x walking speed (their future work)
 # Usage: scripts/reproduce-chow2005.sh [OUT]   (env: FRAMES, THETA, ARPSIM)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,10 +26,12 @@ run() {  # name, extra arguments
   echo "reproduce-chow2005: $name"
   "$ARPSIM" run -q --scene gallery --walk scenes/gallery-worst-case-walk.json --frames "$FRAMES" --every 60 \
     --error-every 10 --threshold-deg "$THETA" --out-dir "$OUT/frames-$name" --report "$OUT/$name.json" \
-    --host-csv "$OUT/$name-memories.csv" "$@" >/dev/null
+    --host-csv "$OUT/$name-memories.csv" "$@" > "$OUT/$name.log"
 }
-run segmented --regions 4
-run warped --regions 4 --warp
+run segmented --regions 4 --tear-image "$OUT/tear-segmented.png"
+# The same place with warping.
+place=$(grep -o -- '--tear-at [0-9:]*' "$OUT/segmented.log" | cut -d' ' -f2)
+run warped --regions 4 --warp --tear-image "$OUT/tear-warped.png" --tear-at "$place"
 run unsegmented --regions 4 --no-segmentation
 run objects
 col() { awk -F, -v c="$2" -v m="$3" 'NR == m + 2 { print $c }' "$1"; }
@@ -64,50 +69,78 @@ col() { awk -F, -v c="$2" -v m="$3" 'NR == m + 2 { print $c }' "$1"; }
       "$(value mean_crack_pixels "$f")" "$(value mean_tear_pixels "$f")" "$(value mean_tear_gap_pixels "$f")" "$(value mean_psnr_db "$f")" "$warp" \
       "$(value host_wall_ms_per_frame "$f")"
   done
+  echo
+  echo "Magnified tear (8x; displayed | truth | cracks magenta, tears yellow, seams cyan): tear-segmented.png, and the"
+  echo "same place with warping: tear-warped.png (frame:eye:x:y = $place)."
 } > "$OUT/tables.md"
 # Their future work: the region size. Load, region swaps, tearing and warp
 # distortion over region size x theta_t x walking speed (SWEEP_FRAMES each).
-SWEEP_FRAMES=${SWEEP_FRAMES:-90}
+SWEEP_FRAMES=${SWEEP_FRAMES:-240}
 if [ "${SWEEP:-1}" = 0 ]; then cat "$OUT/tables.md"; echo "written $OUT/tables.md (no sweep)"; exit 0; fi
-echo "region_m,theta_deg,speed_m_s,triangles_per_s,swaps_per_min,tear_pixels,warped_tear_pixels,max_warp_px,mean_psnr_db" > "$OUT/region-sweep.csv"
-for size in ${SIZES:-2 4 8}; do
-  for th in ${THETAS:-0.5 2}; do
-    for sp in ${SPEEDS:-1 2}; do
+echo "region_m,theta_deg,speed_m_s,triangles_per_s,swaps_per_min,crack_pixels,warped_crack_pixels,tear_pixels,warped_tear_pixels,max_warp_px,mean_psnr_db,warped_mean_psnr_db" > "$OUT/region-sweep.csv"
+set -- ${SIZES:-2 4 8}
+sizes=("$@")
+thetas=(${THETAS:-0.5 2})
+speeds=(${SPEEDS:-1 2})
+total=$(( ${#sizes[@]} * ${#thetas[@]} * ${#speeds[@]} ))
+n=0
+t0=$(date +%s)
+for size in "${sizes[@]}"; do
+  for th in "${thetas[@]}"; do
+    for sp in "${speeds[@]}"; do
       for w in "" --warp; do
         "$ARPSIM" run -q --scene gallery --walk scenes/gallery-worst-case-walk.json --speed "$sp" --frames "$SWEEP_FRAMES" \
           --every 0 --error-every 15 --threshold-deg "$th" --regions "$size" --margin "$(awk -v s="$size" 'BEGIN { print s / 8 }')" \
           $w --report "$OUT/sweep.json" >/dev/null
         if [ -z "$w" ]; then
           load=$(value triangles_per_s "$OUT/sweep.json"); swaps=$(value reassignments "$OUT/sweep.json")
-          tear=$(value mean_tear_pixels "$OUT/sweep.json"); psnr=$(value mean_psnr_db "$OUT/sweep.json")
+          crack=$(value mean_crack_pixels "$OUT/sweep.json"); tear=$(value mean_tear_pixels "$OUT/sweep.json")
+          psnr=$(value mean_psnr_db "$OUT/sweep.json")
         else
-          wtear=$(value mean_tear_pixels "$OUT/sweep.json"); wpx=$(value max_warp_displacement_px "$OUT/sweep.json")
+          wcrack=$(value mean_crack_pixels "$OUT/sweep.json"); wtear=$(value mean_tear_pixels "$OUT/sweep.json")
+          wpx=$(value max_warp_displacement_px "$OUT/sweep.json"); wpsnr=$(value mean_psnr_db "$OUT/sweep.json")
         fi
       done
-      echo "$size,$th,$sp,$load,$(awk -v n="$swaps" -v f="$SWEEP_FRAMES" 'BEGIN { print n * 3600 / f }'),$tear,$wtear,$wpx,$psnr" >> "$OUT/region-sweep.csv"
-      echo "  region $size m, theta_t $th deg, $sp m/s: load $load, tear $tear -> $wtear with warping"
+      echo "$size,$th,$sp,$load,$(awk -v n="$swaps" -v f="$SWEEP_FRAMES" 'BEGIN { print n * 3600 / f }'),$crack,$wcrack,$tear,$wtear,$wpx,$psnr,$wpsnr" >> "$OUT/region-sweep.csv"
+      n=$((n + 1))
+      el=$(( $(date +%s) - t0 ))
+      printf "  [%d/%d, ETA %ds] region %s m, theta_t %s deg, %s m/s: %.2f M tri/s, cracks %.1f -> %.1f px/frame with warping (warp up to %.1f px)\n" \
+        "$n" "$total" $(( el * (total - n) / n )) "$size" "$th" "$sp" "$(awk -v v="$load" 'BEGIN { print v / 1e6 }')" "$crack" "$wcrack" "$wpx"
     done
   done
 done
 rm -f "$OUT/sweep.json"
 if command -v gnuplot >/dev/null; then
+  # One series per theta_t and speed, through awk so each is a line.
+  series() { echo "< awk -F, 'NR > 1 && \$2 == $1 && \$3 == $2' '$OUT/region-sweep.csv' | sort -t, -k1,1g"; }
+  plots() {  # y expression, dashed y expression or ""
+    local k=0 th sp
+    for th in "${thetas[@]}"; do
+      for sp in "${speeds[@]}"; do
+        [ $k = 0 ] || printf ", "
+        k=$((k + 1))
+        printf '"%s" using 1:(%s) with linespoints lw 2 lc %d title "theta_t %s deg, %s m/s"' "$(series "$th" "$sp")" "$1" $k "$th" "$sp"
+        [ -z "$2" ] || printf ', "%s" using 1:(%s) with linespoints dt 2 lw 2 lc %d notitle' "$(series "$th" "$sp")" "$2" $k
+      done
+    done
+  }
   gnuplot <<GP
-set terminal pngcairo size 1100,480 font ",10"
+set terminal pngcairo size 1200,900 font ",10"
 set output "$OUT/region-sweep.png"
 set datafile separator ","
-set multiplot layout 1,2 title "Region size on the gallery's worst-case walk (1 and 2 m/s)"
+set multiplot layout 2,2 title "Region size on the gallery's worst-case walk ($SWEEP_FRAMES frames per point)"
 set xlabel "region size (m)"
 set logscale x 2
 set grid
 set key top right
 set ylabel "triangles rendered per second (millions)"
-plot for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$4 / 1e6 : 1/0) skip 1 \
-     with linespoints title sprintf("theta_t %s deg, %s m/s", th, sp)
-set ylabel "tear pixels per frame (dashed: with warping)"
-plot for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$6 : 1/0) skip 1 \
-     with linespoints title sprintf("theta_t %s, %s m/s", th, sp), \
-     for [th in "0.5 2"] for [sp in "1 2"] "$OUT/region-sweep.csv" using 1:((\$2 == real(th) && \$3 == real(sp)) ? \$7 : 1/0) skip 1 \
-     with linespoints dt 2 notitle
+plot $(plots '$4 / 1e6' '')
+set ylabel "region re-assignments per minute"
+plot $(plots '$5' '')
+set ylabel "crack pixels per frame (dashed: with warping)"
+plot $(plots '$6' '$7')
+set ylabel "warping's largest vertex displacement (px)"
+plot $(plots '$10' '')
 unset multiplot
 GP
   echo "written $OUT/region-sweep.png"

@@ -68,8 +68,12 @@ TEST(RegionScheduler, RingsUpdateOnNeedAndNoSwappingStormAtABoundary) {
   EXPECT_THROW(RegionScheduler(g, RegionConfig{4.0, false, 2.5, 4, 0}, 512, {0, 0, 0}, "margin"), InputError);
 }
 
-TEST(Segmentation, CutsAlongRegionPlanesWithoutCracksOrDoubleHits) {
-  const RegionGrid g({-4, -1, -8}, {4, 3, 0}, 2.0, false, "test");
+namespace {
+
+// Columns cut along vertical planes only; cubes (tall worlds) along horizontal ones too.
+void expect_watertight_cut(bool cubes) {
+  SCOPED_TRACE(cubes ? "cubes" : "columns");
+  const RegionGrid g({-4, -1, -8}, {4, 3, 0}, 2.0, cubes, "test");
   Scene s;
   Material mt;
   mt.color = {0.8, 0.3, 0.2};
@@ -79,7 +83,7 @@ TEST(Segmentation, CutsAlongRegionPlanesWithoutCracksOrDoubleHits) {
   add_object(s, "crate", std::make_shared<Mesh>(make_box({3, 1, 2.5})), {-0.4, 0.4, -6.5}, mt);  // clear of the wall
   add_object(s, "ball", std::make_shared<Mesh>(make_sphere(0.2, 12)), {1, 1, -3}, mt);
   const Segmented seg = segment_scene(s, g, true);
-  EXPECT_EQ(seg.objects_cut, 2);
+  EXPECT_EQ(seg.objects_cut, cubes ? 3 : 2);  // with cubes the ball straddles y = 1
   EXPECT_GT(seg.segments, 6);
   EXPECT_EQ(seg.scene.objects.size(), seg.region.size());
   // Each piece lies in its region.
@@ -135,6 +139,43 @@ TEST(Segmentation, CutsAlongRegionPlanesWithoutCracksOrDoubleHits) {
   const Segmented off = segment_scene(s, g, false);
   EXPECT_EQ(off.objects_cut, 0);
   EXPECT_EQ(off.scene.objects.size(), 3u);
+}
+
+}  // namespace
+
+TEST(Segmentation, CutsAlongRegionPlanesWithoutCracksOrDoubleHits) {
+  expect_watertight_cut(false);
+  expect_watertight_cut(true);
+}
+
+TEST(RegionGrid, HysteresisCountsOnlyTheFacesCrossed) {
+  const RegionGrid g({0, 0, 0}, {16, 8, 16}, 2.0, true, "test");
+  const RegionIndex from = g.region_of({3, 1.6, 3}), to = g.region_of({4.7, 1.6, 3});
+  // 0.7 m past x = 4; the eye's 0.4 m from the cube's top face at y = 2 does not count.
+  EXPECT_NEAR(g.depth_past({4.7, 1.6, 3}, from, to), 0.7, 1e-12);
+  EXPECT_NEAR(g.depth_inside({4.7, 1.6, 3}, to), 0.4, 1e-12);
+  EXPECT_NEAR(g.depth_past({3.2, 1.6, 3}, to, from), 0.8, 1e-12);  // back across, going down in x
+  EXPECT_EQ(g.depth_past({3, 1, 3}, from, from), std::numeric_limits<double>::infinity());
+  // Diagonally into the next region: the lesser of the two crossings.
+  EXPECT_NEAR(g.depth_past({4.3, 1.6, 4.9}, from, g.region_of({4.3, 1.6, 4.9})), 0.3, 1e-12);
+  // Walking along a region's wall (0.3 m from z = 4) while crossing x: re-assigned
+  // once 0.5 m past x = 4, although the wall is nearer than the margin.
+  RegionConfig rc;
+  rc.margin_m = 0.5;
+  rc.threshold_rad = 0.5 * 3.14159265358979 / 180;
+  RegionScheduler s(g, rc, 512, {3, 1.6, 3.7}, "test");
+  double reassigned_at = -1;
+  for (int k = 0; k <= 300 && reassigned_at < 0; ++k) {
+    const glm::dvec3 p{3 + 0.01 * k, 1.6, 3.7};
+    const auto st = s.step(p);
+    if (st.reassigned) reassigned_at = p.x;
+    for (int m : st.update) s.rendered(m, p);
+  }
+  EXPECT_GE(reassigned_at, 4.5 - 1e-9);
+  EXPECT_LT(reassigned_at, 6.0);
+  // A tall world in cubes: a cube smaller than the eye height still builds layers.
+  EXPECT_EQ(g.count_y(), 4);
+  EXPECT_EQ(g.region_of({1, 5, 1}).y, 2);
 }
 
 TEST(Segmentation, TheGalleryIsCutIntoRegions) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "TestSupport.hpp"
+#include "host/cubemap/ImageFiles.hpp"
 
 using arp::test::run_command;
 using arp::test::TempDir;
@@ -219,8 +220,25 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
   EXPECT_GE(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
   EXPECT_GE(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
+  // Cubes for tall worlds, and the magnified tear at a place given by --tear-at.
+  const auto cu = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 3" +
+                              " --regions 2 --region-cubes --set memory.face_size=128 --tear-image " + d.file("tear.png") +
+                              " --tear-at 3:1:100:200 --report " + d.file("c.json"));
+  ASSERT_EQ(cu.status, 0) << cu.output;
+  const auto jc = load(d.file("c.json"));
+  EXPECT_EQ(jc["host"]["regions"]["shape"], "cubes");
+  EXPECT_EQ(jc["host"]["error"]["tear_image"]["frame"], 3);
+  EXPECT_EQ(jc["host"]["error"]["tear_image"]["x"], 100);
+  const arp::host::RgbImage tear = arp::host::read_rgb8(d.file("tear.png"));
+  EXPECT_EQ(tear.width, 3 * 48 * 8 + 2 * 4);
+  EXPECT_EQ(tear.height, 32 * 8);
   for (const std::string& bad : std::vector<std::string>{" --regions -1", " --regions 1000", " --regions 4 --margin 3",
-                                                         " --warp", " --regions 4 --warp --warp-falloff 9"}) {
+                                                         " --warp", " --regions 4 --warp --warp-falloff 9", " --region-cubes",
+                                                         " --regions 4 --tear-at 0:0:0:0",
+                                                         " --regions 4 --tear-image t.png --tear-at 1:0:0:0",
+                                                         " --regions 4 --tear-image t.png --tear-at 0:0:9999:0",
+                                                         " --regions 4 --tear-image t.png --tear-at 0:0:x:0",
+                                                         " --tear-image t.png"}) {
     const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --scene gallery --walk gallery" + bad + " --report " +
                                d.file("bad.json"));
     EXPECT_EQ(e.status, 2) << bad << "\n" << e.output;

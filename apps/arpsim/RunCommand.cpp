@@ -24,6 +24,8 @@
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/error/FrameError.hpp"
+#include "host/error/SeamMetrics.hpp"
+#include "host/error/TearImage.hpp"
 #include "host/priority/HostSimulation.hpp"
 #include "host/regions/Segmentation.hpp"
 #include "host/scene/Gallery.hpp"
@@ -44,7 +46,7 @@ struct RunArgs {
   CubeMapOptions cubemap;
   MotionOptions motion;
   std::string fidelity = "functional";
-  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us, host_csv;
+  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us, host_csv, tear_image, tear_at;
   std::vector<std::string> stalls;
   bool no_speculation = false;
   std::string walk;
@@ -52,7 +54,7 @@ struct RunArgs {
   bool baseline = false;
   int64_t error_every = 10;
   double region_size = 0, margin = 0.5, warp_falloff = 0;
-  bool no_segmentation = false, warp = false;
+  bool no_segmentation = false, warp = false, region_cubes = false;
   host::RenderEngine engine;
   int64_t frames = 60, first = 0, every = 1;
   int threads = 0;
@@ -75,6 +77,23 @@ std::pair<double, double> parse_window(const std::string& opt, const std::string
   } catch (const std::exception&) {
     throw InputError(opt, s, "expected START:END with END > START");
   }
+}
+
+// --tear-at FRAME:EYE:X:Y, the corner of the magnified tear window; frame -1 when not given.
+struct TearAt {
+  int64_t frame = -1;
+  int eye = 0, x = 0, y = 0;
+};
+
+TearAt parse_tear_at(const std::string& s) {
+  TearAt t;
+  if (s.empty()) return t;
+  char tail = 0;
+  long long f = 0;
+  if (std::sscanf(s.c_str(), "%lld:%d:%d:%d%c", &f, &t.eye, &t.x, &t.y, &tail) != 4 || f < 0 || t.eye < 0 || t.x < 0 || t.y < 0)
+    throw InputError("--tear-at", s, "expected FRAME:EYE:X:Y, non-negative integers");
+  t.frame = f;
+  return t;
 }
 
 // The VCD's final path (".vcd" added; a bare name goes into waveforms/) and its directory made.
@@ -109,6 +128,10 @@ int run(const RunArgs& a) {
     throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or rtl");
   if ((!a.vcd_lines.empty() || !a.vcd_time_us.empty()) && a.vcd.empty())
     throw InputError(a.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
+  if (!a.tear_image.empty() && (a.region_size == 0 || a.error_every <= 0 || a.walk.empty()))
+    throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
+  if (a.region_cubes && a.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
+  if (!a.tear_at.empty() && a.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
   const auto issues = fid == scm::Fidelity::Functional ? dp::validate(c) : dp::validate_timed(c);
   if (!issues.empty()) throw InputError(a.cfg.file.empty() ? "configuration" : a.cfg.file, issues.front().key, issues.front().reason);
 
@@ -182,7 +205,7 @@ int run(const RunArgs& a) {
     };
     if (a.region_size != 0) {
       // Region priority rendering: the world in columns, large objects cut along them.
-      grid = std::make_unique<host::RegionGrid>(scene->extent_min, scene->extent_max, a.region_size, false, "--regions");
+      grid = std::make_unique<host::RegionGrid>(scene->extent_min, scene->extent_max, a.region_size, a.region_cubes, "--regions");
       segmented = host::segment_scene(*scene, *grid, !a.no_segmentation);
       scene = std::make_unique<host::Scene>(std::move(segmented.scene));
       host::RegionConfig rc;
@@ -304,6 +327,20 @@ int run(const RunArgs& a) {
   std::vector<double> psnrs;
   double worst_px = 0, worst_object_share = 0;
   std::vector<int64_t> tears, gaps, cracks;
+  // --tear-image: the frame and window with the most crack pixels (or the one --tear-at names).
+  constexpr int kTearWindowW = 48, kTearWindowH = 32, kTearScale = 8;
+  constexpr uint8_t kTearMarks = host::kCrackMark;  // the seam's own discontinuity picks the place
+  const TearAt tear_at = parse_tear_at(a.tear_at);
+  if (tear_at.frame >= 0) {
+    if (tear_at.frame < a.first || tear_at.frame >= a.first + a.frames || (tear_at.frame - a.first) % a.error_every != 0)
+      throw InputError("--tear-at", a.tear_at, "the frame must be one this run measures (--first-frame + k * --error-every)");
+    if (tear_at.eye >= c.timing.eyes || tear_at.x + kTearWindowW > c.timing.h_active || tear_at.y + kTearWindowH > c.timing.v_active)
+      throw InputError("--tear-at", a.tear_at,
+                       "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
+  }
+  host::TearWindow tear_best;
+  int64_t tear_frame = -1;
+  host::RgbImage tear_picture;
   // The pipeline's own addressing, to ask which object each display pixel shows.
   const dp::LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
   const dp::RotateParams rot(c.widths);
@@ -347,7 +384,9 @@ int run(const RunArgs& a) {
     int64_t differ = 0, total = 0;
     const uint32_t empty = mem.format().empty_depth();
     const int W = c.timing.h_active, H = c.timing.v_active;
-    std::vector<uint32_t> shown_px(static_cast<size_t>(W * H * c.timing.eyes)), truth_px(shown_px.size());
+    host::ObjectMap shown_map, truth_map;
+    shown_map.resize(W, H, c.timing.eyes);
+    truth_map.resize(W, H, c.timing.eyes);
     for (int e = 0; e < c.timing.eyes; ++e)
       for (int y = 0; y < c.timing.v_active; ++y) {
         size_t held = SIZE_MAX;
@@ -372,65 +411,40 @@ int run(const RunArgs& a) {
               tf.object.empty() ? 0u : tf.object[static_cast<size_t>(ad.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(ad.x)];
           differ += shown != truth_object;
           ++total;
-          shown_px[static_cast<size_t>((e * H + y) * W + x)] = shown;
-          truth_px[static_cast<size_t>((e * H + y) * W + x)] = truth_object;
+          shown_map.id[shown_map.index(e, x, y)] = shown;
+          truth_map.id[truth_map.index(e, x, y)] = truth_object;
         }
       }
     const double object_share = total ? static_cast<double>(differ) / static_cast<double>(total) : 0.0;
     worst_object_share = std::max(worst_object_share, object_share);
-    // Tearing (regions with segmentation): within a pixel of where two pieces
-    // of one cut object meet in the truth, the pixel shows another object or
-    // the background.
-    int64_t tear = 0, gap = 0;
+    // Tearing and cracks along the seams of cut objects (host/error/SeamMetrics).
+    int64_t tear = 0, gap = 0, crack = 0;
     if (regions && !segmented.source.empty()) {
-      auto src = [&](uint32_t id) { return id == 0 ? SIZE_MAX : segmented.source[id - 1]; };
-      std::vector<char> seam(shown_px.size(), 0);
-      for (int e = 0; e < c.timing.eyes; ++e)
-        for (int y = 0; y < H; ++y)
-          for (int x = 0; x + 1 < W; ++x)
-            for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}}) {
-              if (y + dy >= H) continue;
-              const size_t pa = static_cast<size_t>((e * H + y) * W + x), pb = static_cast<size_t>((e * H + y + dy) * W + x + dx);
-              // Two pieces of one cut object meeting, shown by different memories.
-              if (truth_px[pa] != truth_px[pb] && truth_px[pa] && truth_px[pb] && src(truth_px[pa]) == src(truth_px[pb]) &&
-                  hostsim->shown_in(truth_px[pa] - 1) != hostsim->shown_in(truth_px[pb] - 1)) {
-                for (int oy = -1; oy <= 1; ++oy)
-                  for (int ox = -1; ox <= 1; ++ox) {
-                    const int xx = x + ox, yy = y + oy;
-                    if (xx >= 0 && yy >= 0 && xx < W && yy < H) seam[static_cast<size_t>((e * H + yy) * W + xx)] = 1;
-                  }
-              }
-            }
-      for (size_t k = 0; k < seam.size(); ++k) {
-        if (!seam[k] || src(shown_px[k]) == src(truth_px[k])) continue;
-        ++tear;  // another object, or nothing
-        gap += shown_px[k] == 0 || src(shown_px[k]) != src(truth_px[k]) ? (shown_px[k] == 0 ? 1 : 0) : 0;
+      host::SeamPieces pieces;
+      pieces.source = segmented.source;
+      pieces.memory.resize(scene->objects.size());
+      for (size_t i = 0; i < scene->objects.size(); ++i) pieces.memory[i] = hostsim->shown_in(i);
+      host::SeamMeasure sm = host::measure_seams(shown_map, truth_map, pieces);
+      tear = sm.tear_pixels;
+      gap = sm.gap_pixels;
+      crack = sm.crack_pixels;
+      if (!a.tear_image.empty()) {
+        host::TearWindow w;
+        if (tear_at.frame >= 0) {
+          if (frame == tear_at.frame) {
+            w = {tear_at.eye, tear_at.x, tear_at.y, kTearWindowW, kTearWindowH, 0};
+            for (int y = 0; y < w.height; ++y)
+              for (int x = 0; x < w.width; ++x) w.marked += (sm.marks[shown_map.index(w.eye, w.x + x, w.y + y)] & kTearMarks) ? 1 : 0;
+          }
+        } else {
+          w = host::densest_window(shown_map, sm.marks, kTearMarks, kTearWindowW, kTearWindowH);
+        }
+        if (w.width > 0 && (tear_at.frame >= 0 || w.marked > tear_best.marked || tear_picture.width == 0)) {
+          tear_best = w;
+          tear_frame = frame;
+          tear_picture = host::magnified_tear(frame_to_image(f), frame_to_image(truth), shown_map, sm.marks, w, kTearScale);
+        }
       }
-    }
-    // Cracks: in the displayed image, a run of up to 3 pixels showing something
-    // else between two pieces of one cut object that come from different
-    // memories -- the seam opened by their different ages (what warping hides).
-    int64_t crack = 0;
-    if (regions && !segmented.source.empty()) {
-      auto src = [&](uint32_t id) { return id == 0 ? SIZE_MAX : segmented.source[id - 1]; };
-      auto mem_of = [&](uint32_t id) { return id == 0 ? -1 : hostsim->shown_in(id - 1); };
-      for (int e = 0; e < c.timing.eyes; ++e)
-        for (int y = 0; y < H; ++y)
-          for (int x = 1; x + 1 < W; ++x)
-            for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}}) {
-              if (dy && (y == 0 || y + 1 >= H)) continue;
-              const uint32_t here = shown_px[static_cast<size_t>((e * H + y) * W + x)];
-              for (int len = 1; len <= 3; ++len) {
-                const int ax = x - dx, ay = y - dy, bx = x + len * dx, by = y + len * dy;
-                if (bx >= W || by >= H) break;
-                const uint32_t pa = shown_px[static_cast<size_t>((e * H + ay) * W + ax)];
-                const uint32_t pb = shown_px[static_cast<size_t>((e * H + by) * W + bx)];
-                if (pa && pb && src(pa) == src(pb) && mem_of(pa) != mem_of(pb) && src(here) != src(pa)) {
-                  ++crack;
-                  break;
-                }
-              }
-            }
     }
     tears.push_back(tear);
     cracks.push_back(crack);
@@ -534,6 +548,13 @@ int run(const RunArgs& a) {
     std::printf("  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)\n",
                 static_cast<double>(poses.back().time_ps) * 1e-12);
 
+  if (!a.tear_image.empty()) {
+    if (tear_picture.width == 0) throw InputError("--tear-image", a.tear_image, "no measured frame had a seam to show");
+    host::write_rgb8(a.tear_image, tear_picture);
+    std::printf("  magnified tear: %s (frame %" PRId64 ", eye %d, x %d, y %d, %" PRId64 " crack pixels; --tear-at %" PRId64 ":%d:%d:%d shows the same place)\n",
+                a.tear_image.c_str(), tear_frame, tear_best.eye, tear_best.x, tear_best.y, tear_best.marked, tear_frame, tear_best.eye,
+                tear_best.x, tear_best.y);
+  }
   if (!a.csv.empty()) write_text_atomic(a.csv, csv);
   if (!a.report.empty()) {
     const auto& tm = c.timed;
@@ -633,7 +654,8 @@ int run(const RunArgs& a) {
       if (regions)
         r["host"]["regions"] = {{"size_m", a.region_size},
                                 {"margin_m", a.margin},
-                                {"columns", grid->count()},
+                                {"shape", a.region_cubes ? "cubes" : "columns"},
+                                {"regions", grid->count()},
                                 {"segmentation", !a.no_segmentation},
                                 {"objects_cut", segmented.objects_cut},
                                 {"segments", segmented.segments},
@@ -652,6 +674,7 @@ int run(const RunArgs& a) {
                               {"mean_tear_pixels", tears.empty() ? 0.0 : static_cast<double>(std::accumulate(tears.begin(), tears.end(), int64_t{0})) / static_cast<double>(tears.size())},
                               {"max_tear_pixels", tears.empty() ? 0 : *std::max_element(tears.begin(), tears.end())},
                               {"mean_crack_pixels", cracks.empty() ? 0.0 : static_cast<double>(std::accumulate(cracks.begin(), cracks.end(), int64_t{0})) / static_cast<double>(cracks.size())},
+                              {"tear_image", a.tear_image.empty() ? nlohmann::json() : nlohmann::json{{"file", a.tear_image}, {"frame", tear_frame}, {"eye", tear_best.eye}, {"x", tear_best.x}, {"y", tear_best.y}, {"width", tear_best.width}, {"height", tear_best.height}, {"crack_pixels", tear_best.marked}, {"scale", kTearScale}}},
                               {"mean_tear_gap_pixels", gaps.empty() ? 0.0 : static_cast<double>(std::accumulate(gaps.begin(), gaps.end(), int64_t{0})) / static_cast<double>(gaps.size())}};
       }
     }
@@ -710,8 +733,13 @@ Runner add_run_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--margin", a->margin, "--regions: how far into a new region before regions are re-assigned, metres")
       ->capture_default_str();
+  cmd->add_flag("--region-cubes", a->region_cubes, "--regions: cubes instead of columns, for tall worlds (objects are also cut along horizontal planes)");
   cmd->add_flag("--no-segmentation", a->no_segmentation, "--regions: do not cut large objects along region boundaries");
   cmd->add_flag("--warp", a->warp, "--regions: warp the regions' edges toward slower neighbours (hides tearing)");
+  cmd->add_option("--tear-image", a->tear_image,
+                  "--regions: write a magnified view (8x) of the 48x32 window with the most crack pixels: displayed | truth | "
+                  "cracks magenta, tears yellow, seams cyan");
+  cmd->add_option("--tear-at", a->tear_at, "--tear-image: show this place instead, FRAME:EYE:X:Y (e.g. the same place in another run)");
   cmd->add_option("--warp-falloff", a->warp_falloff, "--warp: distance inside a region over which the warp fades, metres (0: half a region)");
   cmd->add_flag("--baseline", a->baseline, "Host baseline: everything in memory 0, rendered every frame");
   cmd->add_option("--threshold-deg", a->threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")

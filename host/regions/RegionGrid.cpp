@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "common/InputError.hpp"
 
@@ -13,7 +14,7 @@ RegionGrid::RegionGrid(const glm::dvec3& mn, const glm::dvec3& mx, double size, 
   if (!(size > 0) || !std::isfinite(size)) throw InputError(source, "region size", "must be a positive number of metres");
   const glm::dvec3 ext = mx - mn;
   if (!(ext.x > 0 && ext.y > 0 && ext.z > 0)) throw InputError(source, "extent", "the world extent is empty");
-  if (size > std::max(ext.x, ext.z) || (cubes && size > ext.y))
+  if (size > std::max(ext.x, ext.z))  // cubes taller than the world make one layer
     throw InputError(source, "region size", "is larger than the world (" + std::to_string(std::max(ext.x, ext.z)) + " m)");
   nx_ = std::max(1, static_cast<int>(std::ceil(ext.x / size - 1e-9)));
   nz_ = std::max(1, static_cast<int>(std::ceil(ext.z / size - 1e-9)));
@@ -37,6 +38,19 @@ double RegionGrid::depth_inside(const glm::dvec3& p, const RegionIndex& r) const
     const double y0 = min_.y + r.y * size_;
     d = std::min({d, p.y - y0, y0 + size_ - p.y});
   }
+  return d;
+}
+
+double RegionGrid::depth_past(const glm::dvec3& p, const RegionIndex& from, const RegionIndex& to) const {
+  double d = std::numeric_limits<double>::infinity();
+  auto axis = [&](int f, int t, double v, double lo) {
+    if (f == t) return;
+    const double face = lo + (f < t ? t : t + 1) * size_;  // the face of `to` toward `from`
+    d = std::min(d, f < t ? v - face : face - v);
+  };
+  axis(from.x, to.x, p.x, min_.x);
+  axis(from.y, to.y, p.y, min_.y);
+  axis(from.z, to.z, p.z, min_.z);
   return d;
 }
 

@@ -35,6 +35,11 @@ class RegionGrid {
   bool inside_extent(const glm::dvec3& p) const;
   // How far p is inside region r from its nearest face in x-z (and y for cubes); negative outside.
   double depth_inside(const glm::dvec3& p, const RegionIndex& r) const;
+  // How far p has gone into region `to` past the faces it crossed coming from
+  // region `from`: the smallest such distance over the axes on which the two
+  // differ (faces on other axes do not count, so walking along a wall of the
+  // region does not hold back the hysteresis); +infinity when to == from.
+  double depth_past(const glm::dvec3& p, const RegionIndex& from, const RegionIndex& to) const;
   // Ring: Chebyshev distance between regions (0: the same region).
   static int ring(const RegionIndex& a, const RegionIndex& b);
   // Boundary plane coordinates: x = boundary_x(i) for i in 1 .. count_x() - 1, likewise z (and y).

@@ -38,7 +38,7 @@ RegionScheduler::Step RegionScheduler::step(const glm::dvec3& p, bool can_reassi
   std::vector<char> need(static_cast<size_t>(N), 0);
   for (int m = 0; m < N; ++m) need[static_cast<size_t>(m)] = glm::length(p - last_[static_cast<size_t>(m)]) > threshold_distance(m);
   const RegionIndex here = grid_.region_of(p);
-  const bool pending = here != center_ && grid_.depth_inside(p, here) >= cfg_.margin_m;
+  const bool pending = here != center_ && grid_.depth_past(p, center_, here) >= cfg_.margin_m;
   if (pending && need[static_cast<size_t>(N - 1)] && can_reassign) {
     // Re-assign: every memory whose set of regions changes updates now, together.
     const std::vector<int> before = memory_;
