@@ -56,7 +56,7 @@ TEST(LatencyLab, OlanosThirtyThreePixelsPerFieldAt200DegreesPerSecond) {
 TEST(LatencyLab, JustInTimePixelsPerScanlineIsAFractionOfAPixel) {
   const DisplayRaster d(ntsc_like_timing(), 60.0);
   const TrackerFeed feed = ideal_tracker(yaw(200, 1.0));
-  JustInTimePixels line(d, JitConfig{JitMode::PerScanline, -1}, "test");
+  JustInTimePixels line(d, JitConfig{JitMode::PerScanline, -1, 0, 2e6}, "test");
   LabSettings s;
   s.frames = 4;
   s.grid_step = 1;
@@ -67,11 +67,11 @@ TEST(LatencyLab, JustInTimePixelsPerScanlineIsAFractionOfAPixel) {
   EXPECT_NEAR(r.max_error.max, 200 * active_line_s * 10, 0.002);
   EXPECT_LT(r.max_error.max, 0.13);  // Olano et al.: "on the order of 0.13 pixels" per 65 us line
   // Per pixel, predicted to each pixel's own time: exact for constant rotation.
-  JustInTimePixels pixel(d, JitConfig{JitMode::PerPixel, -1}, "test");
+  JustInTimePixels pixel(d, JitConfig{JitMode::PerPixel, -1, 0, 2e6}, "test");
   s.grid_step = 7;
   EXPECT_LT(measure(pixel, d, feed, s).max_error.max, 1e-3);
   // Two transforms per field, interpolated: exact for constant rotation too.
-  JustInTimePixels two(d, JitConfig{JitMode::TwoPerField, -1}, "test");
+  JustInTimePixels two(d, JitConfig{JitMode::TwoPerField, -1, 0, 2e6}, "test");
   EXPECT_LT(measure(two, d, feed, s).max_error.max, 1e-3);
   // Without prediction, per scanline lags by its lead: one line period (0.127 px) plus the line.
   s.prediction = Prediction::None;
@@ -169,6 +169,15 @@ TEST(LatencyLab, SlatsCannotDrawTooManyTrianglesAndBadSettingsAreRefused) {
   ConventionalConfig hz;
   hz.horizon_s = -0.01;
   EXPECT_THROW(ConventionalPipeline(d, hz, "cfg"), InputError);
+  // Just-in-time pixels transform the whole scene per line (per pixel, per half field): 100 triangles at
+  // 2 M/s take 50 us and fit a 63.6 us line; 200 do not.
+  EXPECT_TRUE(JustInTimePixels(d, JitConfig{JitMode::PerScanline, -1, 100, 2e6}, "t").fits());
+  JustInTimePixels heavy_line(d, JitConfig{JitMode::PerScanline, -1, 200, 2e6}, "t");
+  EXPECT_FALSE(heavy_line.fits());
+  EXPECT_EQ(measure(heavy_line, d, feed, s).frames_without_image, 5);
+  EXPECT_FALSE(JustInTimePixels(d, JitConfig{JitMode::PerPixel, -1, 1, 2e6}, "t").fits());  // 500 ns > an 81 ns pixel
+  EXPECT_TRUE(JustInTimePixels(d, JitConfig{JitMode::TwoPerField, -1, 10000, 2e6}, "t").fits());
+  EXPECT_THROW(JustInTimePixels(d, JitConfig{JitMode::PerPixel, -1, -1, 2e6}, "t"), InputError);
   EXPECT_THROW(TrackerFeed(yaw(1, 1.0), TrackerModel{0, 0}, "trace.csv"), InputError);
   EXPECT_THROW(TrackerFeed(std::vector<tracker::PoseSample>(1), TrackerModel{}, "trace.csv"), InputError);
 }

@@ -14,5 +14,6 @@ Runner add_config_command(CLI::App& app);
 Runner add_tracker_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
 Runner add_gtkw_command(CLI::App& app);
+Runner add_latency_command(CLI::App& app);
 
 }  // namespace arp::app

@@ -26,7 +26,19 @@ const char* to_string(JitMode m) {
 
 JustInTimePixels::JustInTimePixels(const DisplayRaster& d, const JitConfig& c, const std::string& source) : d_(d), c_(c) {
   if (c.lead_s != -1 && (!(c.lead_s >= 0) || c.lead_s > 1.0)) throw InputError(source, "JITP lead", "must be 0 .. 1 s (-1: one line)");
+  if (!(c.triangles >= 0) || !std::isfinite(c.triangles)) throw InputError(source, "triangles", "must be >= 0");
+  if (!(c.triangles_per_s > 0) || !std::isfinite(c.triangles_per_s)) throw InputError(source, "JITP triangle rate", "must be positive");
   lead_ps_ = c.lead_s == -1 ? d.line_period_ps() : static_cast<int64_t>(std::llround(c.lead_s * 1e12));
+}
+
+bool JustInTimePixels::fits() const {
+  const double work = c_.triangles / c_.triangles_per_s;
+  switch (c_.mode) {
+    case JitMode::PerScanline: return work <= static_cast<double>(d_.line_period_ps()) * 1e-12;
+    case JitMode::TwoPerField: return 2 * work <= static_cast<double>(d_.field_period_ps()) * 1e-12;
+    case JitMode::PerPixel: return work <= 1.0 / static_cast<double>(d_.timing().config().pixel_clock_hz);
+  }
+  return false;
 }
 
 std::string JustInTimePixels::name() const { return std::string("jitp-") + to_string(c_.mode); }
@@ -38,11 +50,17 @@ std::string JustInTimePixels::description() const {
     case JitMode::TwoPerField: std::snprintf(b, sizeof b, "two transforms per field (first and last pixel), interpolated, computed a field ahead"); break;
     case JitMode::PerPixel: std::snprintf(b, sizeof b, "a transform per pixel, computed %.1f us ahead", static_cast<double>(lead_ps_) * 1e-6); break;
   }
-  return b;
+  std::string out = b;
+  if (c_.triangles > 0) out += (fits() ? "; " : "; too slow for ") + std::to_string(static_cast<long long>(c_.triangles)) + " triangles per transform";
+  return out;
 }
 
 PoseUse JustInTimePixels::pose_for(int64_t frame, int x, int y) const {
   PoseUse u;
+  if (!fits()) {
+    u.shown = false;
+    return u;
+  }
   switch (c_.mode) {
     case JitMode::PerScanline:
       u.target_ps = d_.photon_ps(frame, 0, y);

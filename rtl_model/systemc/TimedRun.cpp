@@ -117,16 +117,20 @@ bool g_simulated = false;
 
 }  // namespace
 
+void claim_simulation() {
+  if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
+  g_simulated = true;
+  sc_set_time_resolution(1, SC_PS);
+  sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);  // e.g. the trace file's time-unit notice
+}
+
 TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) {
   if (opt.fidelity == Fidelity::Functional) {
     check_inputs(in, false);
     return run_functional(in, opt);
   }
   check_inputs(in, true);
-  if (g_simulated) throw std::logic_error("SystemC cannot run a second simulation in one process");
-  g_simulated = true;
-  sc_set_time_resolution(1, SC_PS);
-  sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);  // e.g. the trace file's time-unit notice
+  claim_simulation();
 
   TimedResult r;
   r.fidelity = opt.fidelity;

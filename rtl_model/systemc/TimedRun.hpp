@@ -57,4 +57,8 @@ struct TimedResult {
 // setting) before anything is simulated.
 TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt);
 
+// Every SystemC simulation of a process starts here: SystemC cannot run a
+// second one (std::logic_error then). Sets the 1 ps resolution and quiets SC_INFO.
+void claim_simulation();
+
 }  // namespace arp::scm

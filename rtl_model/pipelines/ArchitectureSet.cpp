@@ -1,0 +1,29 @@
+#include "ArchitectureSet.hpp"
+
+#include <cmath>
+
+#include "common/InputError.hpp"
+
+namespace arp::pipelines {
+
+std::vector<std::unique_ptr<DisplayArchitecture>> make_architectures(const DisplayRaster& d, const dp::ArpConfig& c,
+                                                                     const LabConfig& lab, const std::string& source) {
+  if (!(lab.horizon_s >= 0) || !std::isfinite(lab.horizon_s) || lab.horizon_s > 1.0)
+    throw InputError(source, "prediction horizon", "must be 0 .. 1 s");
+  std::vector<std::unique_ptr<DisplayArchitecture>> v;
+  ConventionalConfig cc = lab.conventional;
+  cc.horizon_s = lab.horizon_s;
+  cc.triangles = lab.triangles;
+  SlatsConfig sc = lab.slats;
+  sc.horizon_s = lab.horizon_s;
+  sc.triangles = lab.triangles;
+  v.push_back(std::make_unique<ConventionalPipeline>(d, cc, source));
+  v.push_back(std::make_unique<SlatsPipeline>(d, sc, source));
+  for (JitMode m : {JitMode::PerScanline, JitMode::TwoPerField, JitMode::PerPixel})
+    v.push_back(std::make_unique<JustInTimePixels>(d, JitConfig{m, lab.jit_lead_s, lab.triangles, lab.jit_triangles_per_s}, source));
+  for (dp::LatchPolicy l : {dp::LatchPolicy::PerFrame, dp::LatchPolicy::PerScanline, dp::LatchPolicy::PerPixel})
+    v.push_back(std::make_unique<ArpOrientationPath>(d, c, l, lab.horizon_s));
+  return v;
+}
+
+}  // namespace arp::pipelines
