@@ -187,6 +187,15 @@ int run_latency(const LatencyArgs& a) {
   if (a.grid < 1 || a.grid > 512) throw InputError("--grid", "", "must be 1 .. 512 pixels");
   if (!(a.horizon_ms >= 0)) throw InputError("--horizon-ms", "", "must be >= 0 (prediction looks ahead, not back)");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  for (auto [name, v] : {std::pair<const char*, double>{"--conv-transform-ms", a.conv_transform_ms}, {"--conv-render-ms", a.conv_render_ms},
+                         {"--conv-copy-ms", a.conv_copy_ms}, {"--conv-triangle-rate", a.conv_rate}, {"--slats-setup-ms", a.slats_setup_ms},
+                         {"--slats-copy-ms", a.slats_copy_ms}, {"--slats-triangle-rate", a.slats_rate},
+                         {"--jitp-triangle-rate", a.jit_rate}, {"--tracker-rate", a.tracker_rate}})
+    if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive number");
+  if (!(a.triangles >= 0) || !std::isfinite(a.triangles)) throw InputError("--triangles", "", "must be >= 0");
+  if (a.tracker_latency_ms != -1 && !(a.tracker_latency_ms >= 0 && a.tracker_latency_ms <= 1000))
+    throw InputError("--tracker-latency-ms", "", "must be 0 .. 1000 ms");
+  if (a.jit_lead_us != -1 && !(a.jit_lead_us >= 0)) throw InputError("--jitp-lead-us", "", "must be >= 0 (or -1: one line)");
   Prediction pred;
   if (!parse_prediction(a.predict, pred)) throw InputError("--predict", a.predict, "must be none, velocity or acceleration");
   TrackerModel tm;
@@ -226,12 +235,12 @@ int run_latency(const LatencyArgs& a) {
                                         : "pendulum " + fmt("%.0f", m.amplitude) + " deg, " + fmt("%.2f", m.period) + " s";
   }
   const TrackerFeed feed(motion, tm, a.trace.empty() ? "--motion" : a.trace);
-  auto archs = make_architectures(d, c, lab, "arpsim latency");
+  auto archs = make_architectures(d, c, lab, "arpsim latency settings");
   std::vector<std::string> names;
   for (const auto& ar : archs) names.push_back(ar->name());
   fs::create_directories(out);  // only once every setting has been checked
 
-  const int64_t sweep_steps = a.no_sweeps ? 0 : 8 + 11 + 7;
+  const int64_t sweep_steps = a.no_sweeps ? 0 : 8 + 21 + 7;
   Progress progress(a.quiet, static_cast<int64_t>(archs.size()) + sweep_steps + (a.no_apparatus ? 0 : 1) + 1);
   LabSettings ls;
   ls.first_frame = first_frame;
@@ -361,7 +370,7 @@ int run_latency(const LatencyArgs& a) {
     csv += "\n";
     LabSettings hp = sw;
     hp.prediction = pred == Prediction::None ? Prediction::Velocity : pred;
-    for (int h = 0; h <= 100; h += 10) {
+    for (int h = 0; h <= 100; h += 5) {
       LabConfig hl = lab;
       hl.horizon_s = h * 1e-3;
       auto ha = make_architectures(d, c, hl, "horizon sweep");
