@@ -16,7 +16,9 @@ puts "displayed [llength [gtkwave::getDisplayedSignals]]"
 gtkwave::/File/Quit
 TCL
 "$ARPSIM" run -q --fidelity rtl --frames 1 --every 0 --vcd "$tmp/arp.vcd" --vcd-lines 0:2 >/dev/null
-pairs=("$tmp/arp.vcd waveforms/arp.gtkw" "testbench/systemc/golden/tiny_rtl.vcd waveforms/tiny_rtl.gtkw")
+"$ARPSIM" latency -q --frames 30 --no-sweeps --out-dir "$tmp/lat" >/dev/null  # the apparatus oscilloscope
+pairs=("$tmp/arp.vcd waveforms/arp.gtkw" "testbench/systemc/golden/tiny_rtl.vcd waveforms/tiny_rtl.gtkw"
+       "$tmp/lat/apparatus.vcd $tmp/lat/apparatus.gtkw")
 for g in waveforms/bench_*.gtkw; do
   m=$(basename "$g" .gtkw); m=${m#bench_}
   ARPSIM_BENCH_VCD="$tmp" "$BENCHES" --gtest_filter="ModuleBench.$m" >/dev/null

@@ -23,6 +23,8 @@
 #include "GtkwSaveFile.hpp"
 #include "MotionOptions.hpp"
 #include "common/InputError.hpp"
+#include "host/scene/Gallery.hpp"
+#include "host/scene/SceneFile.hpp"
 #include "rtl_model/pipelines/ArchitectureSet.hpp"
 #include "rtl_model/pipelines/LatencyLab.hpp"
 #include "testbench/apparatus/Oscilloscope.hpp"
@@ -39,7 +41,7 @@ using namespace arp::pipelines;
 struct LatencyArgs {
   ConfigOptions cfg;
   MotionOptions motion;
-  std::string trace, out_dir = "latency", predict = "none";
+  std::string trace, out_dir = "latency", predict = "none", scene;
   bool olano = false, no_sweeps = false, no_apparatus = false, quiet = false;
   int64_t frames = 180;
   int grid = 8;
@@ -102,7 +104,9 @@ void plot(const fs::path& script, const std::string& text) {
     std::printf("  note: gnuplot not found; %s is ready for it\n", script.c_str());
     return;
   }
-  const std::string cmd = "cd '" + script.parent_path().string() + "' && gnuplot '" + script.filename().string() + "'";
+  // gnuplot's warnings (e.g. a series with no image at all) go to a log beside the script.
+  const std::string cmd = "cd '" + script.parent_path().string() + "' && gnuplot '" + script.filename().string() + "' 2> '" +
+                          script.filename().string() + ".log'";
   if (std::system(cmd.c_str()) != 0) std::printf("  note: gnuplot failed on %s\n", script.c_str());
 }
 
@@ -201,7 +205,15 @@ int run_latency(const LatencyArgs& a) {
   TrackerModel tm;
   tm.rate_hz = a.tracker_rate;
   tm.latency_s = (a.tracker_latency_ms >= 0 ? a.tracker_latency_ms : (a.olano ? 33.0 : 1.0)) * 1e-3;
-  const LabConfig lab = lab_config(a);
+  LabConfig lab = lab_config(a);
+  std::string scene_note;
+  if (!a.scene.empty()) {
+    // A real scene's size drives the renderers that draw it per image.
+    if (a.triangles != 0) throw InputError("--triangles", "", "give either --triangles or --scene, not both");
+    const host::Scene sc = a.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.scene);
+    lab.triangles = static_cast<double>(sc.triangles());
+    scene_note = "; scene " + a.scene + " (" + std::to_string(sc.triangles()) + " triangles per image)";
+  }
   const DisplayRaster d(c.timing, c.lens.fov_deg);
   const fs::path out(a.out_dir);
 
@@ -268,7 +280,7 @@ int run_latency(const LatencyArgs& a) {
                    (d.fields_per_frame() == 2 ? " interlaced" : "") + ", " + fmt("%.2f", 1e12 / static_cast<double>(d.field_period_ps())) +
                    " fields/s, " + fmt("%.0f", d.fov_deg()) + " deg across (" + fmt("%.2f", d.pixels_per_degree()) + " px/deg); motion: " +
                    motion_name + "; tracker " + fmt("%.0f", tm.rate_hz) + " Hz, " + fmt("%.1f", tm.latency_s * 1e3) + " ms latency; prediction " +
-                   to_string(pred) + " (horizon " + fmt("%.1f", a.horizon_ms) + " ms); " + std::to_string(a.frames) + " refreshes, every " +
+                   to_string(pred) + " (horizon " + fmt("%.1f", a.horizon_ms) + " ms)" + scene_note + "; " + std::to_string(a.frames) + " refreshes, every " +
                    std::to_string(a.grid) + "th pixel and line.\n\n"
                    "Latency: photon time minus the sample time of the tracker report the pixel was computed from. "
                    "Error: the angle between where the pixel's pose put a world point and where the true head at the pixel's photon "
@@ -289,8 +301,9 @@ int run_latency(const LatencyArgs& a) {
           (r.latency.count ? fmt("%.3f", r.latency.min) + " / " + fmt("%.3f", r.latency.p50) + " / " + fmt("%.3f", r.latency.p99) + " / " +
                                  fmt("%.3f", r.latency.max)
                            : std::string("no image")) +
-          " | " + fmt("%.2f", r.centre_error.mean) + " / " + fmt("%.2f", r.centre_error.max) + " | " + fmt("%.2f", r.max_error.max) + " | " +
-          std::to_string(r.missed_images) + " |\n";
+          " | " + (r.latency.count ? fmt("%.2f", r.centre_error.mean) + " / " + fmt("%.2f", r.centre_error.max) + " | " + fmt("%.2f", r.max_error.max)
+                                   : std::string("- | -")) +
+          " | " + std::to_string(r.missed_images) + " |\n";
   }
   md += "\nArchitectures:\n\n";
   for (const auto& r : results) md += "- **" + r.name + "**: " + r.description + "\n";
@@ -495,6 +508,7 @@ Runner add_latency_command(CLI::App& app) {
   cmd->add_option("--conv-triangle-rate", a->conv_rate, "Conventional: triangles rendered per second")->capture_default_str();
   cmd->add_flag("--no-field-sync", a->no_field_sync, "Conventional: stages start as soon as they can, not at vertical blanks");
   cmd->add_option("--triangles", a->triangles, "Scene size drawn per image by the conventional pipeline, Slats and just-in-time pixels")->capture_default_str();
+  cmd->add_option("--scene", a->scene, "Scene whose triangles the conventional pipeline, Slats and JITP draw per image: gallery or a scene file");
   cmd->add_option("--slats-setup-ms", a->slats_setup_ms, "Slats: fixed work per field")->capture_default_str();
   cmd->add_option("--slats-copy-ms", a->slats_copy_ms, "Slats: first half of the copy, before the retrace")->capture_default_str();
   cmd->add_option("--slats-triangle-rate", a->slats_rate, "Slats: triangles per second (one GP)")->capture_default_str();
