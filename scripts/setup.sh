@@ -7,7 +7,7 @@ PKGS=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenimageio-dev openimageio-tools
   libglm-dev libcli11-dev nlohmann-json3-dev
-  libusb-1.0-0-dev
+  libusb-1.0-0-dev umockdev libumockdev-dev
   libsystemc-dev
   libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
 )

@@ -1,11 +1,16 @@
 // arpsim tracker: head-tracker input. `list` finds Oculus Rift DK1/DK2
-// trackers on USB; `synth` writes a synthetic head-motion trace (CSV).
+// trackers on USB; `record` streams one to a trace file; `synth` writes a
+// synthetic head-motion trace (CSV).
+#include <chrono>
+#include <cinttypes>
+#include <csignal>
 #include <cstdio>
 
 #include "Commands.hpp"
 #include "common/InputError.hpp"
 #include "MotionOptions.hpp"
 #include "tracker/TraceFile.hpp"
+#include "tracker/RiftStream.hpp"
 #include "tracker/UsbTrackers.hpp"
 
 namespace arp::app {
@@ -30,6 +35,58 @@ int run_list() {
   return 0;
 }
 
+volatile std::sig_atomic_t g_stop = 0;
+void on_interrupt(int) { g_stop = 1; }
+
+struct RecordArgs {
+  std::string out;
+  double seconds = 10.0;
+  bool quiet = false;
+};
+
+// Streams the first DK1/DK2 for the given time and writes what it fused.
+// An unplug mid-run is reported and survived (the device is looked for again);
+// Ctrl-C stops early and still writes everything recorded.
+int run_record(const RecordArgs& a) {
+  if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw InputError("--seconds", "", "must be more than 0 and at most a day");
+  tracker::RiftStream stream;
+  std::string err;
+  if (!stream.open(err)) {
+    std::fprintf(stderr, "arpsim tracker record: %s\n", err.c_str());
+    return 1;
+  }
+  std::printf("arpsim tracker record: %s, %.1f s -> %s (Ctrl-C stops early and keeps what was recorded)\n",
+              stream.model() == tracker::RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2", a.seconds, a.out.c_str());
+  std::signal(SIGINT, on_interrupt);
+  std::vector<tracker::PoseSample> poses;
+  const auto t0 = std::chrono::steady_clock::now();
+  double last_line = -1;
+  for (;;) {
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (el >= a.seconds || g_stop) break;
+    stream.poll(10, poses);
+    for (const auto& e : stream.take_events())
+      std::fprintf(stderr, "%s  [%.3f s] %s: %s\n", a.quiet ? "" : "\n", e.at_s, tracker::to_string(e.kind), e.detail.c_str());
+    if (!a.quiet && el - last_line >= 0.25) {
+      last_line = el;
+      std::fprintf(stderr, "\r  %6.2f / %.2f s  %8zu samples  %s  ETA %.1f s   ", el, a.seconds, poses.size(),
+                   stream.connected() ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
+    }
+  }
+  std::signal(SIGINT, SIG_DFL);
+  if (!a.quiet) std::fprintf(stderr, "\n");
+  if (poses.empty()) {
+    std::fprintf(stderr, "arpsim tracker record: nothing was received; %s not written\n", a.out.c_str());
+    return 1;
+  }
+  tracker::write_trace_csv(a.out, poses);
+  const auto& st = stream.stats();
+  std::printf("  %zu samples from %" PRId64 " reports; %" PRId64 " malformed, %" PRId64 " disconnects, %" PRId64
+              " reconnects, %" PRId64 " keep-alives -> %s\n",
+              poses.size(), st.reports, st.malformed, st.disconnects, st.reconnects, st.keep_alives, a.out.c_str());
+  return 0;
+}
+
 struct SynthArgs {
   MotionOptions motion;
   std::string out;
@@ -47,7 +104,7 @@ int run_synth(const SynthArgs& a) {
 }  // namespace
 
 Runner add_tracker_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("tracker", "Head-tracker input: find USB trackers, make synthetic traces");
+  CLI::App* cmd = app.add_subcommand("tracker", "Head-tracker input: find and record USB trackers, make synthetic traces");
   cmd->require_subcommand(1);
   CLI::App* list = cmd->add_subcommand("list", "List Oculus Rift DK1/DK2 trackers on USB");
   auto a = std::make_shared<SynthArgs>();
@@ -56,7 +113,12 @@ Runner add_tracker_command(CLI::App& app) {
   synth->add_option("--seconds", a->seconds, "Duration")->capture_default_str();
   synth->add_option("--start", a->start, "Time of the first sample, seconds")->capture_default_str();
   synth->add_option("--out,-o", a->out, "Trace file to write")->required();
-  return [list, a] { return list->parsed() ? run_list() : run_synth(*a); };
+  auto r = std::make_shared<RecordArgs>();
+  CLI::App* record = cmd->add_subcommand("record", "Stream an Oculus Rift DK1/DK2 to a trace file (CSV, docs/tracker.md)");
+  record->add_option("--seconds", r->seconds, "How long to record")->capture_default_str();
+  record->add_option("file", r->out, "Trace file to write")->required();
+  record->add_flag("--quiet,-q", r->quiet, "No progress line");
+  return [list, record, a, r] { return list->parsed() ? run_list() : record->parsed() ? run_record(*r) : run_synth(*a); };
 }
 
 }  // namespace arp::app

@@ -1,0 +1,308 @@
+#include "RiftEmulator.hpp"
+
+#include <linux/ioctl.h>
+#include <linux/usbdevice_fs.h>
+#include <umockdev.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "tracker/RiftProtocol.hpp"
+#include "tracker/SyntheticImu.hpp"
+#include "tracker/UsbTrackers.hpp"
+
+namespace arp::test {
+
+namespace {
+
+struct Urb {
+  UMockdevIoctlData* data = nullptr;    // the client's struct usbdevfs_urb (a reference we hold)
+  UMockdevIoctlData* buffer = nullptr;  // its transfer buffer
+  int type = 0, endpoint = 0, status = 0, actual = 0;
+};
+
+void drop(Urb& u) {
+  if (u.buffer) umockdev_ioctl_data_unref(u.buffer);
+  if (u.data) umockdev_ioctl_data_unref(u.data);
+  u.buffer = u.data = nullptr;
+}
+
+std::string descriptors_hex(tracker::RiftModel m) {
+  const uint16_t pid = m == tracker::RiftModel::DK1 ? tracker::kDk1Product : tracker::kDk2Product;
+  const uint8_t d[] = {
+      // device: USB 2.0, class per interface, 64-byte EP0, vendor 0x2833, product, one configuration
+      18, 1, 0x00, 0x02, 0, 0, 0, 64, 0x33, 0x28, static_cast<uint8_t>(pid & 0xff), static_cast<uint8_t>(pid >> 8), 0x00, 0x01, 1, 2, 0, 1,
+      // configuration: 34 bytes in all, one interface
+      9, 2, 34, 0, 1, 1, 0, 0x80, 50,
+      // interface 0: HID, one endpoint
+      9, 4, 0, 0, 1, 3, 0, 0, 0,
+      // HID descriptor
+      9, 0x21, 0x11, 0x01, 0, 1, 0x22, 0x40, 0x00,
+      // endpoint 0x81: interrupt IN, 64 bytes, every 1 ms
+      7, 5, 0x81, 3, 64, 0, 1};
+  std::string s;
+  char b[3];
+  for (uint8_t x : d) {
+    std::snprintf(b, sizeof b, "%02x", x);
+    s += b;
+  }
+  return s;
+}
+
+}  // namespace
+
+struct RiftEmulator::State {
+  tracker::RiftModel model;
+  std::vector<std::array<uint8_t, tracker::kRiftReportSize>> reports;
+  UMockdevTestbed* testbed = nullptr;
+  UMockdevIoctlBase* handler = nullptr;
+  mutable std::mutex mu;
+  bool connected = true, detached = false, claimed = false, cut_next = false;
+  std::deque<Urb> done, interrupts;
+  std::vector<std::vector<uint8_t>> features;
+  int64_t sent = 0;
+  std::chrono::steady_clock::time_point streaming_since{};
+  bool streaming = false;
+  int64_t delivered_at_start = 0;
+  std::chrono::steady_clock::time_point keep_alive_until{};
+
+  // A report is due every millisecond of wall time while the keep-alive holds.
+  bool report_due(std::chrono::steady_clock::time_point now) const {
+    if (!streaming || now > keep_alive_until || sent >= static_cast<int64_t>(reports.size())) return false;
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now - streaming_since).count();
+    return sent - delivered_at_start <= ms;
+  }
+
+  gboolean handle(UMockdevIoctlClient* client) {
+    std::lock_guard<std::mutex> lock(mu);
+    const gulong request = umockdev_ioctl_client_get_request(client);
+    UMockdevIoctlData* arg = umockdev_ioctl_client_get_arg(client);
+    auto reply = [&](int result, int err) {
+      umockdev_ioctl_client_complete(client, result, err);
+      return TRUE;
+    };
+    if (!connected && request != USBDEVFS_REAPURB && request != USBDEVFS_REAPURBNDELAY && request != USBDEVFS_DISCARDURB &&
+        request != USBDEVFS_RELEASEINTERFACE)
+      return reply(-1, ENODEV);
+    switch (request) {
+      case USBDEVFS_GET_CAPABILITIES: {
+        UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, sizeof(guint32), nullptr);
+        *reinterpret_cast<guint32*>(d->data) = USBDEVFS_CAP_REAP_AFTER_DISCONNECT;
+        umockdev_ioctl_data_unref(d);
+        return reply(0, 0);
+      }
+      case USBDEVFS_GETDRIVER: {
+        if (detached) return reply(-1, ENODATA);
+        UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_getdriver), nullptr);
+        std::strcpy(reinterpret_cast<usbdevfs_getdriver*>(d->data)->driver, "usbhid");
+        umockdev_ioctl_data_unref(d);
+        return reply(0, 0);
+      }
+      case USBDEVFS_IOCTL: {  // detach (and re-attach) the kernel driver
+        UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_ioctl), nullptr);
+        const int code = reinterpret_cast<usbdevfs_ioctl*>(d->data)->ioctl_code;
+        umockdev_ioctl_data_unref(d);
+        if (code == static_cast<int>(USBDEVFS_DISCONNECT)) {
+          if (detached) return reply(-1, ENODATA);
+          detached = true;
+          return reply(0, 0);
+        }
+        if (code == static_cast<int>(USBDEVFS_CONNECT)) {
+          detached = false;
+          return reply(0, 0);
+        }
+        return reply(-1, ENOTTY);
+      }
+      case USBDEVFS_CLAIMINTERFACE:
+        if (!detached) return reply(-1, EBUSY);  // usbhid still has it
+        claimed = true;
+        return reply(0, 0);
+      case USBDEVFS_RELEASEINTERFACE:
+        claimed = false;
+        return reply(0, 0);
+      case USBDEVFS_SUBMITURB: {
+        Urb u;
+        u.data = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_urb), nullptr);
+        const auto* urb = reinterpret_cast<const usbdevfs_urb*>(u.data->data);
+        u.type = urb->type;
+        u.endpoint = urb->endpoint;
+        u.buffer = umockdev_ioctl_data_resolve(u.data, offsetof(usbdevfs_urb, buffer), static_cast<gsize>(urb->buffer_length), nullptr);
+        if (u.type == USBDEVFS_URB_TYPE_CONTROL) {
+          const uint8_t* setup = u.buffer->data;
+          const int length = setup[6] | (setup[7] << 8);
+          if (setup[0] == tracker::kHidRequestTypeOut && setup[1] == tracker::kHidSetReport && (setup[3] == 3)) {
+            std::vector<uint8_t> rep(setup + 8, setup + 8 + length);
+            if (!rep.empty() && (rep[0] == tracker::kDk1KeepAliveReport || rep[0] == tracker::kDk2KeepAliveReport) && rep.size() >= 5) {
+              const int interval = rep[rep.size() - 2] | (rep[rep.size() - 1] << 8);
+              keep_alive_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(interval);
+              if (!streaming) {
+                streaming = true;
+                streaming_since = std::chrono::steady_clock::now();
+                delivered_at_start = sent;
+              }
+            }
+            features.push_back(std::move(rep));
+            u.actual = length;
+          } else {
+            u.status = -EPIPE;  // anything else stalls
+          }
+          done.push_back(u);
+          return reply(0, 0);
+        }
+        if (u.type == USBDEVFS_URB_TYPE_INTERRUPT && u.endpoint == 0x81) {
+          interrupts.push_back(u);
+          return reply(0, 0);
+        }
+        drop(u);
+        return reply(-1, EINVAL);
+      }
+      case USBDEVFS_DISCARDURB: {
+        const gulong addr = *reinterpret_cast<const gulong*>(arg->data);
+        for (auto it = interrupts.begin(); it != interrupts.end(); ++it)
+          if (it->data->client_addr == addr) {
+            Urb u = *it;
+            interrupts.erase(it);
+            u.status = -ENOENT;
+            done.push_back(u);
+            return reply(0, 0);
+          }
+        return reply(-1, EINVAL);
+      }
+      case USBDEVFS_REAPURB:
+      case USBDEVFS_REAPURBNDELAY: {
+        Urb u;
+        const auto now = std::chrono::steady_clock::now();
+        if (!done.empty()) {
+          u = done.front();
+          done.pop_front();
+        } else if (!connected && !interrupts.empty()) {
+          u = interrupts.front();  // unplugged: what was in flight comes back failed
+          interrupts.pop_front();
+          u.status = -ENODEV;
+        } else if (connected && !interrupts.empty() && report_due(now)) {
+          u = interrupts.front();
+          interrupts.pop_front();
+          const auto& rep = reports[static_cast<size_t>(sent++)];
+          u.actual = cut_next ? 10 : static_cast<int>(rep.size());
+          cut_next = false;
+          std::memcpy(u.buffer->data, rep.data(), static_cast<size_t>(u.actual));
+        } else {
+          return reply(-1, connected ? EAGAIN : ENODEV);
+        }
+        auto* urb = reinterpret_cast<usbdevfs_urb*>(u.data->data);
+        urb->status = u.status;
+        urb->actual_length = u.actual;
+        UMockdevIoctlData* ptr = umockdev_ioctl_data_resolve(arg, 0, sizeof(gpointer), nullptr);
+        umockdev_ioctl_data_set_ptr(ptr, 0, u.data);
+        umockdev_ioctl_data_unref(ptr);
+        umockdev_ioctl_client_complete(client, 0, 0);
+        drop(u);
+        return TRUE;
+      }
+      default:
+        return FALSE;
+    }
+  }
+};
+
+namespace {
+gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
+  return static_cast<RiftEmulator::State*>(self)->handle(client);
+}
+}  // namespace
+
+RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth) : s_(std::make_unique<State>()) {
+  s_->model = model;
+  // The IMU readings of the motion, as reports with one sample each; the
+  // counters start just before they wrap.
+  const auto imu = tracker::synthesize_imu(truth, tracker::ImuNoise{});
+  for (size_t k = 0; k < imu.size(); ++k) {
+    tracker::ImuReport r;
+    r.model = model;
+    r.sample_count = 1;
+    r.timestamp = model == tracker::RiftModel::DK1 ? static_cast<uint32_t>((65000 + k) & 0xffff)
+                                                   : static_cast<uint32_t>(4294767296ull + k * 1000ull);
+    r.samples_since_start = static_cast<uint16_t>(k);
+    r.temperature = 2500;
+    for (int a = 0; a < 3; ++a) {
+      r.samples[0].gyro[static_cast<size_t>(a)] = static_cast<int32_t>(std::lround(imu[k].gyro[a] * 1e4));
+      r.samples[0].accel[static_cast<size_t>(a)] = static_cast<int32_t>(std::lround(imu[k].accel[a] * 1e4));
+    }
+    s_->reports.push_back(tracker::encode_report(r));
+  }
+  s_->testbed = umockdev_testbed_new();
+  s_->handler = umockdev_ioctl_base_new();
+  g_signal_connect_after(s_->handler, "handle-ioctl", G_CALLBACK(on_ioctl), s_.get());
+  GError* err = nullptr;
+  if (!umockdev_testbed_attach_ioctl(s_->testbed, "/dev/bus/usb/001/002", s_->handler, &err))
+    throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot attach the ioctl handler"));
+  const std::string dev = "P: /devices/pci0000:00/usb1/1-1\n"
+                          "N: bus/usb/001/002\n"
+                          "E: SUBSYSTEM=usb\nE: DEVTYPE=usb_device\nE: DRIVER=usb\nE: BUSNUM=001\nE: DEVNUM=002\n"
+                          "E: DEVNAME=/dev/bus/usb/001/002\n"
+                          "A: busnum=1\\n\nA: devnum=2\\n\nA: speed=12\\n\nA: bConfigurationValue=1\\n\n"
+                          "A: idVendor=2833\\n\nA: idProduct=" +
+                          std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") +
+                          "\\n\n"
+                          "H: descriptors=" +
+                          descriptors_hex(model) + "\n";
+  if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err))
+    throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot add the device"));
+}
+
+RiftEmulator::~RiftEmulator() {
+  {
+    std::lock_guard<std::mutex> lock(s_->mu);
+    for (auto& u : s_->done) drop(u);
+    for (auto& u : s_->interrupts) drop(u);
+  }
+  g_clear_object(&s_->handler);
+  g_clear_object(&s_->testbed);
+}
+
+void RiftEmulator::unplug() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->connected = false;
+  s_->claimed = false;
+}
+
+void RiftEmulator::replug() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->connected = true;
+  s_->detached = false;  // the kernel binds usbhid again
+  s_->streaming = false;  // until the next keep-alive
+}
+
+void RiftEmulator::inject_malformed_report() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->cut_next = true;
+}
+
+std::vector<std::vector<uint8_t>> RiftEmulator::feature_reports() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->features;
+}
+
+int64_t RiftEmulator::reports_sent() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->sent;
+}
+
+bool RiftEmulator::kernel_driver_detached() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->detached;
+}
+
+bool RiftEmulator::interface_claimed() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->claimed;
+}
+
+}  // namespace arp::test

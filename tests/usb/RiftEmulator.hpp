@@ -1,0 +1,43 @@
+// An Oculus Rift DK1 or DK2 IMU emulated in user space with umockdev (tests
+// only): a sysfs device with the Rift's descriptors, and an ioctl handler
+// standing in for the kernel's usbdevfs -- kernel-driver query and detach,
+// interface claim, HID feature reports (recorded), interrupt IN transfers on
+// 0x81 answered at 1000 reports per second of wall time with reports encoded
+// from a synthetic head motion (the DK1's 16-bit millisecond counter starts
+// just before its wrap), a malformed report on request, the device stopping
+// when its keep-alive runs out, and unplugging and replugging.
+//
+// The process (and any child it starts) must run under umockdev's preload
+// library (ctest runs the USB tests through umockdev-wrapper).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "tracker/OculusReport.hpp"
+#include "tracker/PoseSample.hpp"
+
+namespace arp::test {
+
+class RiftEmulator {
+ public:
+  // truth: the head motion the IMU follows (samples with angular velocity, 1 kHz or finer).
+  RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth);
+  ~RiftEmulator();
+
+  void unplug();
+  void replug();
+  void inject_malformed_report();  // the next report is cut short
+  // Feature reports received (each as sent: report id first).
+  std::vector<std::vector<uint8_t>> feature_reports() const;
+  int64_t reports_sent() const;
+  bool kernel_driver_detached() const;
+  bool interface_claimed() const;
+
+  struct State;
+
+ private:
+  std::unique_ptr<State> s_;
+};
+
+}  // namespace arp::test

@@ -1,0 +1,151 @@
+// The libusb streaming driver end to end against emulated DK1 and DK2 IMUs
+// (umockdev; see RiftEmulator.hpp): the kernel driver detached, interface 0
+// claimed, config and keep-alive feature reports byte-exact, reports decoded
+// and fused into the synthetic motion across the device counter's wrap, a
+// malformed report counted and skipped, the stream surviving an unplug (last
+// pose held, event reported) and resuming after the replug, and
+// `arpsim tracker record` writing a trace from the emulated device.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "../TestSupport.hpp"
+#include "RiftEmulator.hpp"
+#include "tracker/Fusion.hpp"
+#include "tracker/RiftProtocol.hpp"
+#include "tracker/RiftStream.hpp"
+#include "tracker/SyntheticMotion.hpp"
+#include "tracker/TraceFile.hpp"
+
+using namespace arp;
+using namespace arp::tracker;
+
+namespace {
+
+std::vector<PoseSample> yaw_90(double seconds) {
+  SamplingSpec s;
+  s.rate_hz = 1000;
+  s.duration_s = seconds;
+  return constant_rotation({0, 1, 0}, 90.0, s);
+}
+
+// Polls for `seconds` of wall time, collecting poses.
+void stream_for(RiftStream& r, double seconds, std::vector<PoseSample>& out) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < until) r.poll(5, out);
+}
+
+void expect_fused_motion(const RiftStream& r, const std::vector<PoseSample>& truth) {
+  // Report k carries the motion's sample k: after n samples the orientation is the truth's sample n - 1
+  // integrated over one more millisecond (the first step).
+  const int64_t n = r.stats().samples;
+  ASSERT_GT(n, 100);
+  ASSERT_LT(static_cast<size_t>(n), truth.size());
+  EXPECT_LT(angle_between_deg(r.last_pose().orientation, truth[static_cast<size_t>(n)].orientation), 0.5) << n << " samples";
+}
+
+}  // namespace
+
+TEST(RiftStream, Dk1StreamsAcrossTheCounterWrapAndKeepsItsKeepAlive) {
+  const auto truth = yaw_90(4.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  RiftStreamOptions o;
+  o.keep_alive_ms = 300;           // the device stops 300 ms after the last keep-alive...
+  o.keep_alive_resend_s = 0.1;     // ...so streaming for 1 s needs the re-sends
+  RiftStream r(o);
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  EXPECT_EQ(r.model(), RiftModel::DK1);
+  EXPECT_TRUE(dk1.kernel_driver_detached());
+  EXPECT_TRUE(dk1.interface_claimed());
+  EXPECT_TRUE(r.stats().kernel_driver_detached);
+  std::vector<PoseSample> poses;
+  stream_for(r, 1.0, poses);
+  EXPECT_TRUE(r.connected());
+  EXPECT_GT(r.stats().reports, 700);  // 1000 a second (wall-time paced), the 16-bit ms counter wrapped after 536
+  EXPECT_EQ(r.stats().malformed, 0);
+  EXPECT_EQ(r.stats().time_went_back, 0);
+  expect_fused_motion(r, truth);
+  // Poses are in time order, 1 ms apart across the wrap.
+  for (size_t i = 1; i < poses.size(); ++i) ASSERT_EQ(poses[i].time_ps - poses[i - 1].time_ps, 1'000'000'000) << i;
+  // The config report first, then keep-alives, byte-exact.
+  const auto f = dk1.feature_reports();
+  ASSERT_GE(f.size(), 9u);
+  EXPECT_EQ(f[0], dk1_config_report(1, 0x0c, 0, 300));
+  EXPECT_EQ(f[1], keep_alive_report(RiftModel::DK1, 2, 300));
+  EXPECT_EQ(f[2][0], kDk1KeepAliveReport);
+  EXPECT_GE(r.stats().keep_alives, 9);
+}
+
+TEST(RiftStream, Dk2MalformedReportUnplugAndReplug) {
+  const auto truth = yaw_90(6.0);
+  test::RiftEmulator dk2(RiftModel::DK2, truth);
+  RiftStreamOptions o;
+  o.reconnect_every_s = 0.05;
+  RiftStream r(o);
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  EXPECT_EQ(r.model(), RiftModel::DK2);
+  EXPECT_EQ(dk2.feature_reports().at(0), keep_alive_report(RiftModel::DK2, 1, 10000));
+  std::vector<PoseSample> poses;
+  stream_for(r, 0.3, poses);
+  dk2.inject_malformed_report();
+  stream_for(r, 0.2, poses);
+  EXPECT_EQ(r.stats().malformed, 1);
+  expect_fused_motion(r, truth);
+  // Unplugged: the stream notices, holds the last pose and keeps trying.
+  dk2.unplug();
+  stream_for(r, 0.3, poses);
+  EXPECT_FALSE(r.connected());
+  EXPECT_EQ(r.stats().disconnects, 1);
+  const PoseSample held = r.last_pose();
+  const size_t before = poses.size();
+  stream_for(r, 0.2, poses);
+  EXPECT_EQ(poses.size(), before);
+  EXPECT_EQ(r.last_pose().time_ps, held.time_ps);
+  // Plugged back: detached, claimed and streaming again on the same timeline.
+  dk2.replug();
+  stream_for(r, 0.5, poses);
+  EXPECT_TRUE(r.connected());
+  EXPECT_EQ(r.stats().reconnects, 1);
+  EXPECT_GT(poses.size(), before + 100);
+  for (size_t i = 1; i < poses.size(); ++i) ASSERT_GT(poses[i].time_ps, poses[i - 1].time_ps) << i;
+  bool saw_disconnect = false, saw_reconnect = false, saw_malformed = false;
+  for (const auto& e : r.take_events()) {
+    saw_disconnect |= e.kind == StreamEvent::Kind::Disconnected;
+    saw_reconnect |= e.kind == StreamEvent::Kind::Reconnected;
+    saw_malformed |= e.kind == StreamEvent::Kind::MalformedReport && e.detail.find("10 bytes") != std::string::npos;
+  }
+  EXPECT_TRUE(saw_disconnect);
+  EXPECT_TRUE(saw_reconnect);
+  EXPECT_TRUE(saw_malformed);
+}
+
+TEST(RiftStream, TrackerListAndRecordFromTheCommandLine) {
+  const auto truth = yaw_90(6.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  arp::test::TempDir d;
+  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  EXPECT_EQ(list.status, 0) << list.output;
+  EXPECT_NE(list.output.find("Oculus Rift DK1"), std::string::npos) << list.output;
+  const auto rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 0.5 " + d.file("head.csv"));
+  ASSERT_EQ(rec.status, 0) << rec.output;
+  const auto trace = read_trace_csv(d.file("head.csv"));
+  EXPECT_GT(trace.size(), 300u);
+  EXPECT_LT(angle_between_deg(trace.back().orientation, truth[trace.size()].orientation), 0.5);
+  // The recording replays into the pipeline.
+  const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
+                                          " --set display.h_active=64 --set display.v_active=48");
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
+TEST(RiftStream, NoDeviceGivesAClearAnswer) {
+  RiftStream r;
+  std::string err;
+  EXPECT_FALSE(r.open(err));
+  EXPECT_NE(err.find("no Oculus Rift"), std::string::npos) << err;
+  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  EXPECT_NE(list.output.find("no Oculus Rift DK1/DK2 found"), std::string::npos) << list.output;
+}

@@ -1,0 +1,287 @@
+#include "RiftStream.hpp"
+
+#include <libusb-1.0/libusb.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "DeviceClock.hpp"
+#include "RiftProtocol.hpp"
+#include "UsbTrackers.hpp"
+
+namespace arp::tracker {
+
+const char* const kUdevRulesHint =
+    "install the udev rules shipped in packaging/udev/70-arpsim-rift.rules "
+    "(sudo cp packaging/udev/70-arpsim-rift.rules /etc/udev/rules.d/ && sudo udevadm control --reload && "
+    "replug the tracker; docs/tracker.md)";
+
+const char* to_string(StreamEvent::Kind k) {
+  switch (k) {
+    case StreamEvent::Kind::Opened: return "opened";
+    case StreamEvent::Kind::Disconnected: return "disconnected";
+    case StreamEvent::Kind::Reconnected: return "reconnected";
+    case StreamEvent::Kind::MalformedReport: return "malformed report";
+    case StreamEvent::Kind::TimeWentBack: return "device time went back";
+    case StreamEvent::Kind::OpenFailed: return "open failed";
+  }
+  return "?";
+}
+
+struct RiftStream::Impl {
+  RiftStreamOptions opt;
+  libusb_context* ctx = nullptr;
+  libusb_device_handle* handle = nullptr;
+  RiftModel model = RiftModel::DK1;
+  bool is_connected = false, ever_opened = false;
+  std::vector<libusb_transfer*> transfers;
+  std::vector<std::vector<uint8_t>> buffers;
+  int in_flight = 0;
+  uint16_t command_id = 1;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  double last_keep_alive_s = -1e9, last_attempt_s = -1e9;
+  std::unique_ptr<DeviceClock> clock;
+  Fusion fusion;
+  bool fusion_started = false;
+  int64_t last_sample_ps = 0;
+  StreamStats stats;
+  std::vector<StreamEvent> events;
+  std::vector<PoseSample> pending;
+  PoseSample last;
+
+  explicit Impl(const RiftStreamOptions& o) : opt(o), fusion(o.fusion) {}
+
+  double now_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  void event(StreamEvent::Kind k, std::string detail) { events.push_back({k, now_s(), std::move(detail)}); }
+
+  int send_feature(const std::vector<uint8_t>& report) {
+    const int rc = libusb_control_transfer(handle, kHidRequestTypeOut, kHidSetReport, static_cast<uint16_t>(kHidFeatureReport | report[0]), 0,
+                                           const_cast<unsigned char*>(report.data()), static_cast<uint16_t>(report.size()), 1000);
+    ++command_id;
+    return rc;
+  }
+
+  bool send_keep_alive() {
+    const int rc = send_feature(keep_alive_report(model, command_id, opt.keep_alive_ms));
+    if (rc < 0) return false;
+    ++stats.keep_alives;
+    last_keep_alive_s = now_s();
+    return true;
+  }
+
+  static void LIBUSB_CALL on_transfer(libusb_transfer* t) { static_cast<Impl*>(t->user_data)->completed(t); }
+
+  void completed(libusb_transfer* t) {
+    --in_flight;
+    if (t->status == LIBUSB_TRANSFER_COMPLETED) {
+      report(t->buffer, static_cast<size_t>(t->actual_length));
+      if (is_connected && libusb_submit_transfer(t) == 0) ++in_flight;
+      else lost("resubmitting the transfer failed");
+      return;
+    }
+    if (t->status == LIBUSB_TRANSFER_CANCELLED) return;
+    lost(t->status == LIBUSB_TRANSFER_NO_DEVICE ? "the device is gone" : std::string("transfer ") + libusb_error_name(t->status));
+  }
+
+  void lost(const std::string& why) {
+    if (!is_connected) return;
+    is_connected = false;
+    ++stats.disconnects;
+    event(StreamEvent::Kind::Disconnected, why + "; holding the last pose, retrying");
+  }
+
+  void report(const uint8_t* data, size_t n) {
+    ImuReport r;
+    std::string err;
+    if (!decode_report(model, data, n, r, err)) {
+      ++stats.malformed;
+      event(StreamEvent::Kind::MalformedReport, err);
+      return;
+    }
+    ++stats.reports;
+    const int64_t arrival = static_cast<int64_t>(now_s() * 1e12);
+    const DeviceClock::Mapped m = clock->map(r.timestamp, arrival);
+    if (m.backwards) {
+      ++stats.time_went_back;
+      event(StreamEvent::Kind::TimeWentBack, "report timestamp " + std::to_string(r.timestamp) + " is behind the last; samples skipped");
+      return;
+    }
+    constexpr int64_t kSamplePs = 1'000'000'000;  // 1000 Hz
+    for (int i = 0; i < r.sample_count; ++i) {
+      const auto& s = r.samples[static_cast<size_t>(i)];
+      const int64_t t = m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
+      if (fusion_started && t <= last_sample_ps) continue;  // already fused (overlapping counts)
+      const glm::dvec3 gyro(gyro_rad_s(s.gyro[0]), gyro_rad_s(s.gyro[1]), gyro_rad_s(s.gyro[2]));
+      const glm::dvec3 accel(accel_m_s2(s.accel[0]), accel_m_s2(s.accel[1]), accel_m_s2(s.accel[2]));
+      const double dt = fusion_started ? static_cast<double>(t - last_sample_ps) * 1e-12 : 1e-3;
+      fusion.update(gyro, accel, std::min(dt, 0.1));  // a long gap (a reconnection) is not integrated as one step
+      fusion_started = true;
+      last_sample_ps = t;
+      ++stats.samples;
+      PoseSample p;
+      p.time_ps = t;
+      p.orientation = fusion.orientation();
+      p.has_angular_velocity = true;
+      p.angular_velocity = gyro;
+      pending.push_back(p);
+      last = p;
+    }
+  }
+
+  // Finds, opens, claims, configures and starts streaming. false + error otherwise.
+  bool connect(std::string& error) {
+    libusb_device** list = nullptr;
+    const ssize_t n = libusb_get_device_list(ctx, &list);
+    if (n < 0) {
+      error = std::string("libusb could not list devices: ") + libusb_strerror(static_cast<int>(n));
+      return false;
+    }
+    libusb_device* dev = nullptr;
+    RiftModel found = RiftModel::DK1;
+    for (ssize_t i = 0; i < n && !dev; ++i) {
+      libusb_device_descriptor d{};
+      if (libusb_get_device_descriptor(list[i], &d) != 0 || d.idVendor != kOculusVendor) continue;
+      if (d.idProduct == kDk1Product || d.idProduct == kDk2Product) {
+        dev = list[i];
+        found = d.idProduct == kDk1Product ? RiftModel::DK1 : RiftModel::DK2;
+      }
+    }
+    if (!dev) {
+      libusb_free_device_list(list, 1);
+      error = "no Oculus Rift DK1/DK2 on USB (vendor 0x2833, products 0x0001/0x0021)";
+      return false;
+    }
+    char where[64];
+    std::snprintf(where, sizeof where, "/dev/bus/usb/%03d/%03d", libusb_get_bus_number(dev), libusb_get_device_address(dev));
+    int rc = libusb_open(dev, &handle);
+    libusb_free_device_list(list, 1);
+    if (rc != 0) {
+      handle = nullptr;
+      error = std::string("cannot open ") + where + ": " + libusb_strerror(rc) +
+              (rc == LIBUSB_ERROR_ACCESS ? std::string("; ") + kUdevRulesHint : std::string());
+      return false;
+    }
+    model = found;
+    auto fail = [&](const char* what, int code) {
+      error = std::string(what) + " on " + where + ": " + libusb_strerror(code) +
+              (code == LIBUSB_ERROR_ACCESS || code == LIBUSB_ERROR_BUSY ? std::string("; ") + kUdevRulesHint : std::string());
+      libusb_close(handle);
+      handle = nullptr;
+      return false;
+    };
+    rc = libusb_kernel_driver_active(handle, 0);
+    if (rc == 1) {
+      if ((rc = libusb_detach_kernel_driver(handle, 0)) != 0) return fail("detaching the kernel driver", rc);
+      stats.kernel_driver_detached = true;
+    } else if (rc < 0 && rc != LIBUSB_ERROR_NOT_SUPPORTED) {
+      return fail("asking for the kernel driver", rc);
+    }
+    if ((rc = libusb_claim_interface(handle, 0)) != 0) return fail("claiming interface 0", rc);
+    if (model == RiftModel::DK1) {
+      rc = send_feature(dk1_config_report(command_id, kConfigUseCalibration | kConfigAutoCalibration, 0, opt.keep_alive_ms));
+      if (rc < 0) return fail("sending the config report", rc);
+    }
+    if (!send_keep_alive()) return fail("sending the keep-alive report", LIBUSB_ERROR_IO);
+    // A fresh device clock anchored at the first report after (re)connecting:
+    // the counter may have restarted; the timeline carries on from the arrival.
+    clock = std::make_unique<DeviceClock>(model == RiftModel::DK1 ? 16 : 32, model == RiftModel::DK1 ? 1'000'000'000 : 1'000'000);
+    is_connected = true;
+    const int want = std::max(1, opt.transfers_in_flight);
+    transfers.assign(static_cast<size_t>(want), nullptr);
+    buffers.assign(static_cast<size_t>(want), std::vector<uint8_t>(kRiftReportSize));
+    for (int i = 0; i < want; ++i) {
+      libusb_transfer* t = libusb_alloc_transfer(0);
+      transfers[static_cast<size_t>(i)] = t;
+      libusb_fill_interrupt_transfer(t, handle, 0x81, buffers[static_cast<size_t>(i)].data(), static_cast<int>(kRiftReportSize), on_transfer, this, 0);
+      if ((rc = libusb_submit_transfer(t)) != 0) {
+        lost(std::string("submitting a transfer: ") + libusb_strerror(rc));
+        break;
+      }
+      ++in_flight;
+    }
+    return true;
+  }
+
+  // After a loss: wait for the transfers to come back, then let go of the handle.
+  void release() {
+    for (auto* t : transfers)
+      if (t && in_flight > 0) libusb_cancel_transfer(t);
+    timeval tv{0, 20000};
+    for (int k = 0; k < 50 && in_flight > 0; ++k) libusb_handle_events_timeout(ctx, &tv);
+    for (auto*& t : transfers) {
+      if (t) libusb_free_transfer(t);
+      t = nullptr;
+    }
+    in_flight = 0;
+    if (handle) {
+      libusb_release_interface(handle, 0);
+      libusb_close(handle);
+      handle = nullptr;
+    }
+  }
+};
+
+RiftStream::RiftStream(const RiftStreamOptions& o) : p_(std::make_unique<Impl>(o)) {}
+
+RiftStream::~RiftStream() {
+  if (p_->ctx) {
+    p_->is_connected = false;
+    p_->release();
+    libusb_exit(p_->ctx);
+  }
+}
+
+bool RiftStream::open(std::string& error) {
+  if (!p_->ctx) {
+    const int rc = libusb_init(&p_->ctx);
+    if (rc != 0) {
+      p_->ctx = nullptr;
+      error = std::string("USB is not available here: libusb could not start: ") + libusb_strerror(rc);
+      return false;
+    }
+  }
+  if (!p_->connect(error)) {
+    p_->event(StreamEvent::Kind::OpenFailed, error);
+    return false;
+  }
+  p_->ever_opened = true;
+  p_->event(StreamEvent::Kind::Opened, p_->model == RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2");
+  return true;
+}
+
+void RiftStream::poll(int timeout_ms, std::vector<PoseSample>& out) {
+  Impl& s = *p_;
+  if (!s.ctx) return;
+  if (s.handle || s.in_flight > 0) {
+    timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
+    libusb_handle_events_timeout_completed(s.ctx, &tv, nullptr);
+  }
+  if (s.is_connected && s.now_s() - s.last_keep_alive_s >= s.opt.keep_alive_resend_s && !s.send_keep_alive())
+    s.lost("the keep-alive could not be sent");
+  if (!s.is_connected && s.ever_opened) {
+    if (s.handle) s.release();
+    if (s.now_s() - s.last_attempt_s >= s.opt.reconnect_every_s) {
+      s.last_attempt_s = s.now_s();
+      std::string err;
+      if (s.connect(err)) {
+        ++s.stats.reconnects;
+        s.event(StreamEvent::Kind::Reconnected, "streaming again");
+      }
+    }
+  }
+  out.insert(out.end(), s.pending.begin(), s.pending.end());
+  s.pending.clear();
+}
+
+bool RiftStream::connected() const { return p_->is_connected; }
+RiftModel RiftStream::model() const { return p_->model; }
+const StreamStats& RiftStream::stats() const { return p_->stats; }
+const PoseSample& RiftStream::last_pose() const { return p_->last; }
+
+std::vector<StreamEvent> RiftStream::take_events() {
+  std::vector<StreamEvent> e;
+  e.swap(p_->events);
+  return e;
+}
+
+}  // namespace arp::tracker

@@ -1,0 +1,77 @@
+// Streaming from an Oculus Rift DK1/DK2 IMU through libusb-1.0: find the
+// device (vendor 0x2833), detach the kernel's HID driver, claim interface 0,
+// send the config and keep-alive feature reports (and re-send the keep-alive
+// every few seconds, well inside its interval), keep interrupt transfers in
+// flight on endpoint 0x81, decode every report (untrusted: malformed ones are
+// counted and skipped), map the device's wrapping timestamps to one timeline
+// (DeviceClock) and fuse gyro and accelerometer into orientations (Fusion).
+//
+// Robustness: when the device goes away mid-run the last good pose is held,
+// the event is reported, and the device is looked for again every
+// `reconnect_every_s`; when it is back, streaming resumes on the same
+// timeline. Permission problems say where the udev rules are.
+//
+// Single-threaded: everything happens inside poll(), on the caller's thread.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Fusion.hpp"
+#include "OculusReport.hpp"
+#include "PoseSample.hpp"
+
+namespace arp::tracker {
+
+struct RiftStreamOptions {
+  uint16_t keep_alive_ms = 10000;    // the interval the device is told
+  double keep_alive_resend_s = 3.0;  // how often it is re-sent
+  int transfers_in_flight = 4;
+  double reconnect_every_s = 0.5;
+  FusionParams fusion;
+};
+
+struct StreamEvent {
+  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, OpenFailed };
+  Kind kind;
+  double at_s;         // seconds since the stream was created (wall clock)
+  std::string detail;
+};
+const char* to_string(StreamEvent::Kind k);
+
+struct StreamStats {
+  int64_t reports = 0, samples = 0, malformed = 0, keep_alives = 0, disconnects = 0, reconnects = 0, time_went_back = 0;
+  bool kernel_driver_detached = false;
+};
+
+// Where the udev rules file ships and what it says (docs/tracker.md).
+extern const char* const kUdevRulesHint;
+
+class RiftStream {
+ public:
+  explicit RiftStream(const RiftStreamOptions& o = {});
+  ~RiftStream();
+  RiftStream(const RiftStream&) = delete;
+  RiftStream& operator=(const RiftStream&) = delete;
+
+  // Opens the first DK1/DK2. false, with the reason in `error`, when there is
+  // none, USB is unavailable, or it cannot be opened (permission: see kUdevRulesHint).
+  bool open(std::string& error);
+  // Handles USB events for up to timeout_ms (and keep-alives, reconnection);
+  // appends the poses fused since the last call to `out`.
+  void poll(int timeout_ms, std::vector<PoseSample>& out);
+
+  bool connected() const;
+  RiftModel model() const;
+  const StreamStats& stats() const;
+  std::vector<StreamEvent> take_events();
+  // The last fused pose (held while disconnected); time 0 and identity before the first.
+  const PoseSample& last_pose() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> p_;
+};
+
+}  // namespace arp::tracker
