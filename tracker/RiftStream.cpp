@@ -12,8 +12,8 @@
 namespace arp::tracker {
 
 const char* const kUdevRulesHint =
-    "install the udev rules shipped in packaging/udev/70-arpsim-rift.rules "
-    "(sudo cp packaging/udev/70-arpsim-rift.rules /etc/udev/rules.d/ && sudo udevadm control --reload && "
+    "install the udev rules shipped in scripts/udev/70-arpsim-oculus.rules "
+    "(sudo cp scripts/udev/70-arpsim-oculus.rules /etc/udev/rules.d/ && sudo udevadm control --reload-rules && "
     "replug the tracker; docs/tracker.md)";
 
 const char* to_string(StreamEvent::Kind k) {
