@@ -178,6 +178,42 @@ TEST(RegionGrid, HysteresisCountsOnlyTheFacesCrossed) {
   EXPECT_EQ(g.region_of({1, 5, 1}).y, 2);
 }
 
+// Bad meshes to segment: degenerate triangles (a repeated vertex, three
+// collinear points) are dropped, a non-manifold fan (three triangles on one
+// edge) is cut triangle by triangle, and a mesh reaching outside the world
+// extent goes to the edge regions -- area kept, nothing crashes.
+TEST(Segmentation, DegenerateNonManifoldAndOutsideTheWorld) {
+  const RegionGrid g({0, 0, 0}, {8, 4, 8}, 2.0, false, "test");
+  auto mesh = std::make_shared<Mesh>();
+  mesh->positions = {{1, 1, 1}, {5, 1, 1}, {5, 1, 5},   // a triangle across regions
+                     {3, 1, 3}, {3, 1, 3}, {6, 1, 3},   // a repeated vertex
+                     {1, 2, 1}, {2, 2, 2}, {3, 2, 3},   // collinear
+                     {1, 0.5, 1}, {5, 0.5, 1}, {3, 3, 7}, {3, 0.5, 7}, {-3, 0.5, 12}};  // a fan on one edge, one reaching outside
+  mesh->indices = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 9, 10, 12, 9, 10, 13};
+  Scene s;
+  s.extent_min = {0, 0, 0};
+  s.extent_max = {8, 4, 8};
+  Material mt;
+  add_object(s, "bad", mesh, {0, 0, 0}, mt);
+  const Segmented seg = segment_scene(s, g, true);
+  ASSERT_EQ(seg.objects_cut, 1);
+  auto tri_area = [](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); };
+  double want = 0, got = 0;
+  for (size_t t = 0; t < mesh->indices.size(); t += 3)
+    want += tri_area(mesh->positions[mesh->indices[t]], mesh->positions[mesh->indices[t + 1]], mesh->positions[mesh->indices[t + 2]]);
+  for (const auto& o : seg.scene.objects) {
+    const Mesh& m = *o.mesh;
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+      const double a = tri_area(m.positions[m.indices[t]], m.positions[m.indices[t + 1]], m.positions[m.indices[t + 2]]);
+      EXPECT_GT(a, 0.0);  // no degenerate piece survives
+      got += a;
+    }
+  }
+  EXPECT_NEAR(got, want, 1e-9 * want);
+  EXPECT_GT(seg.segments, 4);
+  for (int r : seg.region) EXPECT_LT(r, g.count());
+}
+
 TEST(Segmentation, TheGalleryIsCutIntoRegions) {
   const Scene gal = make_gallery({"/nonexistent"});
   const RegionGrid g(gal.extent_min, gal.extent_max, 4.0, false, "gallery");
