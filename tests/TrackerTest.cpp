@@ -7,6 +7,7 @@
 
 #include "TestSupport.hpp"
 #include "common/InputError.hpp"
+#include "tracker/DatasetImport.hpp"
 #include "tracker/OculusReport.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"
@@ -392,4 +393,66 @@ TEST(DeviceClock, Dk2MicrosecondCounterOverTwoHours) {
   EXPECT_EQ(wraps, 1);
   EXPECT_NEAR(static_cast<double>(last) * 1e-12, 7200.0, 1e-6);
   EXPECT_NEAR(c.skew_ppm(), 0.0, 1e-6);
+}
+
+// A dataset in the 'timestamp frameId w x y z' layout: units, header,
+// handedness (a Unity turn to the right stays a turn to the right) and bad lines.
+TEST(DatasetImport, UnitsAxesAndBadLines) {
+  arp::test::TempDir d;
+  const double h = std::sqrt(0.5);
+  {
+    std::ofstream f(d.file("unity.txt"));
+    f << "timestamp frameId qw qx qy qz\n"
+      << "1000 0 1 0 0 0\n"
+      << "1016.5 1 " << std::cos(0.25) << " 0 " << std::sin(0.25) << " 0\n"  // Unity: 0.5 rad about +y (a turn right)
+      << "# a comment\n"
+      << "1033,2," << h << ",0," << h << ",0\n";
+  }
+  DatasetLayout unity;
+  unity.time_unit = DatasetLayout::TimeUnit::Milliseconds;
+  unity.axes = DatasetLayout::Axes::Unity;
+  const auto s = read_head_motion_dataset(d.file("unity.txt"), unity);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].time_ps, 0);
+  EXPECT_EQ(s[1].time_ps, 16'500'000'000);
+  EXPECT_EQ(s[2].time_ps, 33'000'000'000);
+  // Our head looks down -z; after the turn right it looks toward +x.
+  const glm::dvec3 ahead = s[2].orientation * glm::dvec3(0, 0, -1);
+  EXPECT_NEAR(ahead.x, 1.0, 1e-9);
+  EXPECT_NEAR(ahead.z, 0.0, 1e-9);
+  DatasetLayout gl;  // the same numbers read as right-handed: a turn left
+  EXPECT_NEAR((read_head_motion_dataset(d.file("unity.txt"), gl)[2].orientation * glm::dvec3(0, 0, -1)).x, -1.0, 1e-9);
+  // Scalar last.
+  {
+    std::ofstream f(d.file("xyzw.txt"));
+    f << "0 0 0 0 0 1\n0.01 1 0 " << std::sin(0.25) << " 0 " << std::cos(0.25) << "\n";
+  }
+  DatasetLayout xyzw;
+  xyzw.scalar_last = true;
+  EXPECT_NEAR(angle_between_deg(read_head_motion_dataset(d.file("xyzw.txt"), xyzw)[1].orientation,
+                                glm::angleAxis(0.5, glm::dvec3(0, 1, 0))),
+              0.0, 1e-3);  // six digits in the file
+  // Bad lines: the file, the line and the reason.
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"0 0 1 0 0 0\n0.1 1 1 0 0\n", "line 2: expected 6 columns"},
+      {"0 0 1 0 0 0\n0.1 1 one 0 0 0\n", "line 2: quaternion 'one' is not a finite number"},
+      {"0 0 1 0 0 0\n0.1 1 0 0 0 0\n", "line 2: the quaternion is zero"},
+      {"0 0 1 0 0 0\n0.1 1 2 0 0 0\n", "line 2: the quaternion is not unit length"},
+      {"0 0 1 0 0 0\n0 1 1 0 0 0\n", "line 2: timestamp 0 does not come after"},
+      {"0 0 1 0 0 0\n0.1 1.5 1 0 0 0\n", "line 2: frameId '1.5' is not a non-negative integer"},
+      {"0 0 1 0 0 0\n0.1 1 nan 0 0 0\n", "line 2: quaternion 'nan' is not a finite number"},
+      {"0 0 1 0 0 0\n", "fewer than two samples"}};
+  for (const auto& [text, want] : bad) {
+    {
+      std::ofstream f(d.file("bad.txt"));
+      f << text;
+    }
+    try {
+      read_head_motion_dataset(d.file("bad.txt"), gl);
+      ADD_FAILURE() << "accepted: " << want;
+    } catch (const arp::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("bad.txt"), std::string::npos) << e.what();
+    }
+  }
 }

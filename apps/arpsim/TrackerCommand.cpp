@@ -10,6 +10,7 @@
 #include "common/InputError.hpp"
 #include "MotionOptions.hpp"
 #include "tracker/TraceFile.hpp"
+#include "tracker/DatasetImport.hpp"
 #include "tracker/RiftStream.hpp"
 #include "tracker/UsbTrackers.hpp"
 
@@ -87,6 +88,23 @@ int run_record(const RecordArgs& a) {
   return 0;
 }
 
+struct ImportArgs {
+  std::string in, out, time_unit = "s", axes = "gl";
+  bool scalar_last = false;
+};
+
+int run_import(const ImportArgs& a) {
+  tracker::DatasetLayout layout;
+  if (!tracker::parse_time_unit(a.time_unit, layout.time_unit)) throw InputError("--time-unit", a.time_unit, "must be s, ms, us or ns");
+  if (!tracker::parse_axes(a.axes, layout.axes)) throw InputError("--axes", a.axes, "must be gl or unity");
+  layout.scalar_last = a.scalar_last;
+  const auto samples = tracker::read_head_motion_dataset(a.in, layout);
+  tracker::write_trace_csv(a.out, samples);
+  std::printf("arpsim tracker import: %zu samples, %.3f s (%s axes, %s) -> %s\n", samples.size(),
+              static_cast<double>(samples.back().time_ps) * 1e-12, a.axes.c_str(), a.time_unit.c_str(), a.out.c_str());
+  return 0;
+}
+
 struct SynthArgs {
   MotionOptions motion;
   std::string out;
@@ -118,7 +136,21 @@ Runner add_tracker_command(CLI::App& app) {
   record->add_option("--seconds", r->seconds, "How long to record")->capture_default_str();
   record->add_option("file", r->out, "Trace file to write")->required();
   record->add_flag("--quiet,-q", r->quiet, "No progress line");
-  return [list, record, a, r] { return list->parsed() ? run_list() : record->parsed() ? run_record(*r) : run_synth(*a); };
+  auto im = std::make_shared<ImportArgs>();
+  CLI::App* import = cmd->add_subcommand(
+      "import", "Convert a head-motion dataset ('timestamp frameId w x y z' per line) into a trace file (docs/tracker.md)");
+  import->add_option("dataset", im->in, "Dataset file")->required();
+  import->add_option("trace", im->out, "Trace file to write")->required();
+  import->add_option("--time-unit", im->time_unit, "Unit of the timestamp: s, ms, us, ns")->capture_default_str();
+  import->add_option("--axes", im->axes, "gl (right-handed, -z forward, as arpsim) or unity (left-handed, +z forward)")
+      ->capture_default_str();
+  import->add_flag("--scalar-last", im->scalar_last, "The quaternion columns are x y z w");
+  return [list, record, import, a, r, im] {
+    if (list->parsed()) return run_list();
+    if (record->parsed()) return run_record(*r);
+    if (import->parsed()) return run_import(*im);
+    return run_synth(*a);
+  };
 }
 
 }  // namespace arp::app
