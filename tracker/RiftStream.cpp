@@ -277,6 +277,7 @@ bool RiftStream::connected() const { return p_->is_connected; }
 RiftModel RiftStream::model() const { return p_->model; }
 const StreamStats& RiftStream::stats() const { return p_->stats; }
 const PoseSample& RiftStream::last_pose() const { return p_->last; }
+int64_t RiftStream::now_ps() const { return static_cast<int64_t>(p_->now_s() * 1e12); }
 
 std::vector<StreamEvent> RiftStream::take_events() {
   std::vector<StreamEvent> e;

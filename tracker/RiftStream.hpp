@@ -67,6 +67,8 @@ class RiftStream {
   std::vector<StreamEvent> take_events();
   // The last fused pose (held while disconnected); time 0 and identity before the first.
   const PoseSample& last_pose() const;
+  // Now on the poses' timeline (picoseconds since the stream was created), to place them on another.
+  int64_t now_ps() const;
 
   struct Impl;
 

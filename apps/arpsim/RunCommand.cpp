@@ -33,6 +33,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include "rtl_model/systemc/TimedRun.hpp"
+#include "tracker/RiftStream.hpp"
 #include "tracker/TraceFile.hpp"
 
 namespace arp::app {
@@ -46,7 +47,7 @@ struct RunArgs {
   CubeMapOptions cubemap;
   MotionOptions motion;
   std::string fidelity = "functional";
-  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us, host_csv, tear_image, tear_at;
+  std::string trace, out_dir = "run", report, csv, vcd, vcd_lines, vcd_time_us, host_csv, tear_image, tear_at, live;
   std::vector<std::string> stalls;
   bool no_speculation = false;
   std::string walk;
@@ -123,6 +124,13 @@ int run(const RunArgs& a) {
   if (a.first < 0 || a.first > 1'000'000'000) throw InputError("--first-frame", "", "must be 0 .. 1e9");
   if (a.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  if (!a.live.empty()) {
+    if (a.live != "usb") throw InputError("--live", a.live, "the live source is usb (an Oculus Rift DK1/DK2)");
+    if (!a.trace.empty() || a.motion.given() || !a.walk.empty())
+      throw InputError("--live", "", "live input replaces --trace, --motion and --walk");
+    if (fid != scm::Fidelity::Functional)
+      throw InputError("--live", "", "live input drives the functional level (the timed levels read their orientation trace ahead)");
+  }
   if (!a.host_csv.empty() && (a.report.empty() || a.walk.empty())) throw InputError("--host-csv", "", "needs --walk and --report");
   if (!a.vcd.empty() && fid == scm::Fidelity::Functional)
     throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or rtl");
@@ -176,8 +184,19 @@ int run(const RunArgs& a) {
   std::vector<dp::OrientationSample> samples;
   for (const auto& p : poses)
     samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
-  const dp::OrientationStream stream = samples.empty() ? dp::OrientationStream::constant(dp::Quat{})
-                                                       : dp::OrientationStream(std::move(samples), motion_source);
+  // Live input starts from the identity and grows frame by frame as the device's samples arrive.
+  std::unique_ptr<tracker::RiftStream> live;
+  if (!a.live.empty()) {
+    live = std::make_unique<tracker::RiftStream>();
+    std::string err;
+    if (!live->open(err)) {
+      std::fprintf(stderr, "arpsim run: --live usb: %s\n", err.c_str());
+      return 1;
+    }
+    motion_source = std::string("live ") + (live->model() == tracker::RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2") + " (USB)";
+  }
+  dp::OrientationStream stream = samples.empty() ? dp::OrientationStream::constant(dp::Quat{})
+                                                 : dp::OrientationStream(std::move(samples), motion_source);
 
   std::string source;
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
@@ -299,6 +318,37 @@ int run(const RunArgs& a) {
   in.config = c;
   in.memories = &mem;
   in.orientation = &stream;
+  // Live: before each frame, take what the device has sent until the frame's
+  // end on the wall clock (the run goes at the display's pace), placed on
+  // the run's timeline; an unplug holds the last pose and the run goes on.
+  int64_t live_offset_ps = 0, live_samples = 0;
+  if (live) {
+    const auto wall0 = std::chrono::steady_clock::now();
+    live_offset_ps = start_ps - live->now_ps();  // a pose that arrives as frame `first` starts is placed at its start
+    auto got_ptr = std::make_shared<std::vector<tracker::PoseSample>>();  // lives as long as the hook
+    in.before_frame = [&, wall0, got_ptr](int64_t frame, double) {
+      std::vector<tracker::PoseSample>& got = *got_ptr;
+      const int64_t until_ps = t.cycles_to_ps(t.frame_start_cycle(frame + 1)) - start_ps;
+      for (;;) {
+        const int64_t wall_ps = static_cast<int64_t>(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() * 1e12);
+        if (wall_ps >= until_ps) break;
+        live->poll(static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)), got);
+      }
+      for (const auto& e : live->take_events())
+        std::fprintf(stderr, "arpsim run: live input [%.3f s] %s: %s\n", e.at_s, tracker::to_string(e.kind), e.detail.c_str());
+      std::vector<dp::OrientationSample> more;
+      int64_t last_ps = stream[stream.size() - 1].time_ps;
+      for (const auto& p : got) {
+        const int64_t tp = p.time_ps + live_offset_ps;
+        if (tp < last_ps) continue;  // from before the run started (a report's earlier samples)
+        last_ps = tp;
+        more.push_back({tp, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
+      }
+      live_samples += static_cast<int64_t>(more.size());
+      stream.append(more, motion_source);
+      got.clear();
+    };
+  }
   in.first_frame = a.first;
   in.frames = a.frames;
   in.stalls = stalls;
@@ -611,6 +661,12 @@ int run(const RunArgs& a) {
           {"vcd", vcd_final}}},
         {"images", images},
         {"config", config::to_json(c)}};
+    if (live) {
+      const auto& st = live->stats();
+      r["live"] = {{"source", motion_source}, {"samples", live_samples}, {"reports", st.reports}, {"malformed", st.malformed},
+                   {"disconnects", st.disconnects}, {"reconnects", st.reconnects}, {"keep_alives", st.keep_alives},
+                   {"connected_at_end", live->connected()}};
+    }
     if (hostsim) {
       const double secs = static_cast<double>(a.frames) / t.refresh_hz();
       nlohmann::json mems = nlohmann::json::array();
@@ -709,6 +765,9 @@ Runner add_run_command(CLI::App& app) {
                   "rtl (detailed cycle-accurate, one SystemC module per stage)")
       ->capture_default_str();
   cmd->add_option("--trace", a->trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth");
+  cmd->add_option("--live", a->live,
+                  "Live head motion: usb (the first Oculus Rift DK1/DK2), fed to the pipeline frame by frame as it arrives, "
+                  "at the display's pace (functional level)");
   a->motion.add_to(*cmd, false);
   cmd->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", a->first, "Index of the first frame (sets its time)")->capture_default_str();

@@ -56,6 +56,21 @@ OrientationStream::OrientationStream(std::vector<OrientationSample> samples, con
   }
 }
 
+void OrientationStream::append(const std::vector<OrientationSample>& more, const std::string& source) {
+  for (const OrientationSample& m : more) {
+    const std::string place = "sample " + std::to_string(samples_.size());
+    OrientationSample s = m;
+    try {
+      s.q = normalised(s.q, source);
+    } catch (const InputError& e) {
+      throw InputError(source, place, e.reason());
+    }
+    if (!samples_.empty() && s.time_ps < samples_.back().time_ps)
+      throw InputError(source, place, "time " + std::to_string(s.time_ps) + " ps is earlier than the previous sample's");
+    samples_.push_back(s);
+  }
+}
+
 OrientationStream OrientationStream::constant(const Quat& q) {
   return OrientationStream({OrientationSample{0, q}}, "constant orientation");
 }

@@ -67,6 +67,8 @@ class OrientationStream {
   // Validates (finite, non-zero, time order) and normalises; InputError names `source` and the sample index.
   OrientationStream(std::vector<OrientationSample> samples, const std::string& source);
   static OrientationStream constant(const Quat& q);
+  // Live input: more samples, validated like the first (none earlier than the last one held).
+  void append(const std::vector<OrientationSample>& more, const std::string& source);
 
   size_t size() const { return samples_.size(); }
   const OrientationSample& operator[](size_t i) const { return samples_[i]; }

@@ -10,6 +10,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <thread>
 
 #include "../TestSupport.hpp"
 #include "RiftEmulator.hpp"
@@ -148,4 +150,58 @@ TEST(RiftStream, NoDeviceGivesAClearAnswer) {
   EXPECT_NE(err.find("no Oculus Rift"), std::string::npos) << err;
   const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
   EXPECT_NE(list.output.find("no Oculus Rift DK1/DK2 found"), std::string::npos) << list.output;
+}
+
+// Unplugged in the middle of a recording and of a live run: both go on, the
+// events are reported, and everything received before and after is kept.
+TEST(RiftStream, RecordAndLiveRunSurviveAnUnplug) {
+  const auto truth = yaw_90(20.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  arp::test::TempDir d;
+  auto unplug_for_a_while = [&dk1] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    dk1.unplug();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    dk1.replug();
+  };
+  {
+    arp::test::CommandResult rec;
+    std::thread child([&] {
+      rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 1.5 " + d.file("gap.csv"));
+    });
+    unplug_for_a_while();
+    child.join();
+    ASSERT_EQ(rec.status, 0) << rec.output;
+    EXPECT_NE(rec.output.find("disconnected"), std::string::npos) << rec.output;
+    EXPECT_NE(rec.output.find("reconnected"), std::string::npos) << rec.output;
+    EXPECT_NE(rec.output.find("1 disconnects, 1 reconnects"), std::string::npos) << rec.output;
+    const auto trace = read_trace_csv(d.file("gap.csv"));
+    // Before the unplug (~400 ms) and after the replug (~800 ms): a gap of about 300 ms in between.
+    EXPECT_GT(trace.size(), 800u);
+    int64_t gap = 0;
+    for (size_t i = 1; i < trace.size(); ++i) gap = std::max(gap, trace[i].time_ps - trace[i - 1].time_ps);
+    EXPECT_GT(gap, 200'000'000'000);
+  }
+  {
+    dk1.replug();
+    arp::test::CommandResult run;
+    std::thread child([&] {
+      // 90 frames of the default display: 1.5 s at its 60 Hz pace.
+      run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 90 --every 0 --report " + d.file("live.json"));
+    });
+    unplug_for_a_while();
+    child.join();
+    ASSERT_EQ(run.status, 0) << run.output;
+    std::ifstream in(d.file("live.json"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string rep = ss.str();
+    const size_t live_at = rep.find("\"live\"");
+    ASSERT_NE(live_at, std::string::npos);
+    EXPECT_NE(rep.find("\"disconnects\": 1"), std::string::npos) << rep.substr(live_at, 400) << run.output;
+    EXPECT_NE(rep.find("\"reconnects\": 1"), std::string::npos);
+    EXPECT_NE(rep.find("live Oculus Rift DK1 (USB)"), std::string::npos);
+    EXPECT_NE(rep.find("\"connected_at_end\": true"), std::string::npos);
+    EXPECT_NE(run.output.find("live input"), std::string::npos) << run.output;
+  }
 }
