@@ -8,6 +8,7 @@ PKGS=(
   libopenimageio-dev openimageio-tools
   libglm-dev libcli11-dev nlohmann-json3-dev
   libusb-1.0-0-dev umockdev libumockdev-dev
+  libsdl2-dev xvfb xauth
   libsystemc-dev
   libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
 )

@@ -15,5 +15,6 @@ Runner add_tracker_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
 Runner add_gtkw_command(CLI::App& app);
 Runner add_latency_command(CLI::App& app);
+Runner add_live_command(CLI::App& app);
 
 }  // namespace arp::app

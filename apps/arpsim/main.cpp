@@ -23,6 +23,7 @@ int sc_main(int argc, char** argv) {
   add(arp::app::add_gtkw_command(app));
   add(arp::app::add_tracker_command(app));
   add(arp::app::add_latency_command(app));
+  add(arp::app::add_live_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
