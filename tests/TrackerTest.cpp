@@ -456,3 +456,35 @@ TEST(DatasetImport, UnitsAxesAndBadLines) {
     }
   }
 }
+
+#include "tracker/PoseSource.hpp"
+
+// Recorded sources hand over all their samples once; a USB source with no
+// device says why it cannot open.
+TEST(PoseSource, RecordedSourcesAndNoDevice) {
+  arp::test::TempDir d;
+  SamplingSpec spec;
+  spec.duration_s = 0.5;
+  const auto motion = head_shake({0, 1, 0}, 200, 1.0, spec);
+  write_trace_csv(d.file("t.csv"), motion);
+  std::vector<std::unique_ptr<PoseSource>> sources;
+  sources.push_back(recorded_source(motion, "synthetic"));
+  sources.push_back(trace_file_source(d.file("t.csv")));
+  for (auto& src : sources) {
+    EXPECT_FALSE(src->live());
+    std::vector<PoseSample> got;
+    src->poll(got, 0);
+    ASSERT_EQ(got.size(), motion.size());
+    EXPECT_NEAR(angle_between_deg(got.back().orientation, motion.back().orientation), 0.0, 1e-6);
+    src->poll(got, 0);
+    EXPECT_EQ(got.size(), motion.size());  // once
+    EXPECT_TRUE(src->take_events().empty());
+    StreamStats st;
+    EXPECT_FALSE(src->usb_stats(st));
+  }
+  EXPECT_EQ(trace_file_source(d.file("t.csv"))->describe(), d.file("t.csv"));
+  EXPECT_THROW(trace_file_source(d.file("missing.csv")), arp::InputError);
+  std::string err;
+  EXPECT_EQ(usb_source(err), nullptr);  // no tracker here (the USB tests emulate one)
+  EXPECT_FALSE(err.empty());
+}

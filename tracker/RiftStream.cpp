@@ -2,8 +2,12 @@
 
 #include <libusb-1.0/libusb.h>
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
+#include <thread>
 
 #include "DeviceClock.hpp"
 #include "RiftProtocol.hpp"
@@ -33,7 +37,13 @@ struct RiftStream::Impl {
   libusb_context* ctx = nullptr;
   libusb_device_handle* handle = nullptr;
   RiftModel model = RiftModel::DK1;
-  bool is_connected = false, ever_opened = false;
+  std::atomic<bool> is_connected{false};
+  bool ever_opened = false;
+  // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
+  mutable std::mutex mu;
+  std::condition_variable arrived;
+  std::thread pump;
+  std::atomic<bool> stop{false};
   std::vector<libusb_transfer*> transfers;
   std::vector<std::vector<uint8_t>> buffers;
   int in_flight = 0;
@@ -50,9 +60,13 @@ struct RiftStream::Impl {
   PoseSample last;
 
   explicit Impl(const RiftStreamOptions& o) : opt(o), fusion(o.fusion) {}
+  void step(int timeout_ms);
 
   double now_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
-  void event(StreamEvent::Kind k, std::string detail) { events.push_back({k, now_s(), std::move(detail)}); }
+  void event(StreamEvent::Kind k, std::string detail) {
+    std::lock_guard<std::mutex> lock(mu);
+    events.push_back({k, now_s(), std::move(detail)});
+  }
 
   int send_feature(const std::vector<uint8_t>& report) {
     const int rc = libusb_control_transfer(handle, kHidRequestTypeOut, kHidSetReport, static_cast<uint16_t>(kHidFeatureReport | report[0]), 0,
@@ -64,6 +78,7 @@ struct RiftStream::Impl {
   bool send_keep_alive() {
     const int rc = send_feature(keep_alive_report(model, command_id, opt.keep_alive_ms));
     if (rc < 0) return false;
+    std::lock_guard<std::mutex> lock(mu);
     ++stats.keep_alives;
     last_keep_alive_s = now_s();
     return true;
@@ -84,9 +99,11 @@ struct RiftStream::Impl {
   }
 
   void lost(const std::string& why) {
-    if (!is_connected) return;
-    is_connected = false;
-    ++stats.disconnects;
+    if (!is_connected.exchange(false)) return;
+    {
+      std::lock_guard<std::mutex> lock(mu);
+      ++stats.disconnects;
+    }
     event(StreamEvent::Kind::Disconnected, why + "; holding the last pose, retrying");
   }
 
@@ -94,15 +111,20 @@ struct RiftStream::Impl {
     ImuReport r;
     std::string err;
     if (!decode_report(model, data, n, r, err)) {
-      ++stats.malformed;
+      {
+        std::lock_guard<std::mutex> lock(mu);
+        ++stats.malformed;
+      }
       event(StreamEvent::Kind::MalformedReport, err);
       return;
     }
+    std::unique_lock<std::mutex> lock(mu);
     ++stats.reports;
     const int64_t arrival = static_cast<int64_t>(now_s() * 1e12);
     const DeviceClock::Mapped m = clock->map(r.timestamp, arrival);
     if (m.backwards) {
       ++stats.time_went_back;
+      lock.unlock();
       event(StreamEvent::Kind::TimeWentBack, "report timestamp " + std::to_string(r.timestamp) + " is behind the last; samples skipped");
       return;
     }
@@ -126,6 +148,8 @@ struct RiftStream::Impl {
       pending.push_back(p);
       last = p;
     }
+    lock.unlock();
+    arrived.notify_all();
   }
 
   // Finds, opens, claims, configures and starts streaming. false + error otherwise.
@@ -172,6 +196,7 @@ struct RiftStream::Impl {
     rc = libusb_kernel_driver_active(handle, 0);
     if (rc == 1) {
       if ((rc = libusb_detach_kernel_driver(handle, 0)) != 0) return fail("detaching the kernel driver", rc);
+      std::lock_guard<std::mutex> lock(mu);
       stats.kernel_driver_detached = true;
     } else if (rc < 0 && rc != LIBUSB_ERROR_NOT_SUPPORTED) {
       return fail("asking for the kernel driver", rc);
@@ -223,7 +248,37 @@ struct RiftStream::Impl {
 
 RiftStream::RiftStream(const RiftStreamOptions& o) : p_(std::make_unique<Impl>(o)) {}
 
+// One round of device service: events, keep-alive, reconnection.
+void RiftStream::Impl::step(int timeout_ms) {
+  if (handle || in_flight > 0) {
+    timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
+    libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
+  } else {
+    std::this_thread::sleep_for(std::chrono::milliseconds(timeout_ms));
+  }
+  if (is_connected && now_s() - last_keep_alive_s >= opt.keep_alive_resend_s && !send_keep_alive())
+    lost("the keep-alive could not be sent");
+  if (!is_connected && ever_opened) {
+    if (handle) release();
+    if (now_s() - last_attempt_s >= opt.reconnect_every_s) {
+      last_attempt_s = now_s();
+      std::string err;
+      if (connect(err)) {
+        {
+          std::lock_guard<std::mutex> lock(mu);
+          ++stats.reconnects;
+        }
+        event(StreamEvent::Kind::Reconnected, "streaming again");
+      }
+    }
+  }
+}
+
 RiftStream::~RiftStream() {
+  if (p_->pump.joinable()) {
+    p_->stop = true;
+    p_->pump.join();
+  }
   if (p_->ctx) {
     p_->is_connected = false;
     p_->release();
@@ -240,46 +295,53 @@ bool RiftStream::open(std::string& error) {
       return false;
     }
   }
+  if (p_->pump.joinable()) return true;  // already streaming
   if (!p_->connect(error)) {
     p_->event(StreamEvent::Kind::OpenFailed, error);
     return false;
   }
   p_->ever_opened = true;
   p_->event(StreamEvent::Kind::Opened, p_->model == RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2");
+  if (p_->opt.background_thread)
+    p_->pump = std::thread([s = p_.get()] {
+      while (!s->stop) s->step(10);
+    });
   return true;
 }
 
 void RiftStream::poll(int timeout_ms, std::vector<PoseSample>& out) {
   Impl& s = *p_;
   if (!s.ctx) return;
-  if (s.handle || s.in_flight > 0) {
-    timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
-    libusb_handle_events_timeout_completed(s.ctx, &tv, nullptr);
+  if (s.pump.joinable()) {
+    std::unique_lock<std::mutex> lock(s.mu);
+    s.arrived.wait_for(lock, std::chrono::milliseconds(timeout_ms), [&] { return !s.pending.empty(); });
+    out.insert(out.end(), s.pending.begin(), s.pending.end());
+    s.pending.clear();
+    return;
   }
-  if (s.is_connected && s.now_s() - s.last_keep_alive_s >= s.opt.keep_alive_resend_s && !s.send_keep_alive())
-    s.lost("the keep-alive could not be sent");
-  if (!s.is_connected && s.ever_opened) {
-    if (s.handle) s.release();
-    if (s.now_s() - s.last_attempt_s >= s.opt.reconnect_every_s) {
-      s.last_attempt_s = s.now_s();
-      std::string err;
-      if (s.connect(err)) {
-        ++s.stats.reconnects;
-        s.event(StreamEvent::Kind::Reconnected, "streaming again");
-      }
-    }
-  }
+  s.step(timeout_ms);
+  std::lock_guard<std::mutex> lock(s.mu);
   out.insert(out.end(), s.pending.begin(), s.pending.end());
   s.pending.clear();
 }
 
 bool RiftStream::connected() const { return p_->is_connected; }
 RiftModel RiftStream::model() const { return p_->model; }
-const StreamStats& RiftStream::stats() const { return p_->stats; }
-const PoseSample& RiftStream::last_pose() const { return p_->last; }
+
+StreamStats RiftStream::stats() const {
+  std::lock_guard<std::mutex> lock(p_->mu);
+  return p_->stats;
+}
+
+PoseSample RiftStream::last_pose() const {
+  std::lock_guard<std::mutex> lock(p_->mu);
+  return p_->last;
+}
+
 int64_t RiftStream::now_ps() const { return static_cast<int64_t>(p_->now_s() * 1e12); }
 
 std::vector<StreamEvent> RiftStream::take_events() {
+  std::lock_guard<std::mutex> lock(p_->mu);
   std::vector<StreamEvent> e;
   e.swap(p_->events);
   return e;

@@ -11,7 +11,10 @@
 // `reconnect_every_s`; when it is back, streaming resumes on the same
 // timeline. Permission problems say where the udev rules are.
 //
-// Single-threaded: everything happens inside poll(), on the caller's thread.
+// By default a background thread services the device continuously (as the
+// kernel would queue reports), so a consumer that is busy rendering loses
+// nothing; poll() then only collects what was fused. With
+// `background_thread = false` everything happens inside poll() instead.
 #pragma once
 #include <memory>
 #include <string>
@@ -28,6 +31,7 @@ struct RiftStreamOptions {
   double keep_alive_resend_s = 3.0;  // how often it is re-sent
   int transfers_in_flight = 4;
   double reconnect_every_s = 0.5;
+  bool background_thread = true;
   FusionParams fusion;
 };
 
@@ -63,10 +67,10 @@ class RiftStream {
 
   bool connected() const;
   RiftModel model() const;
-  const StreamStats& stats() const;
+  StreamStats stats() const;
   std::vector<StreamEvent> take_events();
   // The last fused pose (held while disconnected); time 0 and identity before the first.
-  const PoseSample& last_pose() const;
+  PoseSample last_pose() const;
   // Now on the poses' timeline (picoseconds since the stream was created), to place them on another.
   int64_t now_ps() const;
 

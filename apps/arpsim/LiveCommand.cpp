@@ -24,8 +24,7 @@
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
-#include "tracker/RiftStream.hpp"
-#include "tracker/TraceFile.hpp"
+#include "tracker/PoseSource.hpp"
 
 namespace arp::app {
 
@@ -98,21 +97,17 @@ int run_live(const LiveArgs& a) {
   const double period_s = 1.0 / t.refresh_hz();
   const int64_t frames = a.seconds > 0 ? std::max<int64_t>(1, static_cast<int64_t>(std::llround(a.seconds / period_s))) : INT64_MAX;
 
-  // The head motion: the whole of it up front (trace, synthetic), or as it arrives (usb).
-  std::string source_name;
-  std::unique_ptr<tracker::RiftStream> usb;
-  dp::OrientationStream stream = dp::OrientationStream::constant(dp::Quat{});
+  // The head motion, from one pose source: all of it up front (trace,
+  // synthetic) or as it arrives (usb).
+  std::unique_ptr<tracker::PoseSource> source;
   if (!a.trace.empty()) {
-    stream = dp::OrientationStream(to_samples(tracker::read_trace_csv(a.trace)), a.trace);
-    source_name = a.trace;
+    source = tracker::trace_file_source(a.trace);
   } else if (!a.live.empty()) {
-    usb = std::make_unique<tracker::RiftStream>();
     std::string err;
-    if (!usb->open(err)) {
+    if (!(source = tracker::usb_source(err))) {
       std::fprintf(stderr, "arpsim live: --live usb: %s\n", err.c_str());
       return 1;
     }
-    source_name = usb->model() == tracker::RiftModel::DK1 ? "Oculus Rift DK1 (USB)" : "Oculus Rift DK2 (USB)";
   } else {
     MotionOptions m = a.motion;
     if (!m.given()) {
@@ -120,9 +115,17 @@ int run_live(const LiveArgs& a) {
       m.peak = 100;
     }
     const double span = a.seconds > 0 ? a.seconds + 1.0 : 3600.0;
-    stream = dp::OrientationStream(to_samples(m.make(0.0, span)), "--motion");  // the motion starts with frame 0
-    source_name = "synthetic " + m.motion;
+    source = tracker::recorded_source(m.make(0.0, span), "synthetic " + m.motion);  // the motion starts with frame 0
   }
+  const std::string source_name = source->describe();
+  dp::OrientationStream stream = dp::OrientationStream::constant(dp::Quat{});
+  std::vector<tracker::PoseSample> got;
+  if (!source->live()) {
+    source->poll(got, 0);
+    stream = dp::OrientationStream(to_samples(got), source_name);
+    got.clear();
+  }
+  tracker::PoseSource* usb = source->live() ? source.get() : nullptr;
   std::string memory_source;
   dp::DisplayMemorySet mem(c.memory, c.timing.eyes);
   a.cubemap.fill(mem, dp::Quat{}, memory_source);
@@ -152,7 +155,6 @@ int run_live(const LiveArgs& a) {
   host::RgbImage shown;
   const auto wall0 = std::chrono::steady_clock::now();
   const int64_t usb_offset = usb ? -usb->now_ps() : 0;
-  std::vector<tracker::PoseSample> got;
   int64_t shown_frames = 0, late = 0;
   double render_ms_sum = 0;
   bool quit = false;
@@ -160,7 +162,7 @@ int run_live(const LiveArgs& a) {
     // Frame k goes up at k periods after the start; wait for it, taking tracker data meanwhile.
     const auto due = wall0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(static_cast<double>(k + 1) * period_s));
     while (std::chrono::steady_clock::now() < due) {
-      if (usb) usb->poll(1, got);
+      if (usb) usb->poll(got, 1);
       else SDL_Delay(1);
     }
     if (std::chrono::steady_clock::now() > due + std::chrono::duration<double>(period_s)) ++late;
@@ -177,8 +179,7 @@ int run_live(const LiveArgs& a) {
         }
       stream.append(more, source_name);
       got.clear();
-      for (const auto& ev : usb->take_events())
-        std::fprintf(stderr, "arpsim live: [%.3f s] %s: %s\n", ev.at_s, tracker::to_string(ev.kind), ev.detail.c_str());
+      for (const auto& ev : usb->take_events()) std::fprintf(stderr, "arpsim live: %s\n", ev.c_str());
     }
     const auto r0 = std::chrono::steady_clock::now();
     model.render(mem, stream, k, f, ro);

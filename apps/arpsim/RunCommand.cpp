@@ -33,7 +33,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include "rtl_model/systemc/TimedRun.hpp"
-#include "tracker/RiftStream.hpp"
+#include "tracker/PoseSource.hpp"
 #include "tracker/TraceFile.hpp"
 
 namespace arp::app {
@@ -185,15 +185,15 @@ int run(const RunArgs& a) {
   for (const auto& p : poses)
     samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
   // Live input starts from the identity and grows frame by frame as the device's samples arrive.
-  std::unique_ptr<tracker::RiftStream> live;
+  std::unique_ptr<tracker::PoseSource> live;
   if (!a.live.empty()) {
-    live = std::make_unique<tracker::RiftStream>();
     std::string err;
-    if (!live->open(err)) {
+    live = tracker::usb_source(err);
+    if (!live) {
       std::fprintf(stderr, "arpsim run: --live usb: %s\n", err.c_str());
       return 1;
     }
-    motion_source = std::string("live ") + (live->model() == tracker::RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2") + " (USB)";
+    motion_source = "live " + live->describe();
   }
   dp::OrientationStream stream = samples.empty() ? dp::OrientationStream::constant(dp::Quat{})
                                                  : dp::OrientationStream(std::move(samples), motion_source);
@@ -332,10 +332,9 @@ int run(const RunArgs& a) {
       for (;;) {
         const int64_t wall_ps = static_cast<int64_t>(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() * 1e12);
         if (wall_ps >= until_ps) break;
-        live->poll(static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)), got);
+        live->poll(got, static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)));
       }
-      for (const auto& e : live->take_events())
-        std::fprintf(stderr, "arpsim run: live input [%.3f s] %s: %s\n", e.at_s, tracker::to_string(e.kind), e.detail.c_str());
+      for (const auto& e : live->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
       std::vector<dp::OrientationSample> more;
       int64_t last_ps = stream[stream.size() - 1].time_ps;
       for (const auto& p : got) {
@@ -662,7 +661,8 @@ int run(const RunArgs& a) {
         {"images", images},
         {"config", config::to_json(c)}};
     if (live) {
-      const auto& st = live->stats();
+      tracker::StreamStats st;
+      live->usb_stats(st);
       r["live"] = {{"source", motion_source}, {"samples", live_samples}, {"reports", st.reports}, {"malformed", st.malformed},
                    {"disconnects", st.disconnects}, {"reconnects", st.reconnects}, {"keep_alives", st.keep_alives},
                    {"connected_at_end", live->connected()}};

@@ -11,7 +11,7 @@
 #include "MotionOptions.hpp"
 #include "tracker/TraceFile.hpp"
 #include "tracker/DatasetImport.hpp"
-#include "tracker/RiftStream.hpp"
+#include "tracker/PoseSource.hpp"
 #include "tracker/UsbTrackers.hpp"
 
 namespace arp::app {
@@ -50,14 +50,14 @@ struct RecordArgs {
 // Ctrl-C stops early and still writes everything recorded.
 int run_record(const RecordArgs& a) {
   if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw InputError("--seconds", "", "must be more than 0 and at most a day");
-  tracker::RiftStream stream;
   std::string err;
-  if (!stream.open(err)) {
+  const auto source = tracker::usb_source(err);
+  if (!source) {
     std::fprintf(stderr, "arpsim tracker record: %s\n", err.c_str());
     return 1;
   }
   std::printf("arpsim tracker record: %s, %.1f s -> %s (Ctrl-C stops early and keeps what was recorded)\n",
-              stream.model() == tracker::RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2", a.seconds, a.out.c_str());
+              source->describe().c_str(), a.seconds, a.out.c_str());
   std::signal(SIGINT, on_interrupt);
   std::vector<tracker::PoseSample> poses;
   const auto t0 = std::chrono::steady_clock::now();
@@ -65,13 +65,12 @@ int run_record(const RecordArgs& a) {
   for (;;) {
     const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (el >= a.seconds || g_stop) break;
-    stream.poll(10, poses);
-    for (const auto& e : stream.take_events())
-      std::fprintf(stderr, "%s  [%.3f s] %s: %s\n", a.quiet ? "" : "\n", e.at_s, tracker::to_string(e.kind), e.detail.c_str());
+    source->poll(poses, 10);
+    for (const auto& e : source->take_events()) std::fprintf(stderr, "%s  %s\n", a.quiet ? "" : "\n", e.c_str());
     if (!a.quiet && el - last_line >= 0.25) {
       last_line = el;
       std::fprintf(stderr, "\r  %6.2f / %.2f s  %8zu samples  %s  ETA %.1f s   ", el, a.seconds, poses.size(),
-                   stream.connected() ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
+                   source->connected() ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
     }
   }
   std::signal(SIGINT, SIG_DFL);
@@ -81,7 +80,8 @@ int run_record(const RecordArgs& a) {
     return 1;
   }
   tracker::write_trace_csv(a.out, poses);
-  const auto& st = stream.stats();
+  tracker::StreamStats st;
+  source->usb_stats(st);
   std::printf("  %zu samples from %" PRId64 " reports; %" PRId64 " malformed, %" PRId64 " disconnects, %" PRId64
               " reconnects, %" PRId64 " keep-alives -> %s\n",
               poses.size(), st.reports, st.malformed, st.disconnects, st.reconnects, st.keep_alives, a.out.c_str());

@@ -23,6 +23,7 @@ namespace arp::test {
 namespace {
 
 struct Urb {
+  const void* client = nullptr;         // whose it is: each process opening the device is its own client
   UMockdevIoctlData* data = nullptr;    // the client's struct usbdevfs_urb (a reference we hold)
   UMockdevIoctlData* buffer = nullptr;  // its transfer buffer
   int type = 0, endpoint = 0, status = 0, actual = 0;
@@ -129,6 +130,7 @@ struct RiftEmulator::State {
         return reply(0, 0);
       case USBDEVFS_SUBMITURB: {
         Urb u;
+        u.client = client;
         u.data = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_urb), nullptr);
         const auto* urb = reinterpret_cast<const usbdevfs_urb*>(u.data->data);
         u.type = urb->type;
@@ -166,7 +168,7 @@ struct RiftEmulator::State {
       case USBDEVFS_DISCARDURB: {
         const gulong addr = *reinterpret_cast<const gulong*>(arg->data);
         for (auto it = interrupts.begin(); it != interrupts.end(); ++it)
-          if (it->data->client_addr == addr) {
+          if (it->client == client && it->data->client_addr == addr) {
             Urb u = *it;
             interrupts.erase(it);
             u.status = -ENOENT;
@@ -177,18 +179,26 @@ struct RiftEmulator::State {
       }
       case USBDEVFS_REAPURB:
       case USBDEVFS_REAPURBNDELAY: {
+        // Only this client's transfers: a process that went away may have left some behind.
         Urb u;
         const auto now = std::chrono::steady_clock::now();
-        if (!done.empty()) {
-          u = done.front();
-          done.pop_front();
-        } else if (!connected && !interrupts.empty()) {
-          u = interrupts.front();  // unplugged: what was in flight comes back failed
-          interrupts.pop_front();
+        auto mine = [client](std::deque<Urb>& q) {
+          for (auto it = q.begin(); it != q.end(); ++it)
+            if (it->client == client) return it;
+          return q.end();
+        };
+        const auto d = mine(done);
+        const auto i = mine(interrupts);
+        if (d != done.end()) {
+          u = *d;
+          done.erase(d);
+        } else if (!connected && i != interrupts.end()) {
+          u = *i;  // unplugged: what was in flight comes back failed
+          interrupts.erase(i);
           u.status = -ENODEV;
-        } else if (connected && !interrupts.empty() && report_due(now)) {
-          u = interrupts.front();
-          interrupts.pop_front();
+        } else if (connected && i != interrupts.end() && report_due(now)) {
+          u = *i;
+          interrupts.erase(i);
           const auto& rep = reports[static_cast<size_t>(sent++)];
           u.actual = cut_next ? 10 : static_cast<int>(rep.size());
           cut_next = false;

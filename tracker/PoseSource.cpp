@@ -1,0 +1,77 @@
+#include "PoseSource.hpp"
+
+#include <cstdio>
+
+#include "TraceFile.hpp"
+
+namespace arp::tracker {
+
+namespace {
+
+class RecordedSource : public PoseSource {
+ public:
+  RecordedSource(std::vector<PoseSample> s, std::string name) : samples_(std::move(s)), name_(std::move(name)) {}
+  std::string describe() const override { return name_; }
+  bool live() const override { return false; }
+  void poll(std::vector<PoseSample>& out, int) override {
+    if (given_) return;
+    out.insert(out.end(), samples_.begin(), samples_.end());
+    given_ = true;
+  }
+  int64_t now_ps() const override { return 0; }
+  std::vector<std::string> take_events() override { return {}; }
+
+ private:
+  std::vector<PoseSample> samples_;
+  std::string name_;
+  bool given_ = false;
+};
+
+class UsbSource : public PoseSource {
+ public:
+  explicit UsbSource(const RiftStreamOptions& o) : stream_(o) {}
+  bool open(std::string& error) { return stream_.open(error); }
+  std::string describe() const override {
+    return stream_.model() == RiftModel::DK1 ? "Oculus Rift DK1 (USB)" : "Oculus Rift DK2 (USB)";
+  }
+  bool live() const override { return true; }
+  void poll(std::vector<PoseSample>& out, int timeout_ms) override { stream_.poll(timeout_ms, out); }
+  int64_t now_ps() const override { return stream_.now_ps(); }
+  std::vector<std::string> take_events() override {
+    std::vector<std::string> lines;
+    char at[32];
+    for (const auto& e : stream_.take_events()) {
+      std::snprintf(at, sizeof at, "[%.3f s] ", e.at_s);
+      lines.push_back(at + std::string(to_string(e.kind)) + ": " + e.detail);
+    }
+    return lines;
+  }
+  bool usb_stats(StreamStats& out) const override {
+    out = stream_.stats();
+    return true;
+  }
+  bool connected() const override { return stream_.connected(); }
+
+ private:
+  RiftStream stream_;
+};
+
+}  // namespace
+
+std::unique_ptr<PoseSource> recorded_source(std::vector<PoseSample> samples, std::string name) {
+  return std::make_unique<RecordedSource>(std::move(samples), std::move(name));
+}
+
+std::unique_ptr<PoseSource> trace_file_source(const std::string& path) { return recorded_source(read_trace_csv(path), path); }
+
+std::unique_ptr<PoseSource> dataset_source(const std::string& path, const DatasetLayout& layout) {
+  return recorded_source(read_head_motion_dataset(path, layout), path);
+}
+
+std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options) {
+  auto s = std::make_unique<UsbSource>(options);
+  if (!s->open(error)) return nullptr;
+  return s;
+}
+
+}  // namespace arp::tracker
