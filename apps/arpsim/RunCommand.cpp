@@ -18,14 +18,12 @@
 #include "FrameImage.hpp"
 #include "GtkwSaveFile.hpp"
 #include "MotionOptions.hpp"
+#include "TruthProbe.hpp"
 #include "apps/config/ConfigFile.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
-#include "host/error/FrameError.hpp"
-#include "host/error/SeamMetrics.hpp"
-#include "host/error/TearImage.hpp"
 #include "host/priority/HostSimulation.hpp"
 #include "host/regions/Segmentation.hpp"
 #include "host/scene/Gallery.hpp"
@@ -78,23 +76,6 @@ std::pair<double, double> parse_window(const std::string& opt, const std::string
   } catch (const std::exception&) {
     throw InputError(opt, s, "expected START:END with END > START");
   }
-}
-
-// --tear-at FRAME:EYE:X:Y, the corner of the magnified tear window; frame -1 when not given.
-struct TearAt {
-  int64_t frame = -1;
-  int eye = 0, x = 0, y = 0;
-};
-
-TearAt parse_tear_at(const std::string& s) {
-  TearAt t;
-  if (s.empty()) return t;
-  char tail = 0;
-  long long f = 0;
-  if (std::sscanf(s.c_str(), "%lld:%d:%d:%d%c", &f, &t.eye, &t.x, &t.y, &tail) != 4 || f < 0 || t.eye < 0 || t.x < 0 || t.y < 0)
-    throw InputError("--tear-at", s, "expected FRAME:EYE:X:Y, non-negative integers");
-  t.frame = f;
-  return t;
 }
 
 // The VCD's final path (".vcd" added; a bare name goes into waveforms/) and its directory made.
@@ -363,152 +344,28 @@ int run(const RunArgs& a) {
   nlohmann::json frames = nlohmann::json::array();
   std::string csv = frame_csv_header();
   int images = 0;
-  // Error against the truth: the same pipeline reading memories freshly
-  // rendered, everything, for the true eye positions at the frame's middle.
-  std::unique_ptr<dp::DisplayMemorySet> truth_mem;
-  std::unique_ptr<FunctionalModel> truth_model;
-  dp::ArpConfig truth_cfg = c;
-  truth_cfg.memory.count = 1;
+  // Error against the truth (TruthProbe): every --error-every-th frame of a walk.
+  std::unique_ptr<TruthProbe> probe;
   if (hostsim && a.error_every > 0) {
-    truth_mem = std::make_unique<dp::DisplayMemorySet>(truth_cfg.memory, c.timing.eyes);
-    truth_model = std::make_unique<FunctionalModel>(truth_cfg);
+    TruthProbeSetup ps;
+    ps.config = &c;
+    ps.scene = scene.get();
+    ps.walk = walk.get();
+    ps.host = hostsim.get();
+    ps.memories = &mem;
+    ps.orientation = &stream;
+    ps.segmented = regions ? &segmented : nullptr;
+    ps.ipd_m = a.cubemap.ipd_m;
+    ps.threads = a.threads;
+    ps.first_frame = a.first;
+    ps.frames = a.frames;
+    ps.every = a.error_every;
+    ps.tear_image = a.tear_image;
+    ps.tear_at = a.tear_at;
+    probe = std::make_unique<TruthProbe>(ps);
   }
-  std::vector<double> psnrs;
-  double worst_px = 0, worst_object_share = 0;
-  std::vector<int64_t> tears, gaps, cracks;
-  // --tear-image: the frame and window with the most crack pixels (or the one --tear-at names).
-  constexpr int kTearWindowW = 48, kTearWindowH = 32, kTearScale = 8;
-  constexpr uint8_t kTearMarks = host::kCrackMark;  // the seam's own discontinuity picks the place
-  const TearAt tear_at = parse_tear_at(a.tear_at);
-  if (tear_at.frame >= 0) {
-    if (tear_at.frame < a.first || tear_at.frame >= a.first + a.frames || (tear_at.frame - a.first) % a.error_every != 0)
-      throw InputError("--tear-at", a.tear_at, "the frame must be one this run measures (--first-frame + k * --error-every)");
-    if (tear_at.eye >= c.timing.eyes || tear_at.x + kTearWindowW > c.timing.h_active || tear_at.y + kTearWindowH > c.timing.v_active)
-      throw InputError("--tear-at", a.tear_at,
-                       "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
-  }
-  host::TearWindow tear_best;
-  int64_t tear_frame = -1;
-  host::RgbImage tear_picture;
-  // The pipeline's own addressing, to ask which object each display pixel shows.
-  const dp::LensVectorTable lens(c.lens, c.timing, c.widths.vec_frac);
-  const dp::RotateParams rot(c.widths);
-  const dp::AddressGeneratorParams addr(c.widths, c.memory.face_size);
   const int latch_lead = static_cast<int>(dp::PipelineSchedule(c).orientation_lead());
-  std::vector<std::vector<host::FaceImage>> truth_ids(static_cast<size_t>(c.timing.eyes));
   const double px_rad = c.lens.fov_deg * 3.14159265358979323846 / 180.0 / c.timing.h_active;
-  auto frame_error = [&](const HmdFrame& f, int64_t frame, nlohmann::json& out) {
-    const double tm = static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame) + t.frame_cycles() / 2)) * 1e-12;
-    const dp::Quat& hq = stream[stream.index_at(static_cast<int64_t>(std::llround(tm * 1e12)))].q;
-    const glm::dquat q(hq.w, hq.x, hq.y, hq.z);
-    const host::CubeFaceRenderer renderer;
-    for (int e = 0; e < c.timing.eyes; ++e) {
-      renderer.render(*scene, {}, tm, host::eye_position(walk->position(tm), q, e, c.timing.eyes, a.cubemap.ipd_m),
-                      truth_mem->bank(e, 0), &truth_ids[static_cast<size_t>(e)]);
-      truth_mem->bank(e, 0).vblank();
-    }
-    HmdFrame truth;
-    RenderOptions tro;
-    tro.threads = a.threads;
-    truth_model->render(*truth_mem, stream, frame, truth, tro);
-    const host::ImageError ie = host::image_error(f, truth);
-    // Tracked points: each object's centre, where its memory's image shows it against where it is.
-    const glm::dvec3 eye_now = host::eye_position(walk->position(tm), q, 0, c.timing.eyes, a.cubemap.ipd_m);
-    const glm::dvec3 ahead = q * glm::dvec3(0, 0, -1);
-    double max_px = 0;
-    for (size_t i = 0; i < scene->objects.size(); ++i) {
-      const auto& o = scene->objects[i];
-      const int m = hostsim->shown_in(i);
-      if (m < 0) continue;
-      const double then = hostsim->rendered_at(m);
-      if (!std::isfinite(then)) continue;
-      const glm::dvec3 now_p = o.world_bound(tm).center;
-      if (glm::dot(glm::normalize(now_p - eye_now), ahead) < std::cos(c.lens.fov_deg * 0.6 * 3.14159265358979323846 / 180.0))
-        continue;  // outside the view
-      const double d = host::displacement_rad(hostsim->rendered_from(m, 0), o.world_bound(then).center, eye_now, now_p);
-      max_px = std::max(max_px, d / px_rad);
-    }
-    // Which object each pixel shows (the nearest texel the pipeline addresses,
-    // composited by depth across the memories) against the truth's.
-    int64_t differ = 0, total = 0;
-    const uint32_t empty = mem.format().empty_depth();
-    const int W = c.timing.h_active, H = c.timing.v_active;
-    host::ObjectMap shown_map, truth_map;
-    shown_map.resize(W, H, c.timing.eyes);
-    truth_map.resize(W, H, c.timing.eyes);
-    for (int e = 0; e < c.timing.eyes; ++e)
-      for (int y = 0; y < c.timing.v_active; ++y) {
-        size_t held = SIZE_MAX;
-        dp::Mat3q M{};
-        for (int x = 0; x < c.timing.h_active; ++x) {
-          const size_t sidx = stream.index_at(t.cycles_to_ps(dp::latch_cycle(t, c.pipeline.latch, latch_lead, frame, e, x, y)));
-          if (sidx != held) {
-            M = dp::quantise_rotation(stream[sidx].q, c.widths.mat_frac);
-            held = sidx;
-          }
-          const dp::CubeAddress ad = dp::generate_address(dp::rotate(M, lens.at(e, x, y), rot), addr);
-          uint32_t best_depth = empty, shown = 0;
-          for (int m = 0; m < mem.count(); ++m) {
-            const uint32_t dpt = dp::texel_depth(mem.bank(e, m).read(ad.face, ad.x, ad.y));
-            if (dpt < best_depth) {
-              best_depth = dpt;
-              shown = hostsim->shown_object(m, e, ad.face, ad.x, ad.y);
-            }
-          }
-          const auto& tf = truth_ids[static_cast<size_t>(e)][ad.face];
-          const uint32_t truth_object =
-              tf.object.empty() ? 0u : tf.object[static_cast<size_t>(ad.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(ad.x)];
-          differ += shown != truth_object;
-          ++total;
-          shown_map.id[shown_map.index(e, x, y)] = shown;
-          truth_map.id[truth_map.index(e, x, y)] = truth_object;
-        }
-      }
-    const double object_share = total ? static_cast<double>(differ) / static_cast<double>(total) : 0.0;
-    worst_object_share = std::max(worst_object_share, object_share);
-    // Tearing and cracks along the seams of cut objects (host/error/SeamMetrics).
-    int64_t tear = 0, gap = 0, crack = 0;
-    if (regions && !segmented.source.empty()) {
-      host::SeamPieces pieces;
-      pieces.source = segmented.source;
-      pieces.memory.resize(scene->objects.size());
-      for (size_t i = 0; i < scene->objects.size(); ++i) pieces.memory[i] = hostsim->shown_in(i);
-      host::SeamMeasure sm = host::measure_seams(shown_map, truth_map, pieces);
-      tear = sm.tear_pixels;
-      gap = sm.gap_pixels;
-      crack = sm.crack_pixels;
-      if (!a.tear_image.empty()) {
-        host::TearWindow w;
-        if (tear_at.frame >= 0) {
-          if (frame == tear_at.frame) {
-            w = {tear_at.eye, tear_at.x, tear_at.y, kTearWindowW, kTearWindowH, 0};
-            for (int y = 0; y < w.height; ++y)
-              for (int x = 0; x < w.width; ++x) w.marked += (sm.marks[shown_map.index(w.eye, w.x + x, w.y + y)] & kTearMarks) ? 1 : 0;
-          }
-        } else {
-          w = host::densest_window(shown_map, sm.marks, kTearMarks, kTearWindowW, kTearWindowH);
-        }
-        if (w.width > 0 && (tear_at.frame >= 0 || w.marked > tear_best.marked || tear_picture.width == 0)) {
-          tear_best = w;
-          tear_frame = frame;
-          tear_picture = host::magnified_tear(frame_to_image(f), frame_to_image(truth), shown_map, sm.marks, w, kTearScale);
-        }
-      }
-    }
-    tears.push_back(tear);
-    cracks.push_back(crack);
-    gaps.push_back(gap);
-    out["error"] = {{"psnr_db", std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0},
-                    {"pixels_showing_another_object", object_share},
-                    {"tear_pixels", tear},
-                    {"tear_gap_pixels", gap},
-                    {"crack_pixels", crack},
-                    {"mse", ie.mse},
-                    {"pixels_differing", ie.differing},
-                    {"max_displacement_px", max_px}};
-    psnrs.push_back(std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0);
-    worst_px = std::max(worst_px, max_px);
-  };
   in.sink = [&](const HmdFrame& f, const cycle::FrameReport& r) {
     uint64_t ph = 0xcbf29ce484222325ull, th = ph;
     for (uint32_t p : f.pixels) ph = fnv(ph, p);
@@ -538,7 +395,7 @@ int run(const RunArgs& a) {
     const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame) - lead));
     const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame + 1) - lead));
     nlohmann::json err;
-    if (truth_model && (r.frame - a.first) % a.error_every == 0) frame_error(f, r.frame, err);
+    if (probe && (r.frame - a.first) % a.error_every == 0) probe->measure(f, r.frame, err);
     frames.push_back({{"frame", r.frame},
                       {"first_sample", lo},
                       {"last_sample", hi},
@@ -597,13 +454,7 @@ int run(const RunArgs& a) {
     std::printf("  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)\n",
                 static_cast<double>(poses.back().time_ps) * 1e-12);
 
-  if (!a.tear_image.empty()) {
-    if (tear_picture.width == 0) throw InputError("--tear-image", a.tear_image, "no measured frame had a seam to show");
-    host::write_rgb8(a.tear_image, tear_picture);
-    std::printf("  magnified tear: %s (frame %" PRId64 ", eye %d, x %d, y %d, %" PRId64 " crack pixels; --tear-at %" PRId64 ":%d:%d:%d shows the same place)\n",
-                a.tear_image.c_str(), tear_frame, tear_best.eye, tear_best.x, tear_best.y, tear_best.marked, tear_frame, tear_best.eye,
-                tear_best.x, tear_best.y);
-  }
+  if (!a.tear_image.empty() && probe) std::printf("%s", probe->write_tear_image().c_str());
   if (!a.csv.empty()) write_text_atomic(a.csv, csv);
   if (!a.report.empty()) {
     const auto& tm = c.timed;
@@ -719,20 +570,7 @@ int run(const RunArgs& a) {
                                 {"reassignments", regions->reassignments()},
                                 {"warping", a.warp},
                                 {"max_warp_displacement_px", hostsim->max_warp_rad() / px_rad}};
-      if (!psnrs.empty()) {
-        double mean = 0;
-        for (double p : psnrs) mean += p;
-        r["host"]["error"] = {{"frames_measured", psnrs.size()},
-                              {"mean_psnr_db", mean / static_cast<double>(psnrs.size())},
-                              {"worst_psnr_db", *std::min_element(psnrs.begin(), psnrs.end())},
-                              {"max_displacement_px", worst_px},
-                              {"worst_share_showing_another_object", worst_object_share},
-                              {"mean_tear_pixels", tears.empty() ? 0.0 : static_cast<double>(std::accumulate(tears.begin(), tears.end(), int64_t{0})) / static_cast<double>(tears.size())},
-                              {"max_tear_pixels", tears.empty() ? 0 : *std::max_element(tears.begin(), tears.end())},
-                              {"mean_crack_pixels", cracks.empty() ? 0.0 : static_cast<double>(std::accumulate(cracks.begin(), cracks.end(), int64_t{0})) / static_cast<double>(cracks.size())},
-                              {"tear_image", a.tear_image.empty() ? nlohmann::json() : nlohmann::json{{"file", a.tear_image}, {"frame", tear_frame}, {"eye", tear_best.eye}, {"x", tear_best.x}, {"y", tear_best.y}, {"width", tear_best.width}, {"height", tear_best.height}, {"crack_pixels", tear_best.marked}, {"scale", kTearScale}}},
-                              {"mean_tear_gap_pixels", gaps.empty() ? 0.0 : static_cast<double>(std::accumulate(gaps.begin(), gaps.end(), int64_t{0})) / static_cast<double>(gaps.size())}};
-      }
+      if (probe && probe->measured()) r["host"]["error"] = probe->summary();
     }
     write_text_atomic(a.report, r.dump(2) + "\n");
   }
