@@ -24,7 +24,7 @@ run() {  # name, extra arguments
   local name=$1
   shift
   echo "reproduce-chow2005: $name"
-  "$ARPSIM" run -q --scene gallery --walk scenes/gallery-worst-case-walk.json --frames "$FRAMES" --every 60 \
+  "$ARPSIM" run --scene gallery --walk scenes/gallery-worst-case-walk.json --frames "$FRAMES" --every 60 \
     --error-every 10 --threshold-deg "$THETA" --out-dir "$OUT/frames-$name" --report "$OUT/$name.json" \
     --host-csv "$OUT/$name-memories.csv" "$@" > "$OUT/$name.log"
 }
