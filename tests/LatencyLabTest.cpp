@@ -181,3 +181,42 @@ TEST(LatencyLab, SlatsCannotDrawTooManyTrianglesAndBadSettingsAreRefused) {
   EXPECT_THROW(TrackerFeed(yaw(1, 1.0), TrackerModel{0, 0}, "trace.csv"), InputError);
   EXPECT_THROW(TrackerFeed(std::vector<tracker::PoseSample>(1), TrackerModel{}, "trace.csv"), InputError);
 }
+
+// Walking without turning: the ARP's translation goes through priority
+// rendering -- the memory is re-rendered each time the head has moved
+// D·sqrt(2(1 − cos θt)), and shown a frame later -- so its parallax error is
+// bounded by that distance plus two frames of walking; the other
+// architectures draw translation from their own pose.
+TEST(LatencyLab, TheArpTranslatesThroughPriorityRendering) {
+  dp::ArpConfig c;
+  const DisplayRaster d(c.timing, c.lens.fov_deg);
+  auto walk = yaw(0, 2.0);
+  for (auto& p : walk) {
+    p.has_position = true;
+    p.position = glm::dvec3(0, 1.6, -1.4 * static_cast<double>(p.time_ps) * 1e-12);
+  }
+  const TrackerFeed feed(walk, TrackerModel{1000, 0.001}, "walk");
+  ASSERT_TRUE(feed.has_positions());
+  const double theta = 2.0 * 3.14159265358979 / 180, D = 2.0;
+  ArpOrientationPath arp(d, c, dp::LatchPolicy::PerPixel, 0.0, ArpTranslation{&feed, theta, D});
+  LabSettings s;
+  s.first_frame = 10;
+  s.frames = 60;  // one second
+  s.point_distance_m = D;
+  const auto r = measure(arp, d, feed, s);
+  const double threshold_m = D * std::sqrt(2 * (1 - std::cos(theta)));  // 7 cm
+  EXPECT_NEAR(static_cast<double>(arp.translation_renders()), 1.4 / threshold_m, 2.0);
+  const double stale_m = threshold_m + 2 * 1.4 / 59.94;
+  EXPECT_GT(r.max_error.max, 0.5);
+  EXPECT_LT(r.max_error.max, stale_m / D * 180 / 3.14159265358979 * d.pixels_per_degree());
+  // Straight ahead there is no parallax, whatever the staleness.
+  EXPECT_LT(r.centre_error.max, 0.1);  // (the centre pixel's ray is half a pixel off the axis)
+  // A tighter threshold re-renders more often and errs less.
+  ArpOrientationPath tight(d, c, dp::LatchPolicy::PerPixel, 0.0, ArpTranslation{&feed, theta / 8, D});
+  const auto rt = measure(tight, d, feed, s);
+  EXPECT_GT(tight.translation_renders(), 2 * arp.translation_renders());  // at most one a frame
+  EXPECT_LT(rt.max_error.max, r.max_error.max);
+  // Just-in-time pixels draw translation from each line's own report: far smaller.
+  JustInTimePixels line(d, JitConfig{JitMode::PerScanline, -1, 0, 2e6}, "test");
+  EXPECT_LT(measure(line, d, feed, s).max_error.max, 1.0);
+}

@@ -48,6 +48,7 @@ struct LatencyArgs {
   double tracker_rate = 1000, tracker_latency_ms = -1, horizon_ms = 0, jit_lead_us = -1;
   double conv_transform_ms = 8, conv_render_ms = 10, conv_copy_ms = 12, conv_rate = 2e6, triangles = 0;
   double slats_setup_ms = 1, slats_copy_ms = 3.9, slats_rate = 12000, jit_rate = 2e6;
+  double walk_speed = 0, theta_deg = 0, point_distance = 2.0;
   bool no_field_sync = false;
 };
 
@@ -90,6 +91,8 @@ LabConfig lab_config(const LatencyArgs& a) {
   lab.jit_triangles_per_s = a.jit_rate;
   lab.horizon_s = a.horizon_ms * 1e-3;
   lab.triangles = a.triangles;
+  lab.arp_threshold_rad = a.theta_deg * 3.14159265358979323846 / 180.0;
+  lab.point_distance_m = a.point_distance;
   return lab;
 }
 
@@ -197,6 +200,9 @@ int run_latency(const LatencyArgs& a) {
                          {"--jitp-triangle-rate", a.jit_rate}, {"--tracker-rate", a.tracker_rate}})
     if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive number");
   if (!(a.triangles >= 0) || !std::isfinite(a.triangles)) throw InputError("--triangles", "", "must be >= 0");
+  if (!(a.walk_speed >= 0) || a.walk_speed > 50) throw InputError("--walk-speed", "", "must be 0 .. 50 m/s");
+  if (!(a.theta_deg >= 0) || a.theta_deg > 90) throw InputError("--theta-deg", "", "must be 0 (one texel) .. 90 degrees");
+  if (!(a.point_distance > 0) || a.point_distance > 1e4) throw InputError("--point-distance", "", "must be more than 0 and at most 10 km");
   if (a.tracker_latency_ms != -1 && !(a.tracker_latency_ms >= 0 && a.tracker_latency_ms <= 1000))
     throw InputError("--tracker-latency-ms", "", "must be 0 .. 1000 ms");
   if (a.jit_lead_us != -1 && !(a.jit_lead_us >= 0)) throw InputError("--jitp-lead-us", "", "must be >= 0 (or -1: one line)");
@@ -246,8 +252,16 @@ int run_latency(const LatencyArgs& a) {
                   : m.motion == "shake" ? "head shake, " + fmt("%.0f", m.peak) + " deg/s peak at " + fmt("%.2f", m.frequency) + " Hz"
                                         : "pendulum " + fmt("%.0f", m.amplitude) + " deg, " + fmt("%.2f", m.period) + " s";
   }
+  if (a.walk_speed > 0) {
+    // Walking straight ahead (world -z) at eye height while the head turns: translation for every architecture.
+    for (auto& p : motion) {
+      p.has_position = true;
+      p.position = glm::dvec3(0, 1.6, -a.walk_speed * static_cast<double>(p.time_ps) * 1e-12);
+    }
+    motion_name += ", walking " + fmt("%.2f", a.walk_speed) + " m/s";
+  }
   const TrackerFeed feed(motion, tm, a.trace.empty() ? "--motion" : a.trace);
-  auto archs = make_architectures(d, c, lab, "arpsim latency settings");
+  auto archs = make_architectures(d, c, lab, "arpsim latency settings", &feed);
   std::vector<std::string> names;
   for (const auto& ar : archs) names.push_back(ar->name());
   fs::create_directories(out);  // only once every setting has been checked
@@ -259,6 +273,7 @@ int run_latency(const LatencyArgs& a) {
   ls.frames = a.frames;
   ls.grid_step = a.grid;
   ls.prediction = pred;
+  ls.point_distance_m = a.point_distance;
   std::vector<ArchitectureResult> results;
   for (auto& ar : archs) {
     results.push_back(measure(*ar, d, feed, ls));
@@ -280,7 +295,8 @@ int run_latency(const LatencyArgs& a) {
                    (d.fields_per_frame() == 2 ? " interlaced" : "") + ", " + fmt("%.2f", 1e12 / static_cast<double>(d.field_period_ps())) +
                    " fields/s, " + fmt("%.0f", d.fov_deg()) + " deg across (" + fmt("%.2f", d.pixels_per_degree()) + " px/deg); motion: " +
                    motion_name + "; tracker " + fmt("%.0f", tm.rate_hz) + " Hz, " + fmt("%.1f", tm.latency_s * 1e3) + " ms latency; prediction " +
-                   to_string(pred) + " (horizon " + fmt("%.1f", a.horizon_ms) + " ms)" + scene_note + "; " + std::to_string(a.frames) + " refreshes, every " +
+                   to_string(pred) + " (horizon " + fmt("%.1f", a.horizon_ms) + " ms)" + scene_note +
+                   (feed.has_positions() ? "; tracked points " + fmt("%.1f", a.point_distance) + " m away" : std::string()) + "; " + std::to_string(a.frames) + " refreshes, every " +
                    std::to_string(a.grid) + "th pixel and line.\n\n"
                    "Latency: photon time minus the sample time of the tracker report the pixel was computed from. "
                    "Error: the angle between where the pixel's pose put a world point and where the true head at the pixel's photon "
@@ -296,6 +312,7 @@ int run_latency(const LatencyArgs& a) {
                                         {"centre_error_px", to_json(r.centre_error)},
                                         {"frame_max_error_px", to_json(r.max_error)},
                                         {"missed_images", r.missed_images},
+                                        {"position_age_ms", to_json(r.position_age_ms)},
                                         {"refreshes_without_image", r.frames_without_image}});
     md += "| " + r.name + " | " + fmt("%.1f", r.image_interval_s * 1e3) + " | " +
           (r.latency.count ? fmt("%.3f", r.latency.min) + " / " + fmt("%.3f", r.latency.p50) + " / " + fmt("%.3f", r.latency.p99) + " / " +
@@ -304,6 +321,14 @@ int run_latency(const LatencyArgs& a) {
           " | " + (r.latency.count ? fmt("%.2f", r.centre_error.mean) + " / " + fmt("%.2f", r.centre_error.max) + " | " + fmt("%.2f", r.max_error.max)
                                    : std::string("- | -")) +
           " | " + std::to_string(r.missed_images) + " |\n";
+  }
+  if (feed.has_positions()) {
+    md += "\nThe head also moves: the position each image was drawn from is older than its orientation for the ARP "
+          "(priority rendering re-renders the memory on need and shows it a frame later):\n\n"
+          "| architecture | position age at the photon, median / max (ms) |\n| --- | --- |\n";
+    for (const auto& r : results)
+      if (r.position_age_ms.count)
+        md += "| " + r.name + " | " + fmt("%.2f", r.position_age_ms.p50) + " / " + fmt("%.2f", r.position_age_ms.max) + " |\n";
   }
   md += "\nArchitectures:\n\n";
   for (const auto& r : results) md += "- **" + r.name + "**: " + r.description + "\n";
@@ -386,7 +411,7 @@ int run_latency(const LatencyArgs& a) {
     for (int h = 0; h <= 100; h += 5) {
       LabConfig hl = lab;
       hl.horizon_s = h * 1e-3;
-      auto ha = make_architectures(d, c, hl, "horizon sweep");
+      auto ha = make_architectures(d, c, hl, "horizon sweep", &feed);
       csv += std::to_string(h);
       for (auto& ar : ha) {
         const auto r = measure(*ar, d, feed, hp);
@@ -508,6 +533,12 @@ Runner add_latency_command(CLI::App& app) {
   cmd->add_option("--conv-triangle-rate", a->conv_rate, "Conventional: triangles rendered per second")->capture_default_str();
   cmd->add_flag("--no-field-sync", a->no_field_sync, "Conventional: stages start as soon as they can, not at vertical blanks");
   cmd->add_option("--triangles", a->triangles, "Scene size drawn per image by the conventional pipeline, Slats and just-in-time pixels")->capture_default_str();
+  cmd->add_option("--walk-speed", a->walk_speed, "Also walk straight ahead at this speed, m/s (translation; 0: the head only turns)")
+      ->capture_default_str();
+  cmd->add_option("--theta-deg", a->theta_deg, "The ARP's priority-rendering threshold angle theta_t (0: one display-memory texel)")
+      ->capture_default_str();
+  cmd->add_option("--point-distance", a->point_distance, "Distance of the tracked world points, m (matters when walking)")
+      ->capture_default_str();
   cmd->add_option("--scene", a->scene, "Scene whose triangles the conventional pipeline, Slats and JITP draw per image: gallery or a scene file");
   cmd->add_option("--slats-setup-ms", a->slats_setup_ms, "Slats: fixed work per field")->capture_default_str();
   cmd->add_option("--slats-copy-ms", a->slats_copy_ms, "Slats: first half of the copy, before the retrace")->capture_default_str();

@@ -18,6 +18,11 @@ struct PoseUse {
   int64_t compute2_ps = 0, target2_ps = 0;
   double blend = 0.0;
   bool shown = true;        // false before the architecture's first image
+  // The head position the image was drawn from: the true position at this
+  // time (-1: the position in the same tracker report as the orientation).
+  // The ARP draws translation through priority rendering, so its position
+  // is the one its display memory was last rendered from.
+  int64_t position_ps = -1;
 };
 
 class DisplayArchitecture {

@@ -3,7 +3,9 @@
 // minus the sample time of the tracker report it was computed from), and its
 // registration error -- the angle, in display pixels, between where the pose
 // it was computed with put a world point and where the true head pose at its
-// photon time would put it. Sampled on a pixel grid every refresh, plus the
+// photon time would put it. When the head also moves (the motion has
+// positions), the world points are point_distance_m from where each image
+// was drawn from, so translation shows as parallax. Sampled on a pixel grid every refresh, plus the
 // screen centre (Olano et al.'s figure 9 follows the centre).
 #pragma once
 #include <cstdint>
@@ -19,6 +21,7 @@ struct LabSettings {
   int64_t first_frame = 0, frames = 120;
   int grid_step = 8;  // sample every Nth pixel and line (plus the last ones and the centre)
   Prediction prediction = Prediction::None;
+  double point_distance_m = 2.0;  // the tracked world points' distance (matters only when the head moves, not just turns)
 };
 
 struct FramePoint {
@@ -40,6 +43,7 @@ struct ArchitectureResult {
   std::string name, description;
   std::vector<FramePoint> frames;
   std::vector<double> latency_ms;        // every sampled pixel of every refresh with an image
+  Distribution position_age_ms;          // photon - the time of the position drawn from (when the head moves)
   Distribution latency, centre_error, max_error;  // max_error: per-frame worst over the grid
   int64_t missed_images = 0, frames_without_image = 0;
   double image_interval_s = 0;
@@ -47,7 +51,7 @@ struct ArchitectureResult {
 
 // Error of one pixel, degrees of arc (the lab converts with DisplayRaster::pixels_per_degree).
 double pixel_error_deg(const DisplayRaster& d, const TrackerFeed& feed, const PoseUse& u, Prediction p, int64_t photon_ps,
-                       int x, int y);
+                       int x, int y, double point_distance_m = 2.0);
 
 ArchitectureResult measure(DisplayArchitecture& a, const DisplayRaster& d, const TrackerFeed& feed, const LabSettings& s);
 

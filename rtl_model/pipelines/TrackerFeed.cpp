@@ -39,6 +39,7 @@ TrackerFeed::TrackerFeed(std::vector<tracker::PoseSample> truth, const TrackerMo
       throw InputError(source, "sample " + std::to_string(i), "times must increase strictly");
     truth_[i].orientation = glm::normalize(s.orientation);
   }
+  positions_ = std::all_of(truth_.begin(), truth_.end(), [](const tracker::PoseSample& p) { return p.has_position; });
   period_ps_ = static_cast<int64_t>(std::llround(1e12 / model.rate_hz));
   latency_ps_ = static_cast<int64_t>(std::llround(model.latency_s * 1e12));
 }
@@ -52,6 +53,18 @@ glm::dquat TrackerFeed::truth(int64_t t) const {
   const auto& a = *(it - 1);
   const double u = static_cast<double>(t - a.time_ps) / static_cast<double>(b.time_ps - a.time_ps);
   return glm::slerp(a.orientation, b.orientation, u);
+}
+
+glm::dvec3 TrackerFeed::truth_position(int64_t t) const {
+  if (!positions_) return glm::dvec3(0.0);
+  if (t <= truth_.front().time_ps) return truth_.front().position;
+  if (t >= truth_.back().time_ps) return truth_.back().position;
+  const auto it = std::upper_bound(truth_.begin(), truth_.end(), t,
+                                   [](int64_t v, const tracker::PoseSample& s) { return v < s.time_ps; });
+  const auto& b = *it;
+  const auto& a = *(it - 1);
+  const double u = static_cast<double>(t - a.time_ps) / static_cast<double>(b.time_ps - a.time_ps);
+  return a.position + (b.position - a.position) * u;
 }
 
 int64_t TrackerFeed::sample_time(int64_t k) const { return k * period_ps_; }

@@ -36,6 +36,9 @@ class TrackerFeed {
   int64_t truth_end_ps() const { return truth_.back().time_ps; }
   // The true head orientation at t (slerp between trace samples; held outside the trace).
   glm::dquat truth(int64_t t_ps) const;
+  // The true head position at t (linear between samples; the origin when the motion has none).
+  glm::dvec3 truth_position(int64_t t_ps) const;
+  bool has_positions() const { return positions_; }
   // Sample time of the latest report available at t.
   int64_t report_sample_ps(int64_t t_ps) const;
   // The orientation a system computing at `compute_ps` uses for `target_ps`:
@@ -46,6 +49,7 @@ class TrackerFeed {
   glm::dquat report(int64_t k) const;  // report k, sampled at k / rate
   int64_t sample_time(int64_t k) const;
   std::vector<tracker::PoseSample> truth_;
+  bool positions_ = false;
   TrackerModel m_;
   int64_t period_ps_, latency_ps_;
 };
