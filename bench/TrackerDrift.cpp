@@ -37,11 +37,7 @@ void trace_prediction(const char* path) {
     size_t n = 0;
     for (size_t i = 1; i < tr.size() && tr[i].time_ps + hp <= tr.back().time_ps; ++i, ++n) {
       const double dt = static_cast<double>(tr[i].time_ps - tr[i - 1].time_ps) * 1e-12;
-      glm::dquat d = glm::conjugate(tr[i - 1].orientation) * tr[i].orientation;
-      if (d.w < 0) d = -d;
-      const glm::dvec3 v(d.x, d.y, d.z);
-      const double sn = glm::length(v);
-      const glm::dvec3 w = sn > 1e-15 ? v / sn * (2.0 * std::atan2(sn, d.w) / dt) : glm::dvec3(0.0);
+      const glm::dvec3 w = rate_between(tr[i - 1].orientation, tr[i].orientation, dt);
       const glm::dquat truth = at(tr, tr[i].time_ps + hp);
       const double e = angle_between_deg(predict(tr[i].orientation, w, h * 1e-3), truth);
       mean += e;

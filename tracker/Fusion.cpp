@@ -14,6 +14,14 @@ glm::dquat integrate(const glm::dquat& q, const glm::dvec3& w, double dt) {
   return glm::normalize(q * glm::angleAxis(rate * dt, w / rate));  // head-frame rate: compose on the right
 }
 
+glm::dvec3 rate_between(const glm::dquat& a, const glm::dquat& b, double dt) {
+  glm::dquat d = glm::conjugate(a) * b;
+  if (d.w < 0) d = -d;  // the shorter way round
+  const double s = glm::length(glm::dvec3(d.x, d.y, d.z));
+  if (s < 1e-15) return glm::dvec3(0.0);
+  return glm::dvec3(d.x, d.y, d.z) / s * (2.0 * std::atan2(s, d.w) / dt);
+}
+
 glm::dquat predict(const glm::dquat& q, const glm::dvec3& w, double horizon_s) {
   if (!(horizon_s >= 0.0) || !std::isfinite(horizon_s)) throw std::invalid_argument("prediction horizon must be >= 0");
   return integrate(q, w, horizon_s);

@@ -36,6 +36,10 @@ class Fusion {
 // Rotation of q by a head-frame angular velocity w held for dt seconds.
 glm::dquat integrate(const glm::dquat& q, const glm::dvec3& w, double dt);
 
+// The head-frame angular velocity taking orientation a to b in dt seconds
+// (the inverse of integrate): how a rate is estimated from two reports.
+glm::dvec3 rate_between(const glm::dquat& a, const glm::dquat& b, double dt);
+
 // Constant-angular-velocity prediction: the pose `horizon_s` seconds after
 // the sample, rotating on at its angular velocity (negative horizons refused).
 glm::dquat predict(const glm::dquat& q, const glm::dvec3& w, double horizon_s);

@@ -18,6 +18,7 @@
 #include "CommonOptions.hpp"
 #include "FrameImage.hpp"
 #include "MotionOptions.hpp"
+#include "PoseConversion.hpp"
 #include "common/InputError.hpp"
 #include "host/cubemap/BitmapFont.hpp"
 #include "host/cubemap/ImageFiles.hpp"
@@ -52,12 +53,6 @@ struct Sdl {
     SDL_Quit();
   }
 };
-
-std::vector<dp::OrientationSample> to_samples(const std::vector<tracker::PoseSample>& poses, int64_t offset_ps = 0) {
-  std::vector<dp::OrientationSample> s;
-  for (const auto& p : poses) s.push_back({p.time_ps + offset_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
-  return s;
-}
 
 // The overlay: a dark box with white text in the image's top-left corner.
 void overlay(host::RgbImage& img, const std::vector<std::string>& lines) {
@@ -122,7 +117,7 @@ int run_live(const LiveArgs& a) {
   std::vector<tracker::PoseSample> got;
   if (!source->live()) {
     source->poll(got, 0);
-    stream = dp::OrientationStream(to_samples(got), source_name);
+    stream = dp::OrientationStream(to_orientation_samples(got), source_name);
     got.clear();
   }
   tracker::PoseSource* usb = source->live() ? source.get() : nullptr;
@@ -170,14 +165,7 @@ int run_live(const LiveArgs& a) {
     while (SDL_PollEvent(&e))
       if (e.type == SDL_QUIT || (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE)) quit = true;
     if (usb) {
-      std::vector<dp::OrientationSample> more;
-      int64_t last = stream[stream.size() - 1].time_ps;
-      for (const auto& s : to_samples(got, usb_offset))
-        if (s.time_ps >= last) {
-          more.push_back(s);
-          last = s.time_ps;
-        }
-      stream.append(more, source_name);
+      append_live_poses(stream, got, usb_offset, source_name);
       got.clear();
       for (const auto& ev : usb->take_events()) std::fprintf(stderr, "arpsim live: %s\n", ev.c_str());
     }

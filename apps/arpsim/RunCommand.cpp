@@ -18,6 +18,7 @@
 #include "FrameImage.hpp"
 #include "GtkwSaveFile.hpp"
 #include "MotionOptions.hpp"
+#include "PoseConversion.hpp"
 #include "TruthProbe.hpp"
 #include "apps/config/ConfigFile.hpp"
 #include "common/AtomicFile.hpp"
@@ -162,9 +163,7 @@ int run(const RunArgs& a) {
     }
     motion_source = (a.walk == "gallery" ? std::string("gallery walk") : a.walk) + " with " + motion_source;
   }
-  std::vector<dp::OrientationSample> samples;
-  for (const auto& p : poses)
-    samples.push_back({p.time_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
+  std::vector<dp::OrientationSample> samples = to_orientation_samples(poses);
   // Live input starts from the identity and grows frame by frame as the device's samples arrive.
   std::unique_ptr<tracker::PoseSource> live;
   if (!a.live.empty()) {
@@ -316,16 +315,7 @@ int run(const RunArgs& a) {
         live->poll(got, static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)));
       }
       for (const auto& e : live->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
-      std::vector<dp::OrientationSample> more;
-      int64_t last_ps = stream[stream.size() - 1].time_ps;
-      for (const auto& p : got) {
-        const int64_t tp = p.time_ps + live_offset_ps;
-        if (tp < last_ps) continue;  // from before the run started (a report's earlier samples)
-        last_ps = tp;
-        more.push_back({tp, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
-      }
-      live_samples += static_cast<int64_t>(more.size());
-      stream.append(more, motion_source);
+      live_samples += append_live_poses(stream, got, live_offset_ps, motion_source);
       got.clear();
     };
   }

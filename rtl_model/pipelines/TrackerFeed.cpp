@@ -78,31 +78,17 @@ int64_t TrackerFeed::report_sample_ps(int64_t t) const {
   return sample_time(k);
 }
 
-namespace {
-
-// Head-frame angular velocity taking a to b in dt seconds.
-glm::dvec3 rate_between(const glm::dquat& a, const glm::dquat& b, double dt) {
-  glm::dquat d = glm::conjugate(a) * b;
-  if (d.w < 0) d = -d;
-  const double s = glm::length(glm::dvec3(d.x, d.y, d.z));
-  if (s < 1e-15) return glm::dvec3(0.0);
-  const double angle = 2.0 * std::atan2(s, d.w);
-  return glm::dvec3(d.x, d.y, d.z) / s * (angle / dt);
-}
-
-}  // namespace
-
 glm::dquat TrackerFeed::orientation_for(int64_t compute_ps, int64_t target_ps, Prediction p) const {
   const int64_t s = report_sample_ps(compute_ps);
   const int64_t k = s / period_ps_ - (s < 0 && s % period_ps_ ? 1 : 0);
   const glm::dquat q = report(k);
   if (p == Prediction::None || target_ps <= s) return q;
   const double dt = static_cast<double>(period_ps_) * 1e-12, h = static_cast<double>(target_ps - s) * 1e-12;
-  const glm::dvec3 w1 = rate_between(report(k - 1), q, dt);
+  const glm::dvec3 w1 = tracker::rate_between(report(k - 1), q, dt);
   if (p == Prediction::Velocity) return tracker::predict(q, w1, h);
   // Constant acceleration: the mean rate over the horizon is w + a h / 2
   // (w estimated half a period back, so it is carried forward too).
-  const glm::dvec3 w0 = rate_between(report(k - 2), report(k - 1), dt);
+  const glm::dvec3 w0 = tracker::rate_between(report(k - 2), report(k - 1), dt);
   const glm::dvec3 acc = (w1 - w0) / dt;
   return tracker::predict(q, w1 + acc * (0.5 * dt + 0.5 * h), h);
 }
