@@ -6,6 +6,14 @@
 
 namespace arp {
 
+// A message quotes at most this much of a bad value: enough to recognise it,
+// never a flood (a 10 MB field, a binary file read as text).
+constexpr size_t kQuoteChars = 80;
+inline std::string quoted(std::string s) {
+  if (s.size() > kQuoteChars) s = s.substr(0, kQuoteChars - 3) + "...";
+  return s;
+}
+
 class InputError : public std::runtime_error {
  public:
   InputError(std::string source, std::string place, std::string reason)

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "TestSupport.hpp"
-#include "apps/config/ConfigFile.hpp"
+#include "sim/ConfigFile.hpp"
 #include "common/InputError.hpp"
 
 using namespace arp;
@@ -40,16 +40,71 @@ TEST(ConfigFile, DefaultsAreTheBriefsAndRoundTrip) {
   EXPECT_EQ(config::to_json(config::from_json(j, "round trip")), j);
 }
 
-TEST(ConfigFile, EveryKeyIsDocumented) {
+TEST(ConfigFile, TheCommittedReferenceDocIsGeneratedFromTheParameterTable) {
   std::ifstream in(std::string(ARPSIM_SOURCE_DIR) + "/docs/configuration.md");
   ASSERT_TRUE(in) << "docs/configuration.md missing";
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string doc = ss.str();
+  EXPECT_EQ(config::update_reference_doc(doc), doc)
+      << "docs/configuration.md is stale: build/apps/arpsim/arpsim config --update-doc docs/configuration.md";
+  // Every key appears, once, in a generated table with its default.
   const json j = config::to_json(dp::ArpConfig{});
   for (auto s = j.begin(); s != j.end(); ++s)
-    for (auto k = s.value().begin(); k != s.value().end(); ++k)
-      EXPECT_NE(doc.find("`" + s.key() + "." + k.key() + "`"), std::string::npos) << s.key() << "." << k.key();
+    for (auto k = s.value().begin(); k != s.value().end(); ++k) {
+      const std::string row = "| `" + s.key() + "." + k.key() + "` |";
+      EXPECT_NE(doc.find(row), std::string::npos) << row;
+      EXPECT_EQ(doc.find(row), doc.rfind(row)) << row;
+    }
+}
+
+TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
+  const auto& t = dp::arp_parameters();
+  EXPECT_EQ(t.sections(), (std::vector<std::string>{"display", "lens", "datapath", "memory", "pipeline", "timed"}));
+  size_t n = 0;
+  for (const auto& p : t.all()) {
+    ++n;
+    EXPECT_FALSE(p.doc.empty()) << p.key;
+    EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
+  }
+  EXPECT_EQ(n, 12u + 3 + 12 + 7 + 5 + 2 * dp::kStageCount + 4);
+  // The table and the JSON writer agree: every key written is declared, and the other way round.
+  const json j = config::to_json(dp::ArpConfig{});
+  size_t written = 0;
+  for (auto s = j.begin(); s != j.end(); ++s) written += s.value().size();
+  EXPECT_EQ(written, n);
+}
+
+TEST(ConfigFile, StrictReadingRefusesRepeatsOverflowsAndDeepNesting) {
+  test::TempDir d;
+  auto file_error = [&](const std::string& text) {
+    std::ofstream(d.file("c.json")) << text;
+    return error_of([&] { config::load_file(d.file("c.json")); });
+  };
+  auto e = file_error(R"({"datapath": {"vec_frac": 12, "vec_frac": 13}})");
+  EXPECT_EQ(e.place(), "datapath.vec_frac");
+  EXPECT_NE(e.reason().find("twice"), std::string::npos);
+  e = file_error("{\n \"lens\": {\"fov_deg\": 1e400}}");
+  EXPECT_NE(e.place().find("line 2"), std::string::npos) << e.what();
+  EXPECT_NE(e.reason().find("too large"), std::string::npos) << e.what();
+  e = file_error(std::string(100000, '[') + std::string(100000, ']'));
+  EXPECT_NE(e.reason().find("deeper"), std::string::npos) << e.what();
+  e = file_error(R"({"memory": {"face_size": 18446744073709551615}})");
+  EXPECT_NE(e.reason().find("18446744073709551615"), std::string::npos) << e.what();
+  e = file_error(R"({"memory": {"background": [4294967296, 0, 0]}})");
+  EXPECT_EQ(e.place(), "memory.background");
+  EXPECT_NE(e.reason().find("element 0"), std::string::npos) << e.what();
+  e = file_error(R"({"datapath": {"newton_steps": 3.9}})");
+  EXPECT_NE(e.reason().find("integer"), std::string::npos);
+  e = file_error(R"({"lens": {"k": [1e308, 0, 0, 0]}})");
+  EXPECT_EQ(e.place(), "lens.k");
+  e = file_error(R"({"lens": {"fov_deg": 1e-320}})");
+  EXPECT_NE(e.reason().find("must be in"), std::string::npos) << e.what();
+  // A long bad value is quoted, not echoed whole.
+  e = file_error(R"({"pipeline": {"latch": ")" + std::string(100000, 'x') + "\"}}");
+  EXPECT_LT(e.reason().size(), 200u);
+  const InputError dev = error_of([] { config::load_file("/dev/zero"); });
+  EXPECT_NE(dev.reason().find("regular file"), std::string::npos);
 }
 
 TEST(ConfigFile, PartialFilesOverrideOnlyTheirKeys) {
@@ -94,6 +149,7 @@ TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
   EXPECT_EQ(e.place(), "memory.face_size");
   e = error_of([] { parse(R"({"pipeline": {"texel_frac": 0}})"); });
   EXPECT_EQ(e.place(), "pipeline.texel_frac");
+  EXPECT_EQ(e.reason(), "unknown key");
   e = error_of([] { parse(R"({"datapath": {"texel_frac": 0}})"); });
   EXPECT_NE(e.reason().find("bilinear"), std::string::npos);
   e = error_of([] { parse(R"([1, 2])"); });
@@ -116,4 +172,10 @@ TEST(ConfigFile, OverridesSetOneKeyEach) {
   EXPECT_EQ(c.memory.count, 2);
   EXPECT_THROW(config::apply_overrides(dp::ArpConfig{}, {"vec_frac=3"}), InputError);
   EXPECT_THROW(config::apply_overrides(dp::ArpConfig{}, {"datapath.vec_frac=99"}), InputError);
+  EXPECT_EQ(config::apply_overrides(dp::ArpConfig{}, {"pipeline.latch=\"pixel\""}).pipeline.latch, dp::LatchPolicy::PerPixel);
+  const InputError e = error_of([] { config::apply_overrides(dp::ArpConfig{}, {"datapath.vec_fra=3"}); });
+  EXPECT_EQ(e.source(), "--set");
+  EXPECT_EQ(e.place(), "datapath.vec_fra");
+  EXPECT_NE(error_of([] { config::apply_overrides(dp::ArpConfig{}, {"lens.fov_deg=9e9999"}); }).reason().find("too large"),
+            std::string::npos);
 }

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "apps/config/ConfigFile.hpp"
+#include "sim/ConfigFile.hpp"
 #include "common/AtomicFile.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/CubeMapLoader.hpp"

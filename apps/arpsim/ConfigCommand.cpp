@@ -1,19 +1,37 @@
 // arpsim config: prints the effective configuration (the embedded defaults
-// with any file and overrides applied) as JSON, a starting point for a file.
+// with any file and overrides applied) as JSON, a starting point for a file;
+// --list prints every key with its range, unit and doc; --update-doc rewrites
+// the generated tables of docs/configuration.md from the parameter table.
 #include <cstdio>
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
-#include "apps/config/ConfigFile.hpp"
+#include "common/StrictJson.hpp"
+#include "sim/ConfigFile.hpp"
 
 namespace arp::app {
 
 Runner add_config_command(CLI::App& app) {
-  auto args = std::make_shared<ConfigOptions>();
+  struct Args {
+    ConfigOptions cfg;
+    bool list = false;
+    std::string doc;
+  };
+  auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("config", "Print the effective configuration as JSON (defaults embedded)");
-  args->add_to(*cmd);
-  return [args] {
-    std::printf("%s\n", config::to_json(args->resolve()).dump(2).c_str());
+  a->cfg.add_to(*cmd);
+  cmd->add_flag("--list", a->list, "Print every key with its value, range, unit and meaning instead");
+  cmd->add_option("--update-doc", a->doc, "Rewrite the generated key tables of this markdown file (docs/configuration.md)");
+  return [a] {
+    const dp::ArpConfig c = a->cfg.resolve();
+    if (!a->doc.empty()) {
+      const std::string text = read_input_file(a->doc, 1 << 22, "markdown file");
+      const std::string updated = config::update_reference_doc(text);
+      if (updated != text) write_text_atomic(a->doc, updated);
+      std::printf("arpsim config: %s %s\n", a->doc.c_str(), updated == text ? "is current" : "updated");
+      return 0;
+    }
+    std::printf("%s", a->list ? config::listing(c).c_str() : (config::to_json(c).dump(2) + "\n").c_str());
     return 0;
   };
 }

@@ -9,7 +9,7 @@
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "FrameImage.hpp"
-#include "apps/config/ConfigFile.hpp"
+#include "sim/ConfigFile.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "common/InputError.hpp"

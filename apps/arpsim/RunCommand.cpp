@@ -20,7 +20,7 @@
 #include "MotionOptions.hpp"
 #include "PoseConversion.hpp"
 #include "TruthProbe.hpp"
-#include "apps/config/ConfigFile.hpp"
+#include "sim/ConfigFile.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"

@@ -7,73 +7,169 @@
 
 namespace arp::dp {
 
-std::string to_string(EyeScan v) { return v == EyeScan::Lockstep ? "lockstep" : "side_by_side"; }
-std::string to_string(LatchPolicy v) {
-  switch (v) {
-    case LatchPolicy::PerFrame: return "frame";
-    case LatchPolicy::PerField: return "field";
-    case LatchPolicy::PerScanline: return "scanline";
-    case LatchPolicy::PerPixel: return "pixel";
-  }
-  return "?";
+const EnumNames<EyeScan>& eye_scan_names() {
+  static const EnumNames<EyeScan> n{{EyeScan::Lockstep, "lockstep"}, {EyeScan::SideBySide, "side_by_side"}};
+  return n;
 }
-std::string to_string(DividerKind v) { return v == DividerKind::Exact ? "exact" : "lut"; }
+const EnumNames<LatchPolicy>& latch_policy_names() {
+  static const EnumNames<LatchPolicy> n{{LatchPolicy::PerFrame, "frame"},
+                                        {LatchPolicy::PerField, "field"},
+                                        {LatchPolicy::PerScanline, "scanline"},
+                                        {LatchPolicy::PerPixel, "pixel"}};
+  return n;
+}
+const EnumNames<DividerKind>& divider_names() {
+  static const EnumNames<DividerKind> n{{DividerKind::ReciprocalLut, "lut"}, {DividerKind::Exact, "exact"}};
+  return n;
+}
+const EnumNames<AaMode>& aa_names() {
+  static const EnumNames<AaMode> n{{AaMode::Off, "off"}, {AaMode::Bilinear, "bilinear"}};
+  return n;
+}
 const char* stage_key(Stage s) {
   static const char* const keys[kStageCount] = {"lens", "rotate", "address", "fetch", "compose", "filter", "scanout"};
   return keys[static_cast<size_t>(s)];
 }
-std::string to_string(AaMode v) { return v == AaMode::Off ? "off" : "bilinear"; }
 
-bool parse(const std::string& s, EyeScan& out) {
-  if (s == "lockstep") { out = EyeScan::Lockstep; return true; }
-  if (s == "side_by_side") { out = EyeScan::SideBySide; return true; }
-  return false;
+namespace {
+
+// The timed keys of one stage, from the stage list (two per stage).
+void add_stage_timing(ParameterTable<ArpConfig>& t, Stage s, const char* what) {
+  const size_t i = static_cast<size_t>(s);
+  const std::string k = std::string("timed.") + stage_key(s);
+  t.integer(k + "_latency", [i](auto& c) -> auto& { return c.timed.stage[i].latency_cycles; }, 1, 64, "clocks",
+            std::string(what) + ": pixel clocks from taking a pixel to the next stage seeing it (its register stages, "
+                                "including the output FIFO's register)");
+  t.integer(k + "_logic_ps", [i](auto& c) -> auto& { return c.timed.stage[i].logic_delay_ps; }, 0, 1'000'000'000, "ps",
+            std::string(what) + ": combinational delay of its arithmetic; divided over its register stages it must fit "
+                                "one pixel clock period");
 }
-bool parse(const std::string& s, LatchPolicy& out) {
-  if (s == "frame") { out = LatchPolicy::PerFrame; return true; }
-  if (s == "field") { out = LatchPolicy::PerField; return true; }
-  if (s == "scanline") { out = LatchPolicy::PerScanline; return true; }
-  if (s == "pixel") { out = LatchPolicy::PerPixel; return true; }
-  return false;
+
+ParameterTable<ArpConfig> make_parameters() {
+  ParameterTable<ArpConfig> t;
+  // display: video timing (VideoTiming)
+  t.integer("display.eyes", [](auto& c) -> auto& { return c.timing.eyes; }, 1, 2, "",
+            "2 = stereo (one lens table and one set of display memories per eye), 1 = mono");
+  t.choice("display.eye_scan", [](auto& c) -> auto& { return c.timing.eye_scan; }, eye_scan_names(),
+           "lockstep: both eyes' panels scanned simultaneously (same cycle for the same pixel); side_by_side: one "
+           "panel, each line scans the left eye's pixels then the right eye's");
+  t.integer("display.h_active", [](auto& c) -> auto& { return c.timing.h_active; }, 1, 8192, "px",
+            "active pixels per line, per eye");
+  t.integer("display.h_front_porch", [](auto& c) -> auto& { return c.timing.h_front_porch; }, 0, 8192, "clocks",
+            "horizontal blanking after the active pixels");
+  t.integer("display.h_sync", [](auto& c) -> auto& { return c.timing.h_sync; }, 0, 8192, "clocks", "horizontal sync");
+  t.integer("display.h_back_porch", [](auto& c) -> auto& { return c.timing.h_back_porch; }, 0, 8192, "clocks",
+            "horizontal back porch; total line = active + porches + sync (800 by default)");
+  t.integer("display.v_active", [](auto& c) -> auto& { return c.timing.v_active; }, 1, 8192, "lines", "active lines per eye");
+  t.integer("display.v_front_porch", [](auto& c) -> auto& { return c.timing.v_front_porch; }, 0, 8192, "lines",
+            "vertical blanking after the active lines");
+  t.integer("display.v_sync", [](auto& c) -> auto& { return c.timing.v_sync; }, 0, 8192, "lines", "vertical sync");
+  t.integer("display.v_back_porch", [](auto& c) -> auto& { return c.timing.v_back_porch; }, 0, 8192, "lines",
+            "vertical back porch; total frame = active + porches + sync (525 lines by default)");
+  t.integer("display.pixel_clock_hz", [](auto& c) -> auto& { return c.timing.pixel_clock_hz; }, 1000, 100'000'000'000,
+            "Hz", "pixel clock; 25.175 MHz / (800 x 525) = 59.94 Hz");
+  t.integer("display.fields_per_frame", [](auto& c) -> auto& { return c.timing.fields_per_frame; }, 1, 2, "",
+            "1 progressive; 2 interlaced: even lines in field 0, odd lines in field 1, each field half a frame (the "
+            "frame's clock count must be even)");
+  // lens: lens vector table (LensVectorTable)
+  t.real("lens.fov_deg", [](auto& c) -> auto& { return c.lens.fov_deg; }, 0.001, 179.999, "deg",
+         "horizontal field of view of one eye's undistorted mapping");
+  t.real_array("lens.k", [](auto& c) -> auto& { return c.lens.k; }, -100, 100, "",
+               "radial distortion polynomial scale(r) = k0 + k1 r^2 + k2 r^4 + k3 r^6, r in half-widths from the lens "
+               "centre; the scale must stay positive over the panel ([1, 0.22, 0.24, 0] is DK1-like)");
+  t.real("lens.center_offset_px", [](auto& c) -> auto& { return c.lens.center_offset_px; }, -4096, 4096, "px",
+         "lens centre moved toward the nose (left eye right, right eye left); less than half of display.h_active in "
+         "magnitude");
+  // datapath: widths, rounding and division
+  t.integer("datapath.vec_frac", [](auto& c) -> auto& { return c.widths.vec_frac; }, 1, 28, "bits",
+            "lens vectors: signed Q1.vec_frac (vec_frac + 2 bits)");
+  t.integer("datapath.mat_frac", [](auto& c) -> auto& { return c.widths.mat_frac; }, 1, 28, "bits",
+            "orientation matrix entries: signed Q1.mat_frac, saturating");
+  t.integer("datapath.rot_frac", [](auto& c) -> auto& { return c.widths.rot_frac; }, 1, 28, "bits",
+            "rotated vector: signed Q1.rot_frac, saturating");
+  t.choice("datapath.rot_rounding", [](auto& c) -> auto& { return c.widths.rot_rounding; }, rounding_names(),
+           "rounding of the matrix x vector products to rot_frac");
+  t.choice("datapath.divider", [](auto& c) -> auto& { return c.widths.divider; }, divider_names(),
+           "division by the major component: reciprocal unit (leading-one normaliser, table, Newton-Raphson, one "
+           "multiply per quotient) or an exact divider");
+  t.integer("datapath.recip_index_bits", [](auto& c) -> auto& { return c.widths.recip_index_bits; }, 1, 16, "bits",
+            "the reciprocal table has 2^bits entries, indexed by the mantissa bits below the leading one");
+  t.integer("datapath.recip_frac_bits", [](auto& c) -> auto& { return c.widths.recip_frac_bits; }, 4, 30, "bits",
+            "reciprocal table entries and refined reciprocal: unsigned Q1.recip_frac");
+  t.integer("datapath.newton_steps", [](auto& c) -> auto& { return c.widths.newton_steps; }, 0, 4, "",
+            "Newton-Raphson refinements y <- y(2 - m y) after the table");
+  t.integer("datapath.quot_frac", [](auto& c) -> auto& { return c.widths.quot_frac; }, 2, 30, "bits",
+            "face coordinate sc/|ma|: signed Q1.quot_frac, clamped to +-1");
+  t.choice("datapath.div_rounding", [](auto& c) -> auto& { return c.widths.div_rounding; }, rounding_names(),
+           "rounding in the reciprocal unit and of the quotients");
+  t.integer("datapath.texel_frac", [](auto& c) -> auto& { return c.widths.texel_frac; }, 0, 16, "bits",
+            "sub-texel bits of the texel-space position: the bilinear weights (at least 1 with bilinear)");
+  t.choice("datapath.texel_rounding", [](auto& c) -> auto& { return c.widths.texel_rounding; }, rounding_names(),
+           "rounding of (q + 1)/2 x S to texel_frac bits");
+  // memory: display memories (DisplayMemoryBank)
+  t.integer("memory.count", [](auto& c) -> auto& { return c.memory.count; }, 1, 16, "",
+            "display memories per eye (memory 0 is the most often updated and wins depth ties)");
+  t.integer("memory.face_size", [](auto& c) -> auto& { return c.memory.face_size; }, 1, 16384, "texels",
+            "S: each cube face is S x S texels");
+  t.integer("memory.red_bits", [](auto& c) -> auto& { return c.memory.red_bits; }, 1, 16, "bits",
+            "red channel width (red + green + blue at most 32)");
+  t.integer("memory.green_bits", [](auto& c) -> auto& { return c.memory.green_bits; }, 1, 16, "bits", "green channel width");
+  t.integer("memory.blue_bits", [](auto& c) -> auto& { return c.memory.blue_bits; }, 1, 16, "bits", "blue channel width");
+  t.integer("memory.depth_bits", [](auto& c) -> auto& { return c.memory.depth_bits; }, 2, 32, "bits",
+            "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
+  t.integer_array("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
+                  "colour shown where every memory is empty");
+  // pipeline: latch, filtering and scan-out
+  t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
+           "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "
+           "for every pixel");
+  t.integer("pipeline.latch_lead_cycles", [](auto& c) -> auto& { return c.pipeline.latch_lead_cycles; }, 0,
+            1'000'000'000, "clocks",
+            "extra lead: the register is sampled this many pixel clocks before the latch-point pixel enters the "
+            "orientation matrix unit (the total lead adds the unit's distance to scan-out, 14 clocks by default)");
+  t.choice("pipeline.aa", [](auto& c) -> auto& { return c.pipeline.aa; }, aa_names(),
+           "anti-aliasing: nearest texel, or bilinear over four taps each composited first");
+  t.integer("pipeline.display_bits", [](auto& c) -> auto& { return c.pipeline.display_bits; }, 1, 10, "bits",
+            "bits per channel at the HMD; memory colour is rescaled with rounding");
+  t.integer("pipeline.photon_delay_ps", [](auto& c) -> auto& { return c.pipeline.photon_delay_ps; }, 0,
+            1'000'000'000'000, "ps", "panel response: photon time = scan-out time + this");
+  // timed: hardware timing of the cycle models, two keys per stage in data-flow order
+  static const char* const what[kStageCount] = {
+      "lens vector table",         "orientation matrix unit", "cube-face address generator", "display memory read",
+      "composition unit",          "anti-aliasing filter",    "HMD scan-out (the pixel is taken this many clocks before its slot)"};
+  for (int s = 0; s < kStageCount; ++s) add_stage_timing(t, static_cast<Stage>(s), what[s]);
+  t.integer("timed.fifo_depth", [](auto& c) -> auto& { return c.timed.fifo_depth; }, 1, 4096, "tokens",
+            "tokens each inter-stage FIFO holds; at least issue_slack_cycles + 2 (the scan-out FIFO holds slack + 1 "
+            "and has no bypass)");
+  t.integer("timed.issue_slack_cycles", [](auto& c) -> auto& { return c.timed.issue_slack_cycles; }, 0, 4096, "clocks",
+            "the timing generator issues each pixel this much earlier than the latencies need; the slack waits in the "
+            "scan-out FIFO and absorbs stalls");
+  t.integer("timed.host_clock_hz", [](auto& c) -> auto& { return c.timed.host_clock_hz; }, 1000, 100'000'000'000, "Hz",
+            "clock of the host's write port into display memory");
+  t.integer("timed.host_texels_per_cycle", [](auto& c) -> auto& { return c.timed.host_texels_per_cycle; }, 1, 1 << 20,
+            "texels", "texels the write port stores per host clock (its bandwidth)");
+  return t;
 }
-bool parse(const std::string& s, DividerKind& out) {
-  if (s == "lut") { out = DividerKind::ReciprocalLut; return true; }
-  if (s == "exact") { out = DividerKind::Exact; return true; }
-  return false;
-}
-bool parse(const std::string& s, AaMode& out) {
-  if (s == "off") { out = AaMode::Off; return true; }
-  if (s == "bilinear") { out = AaMode::Bilinear; return true; }
-  return false;
+
+}  // namespace
+
+const ParameterTable<ArpConfig>& arp_parameters() {
+  static const ParameterTable<ArpConfig> t = make_parameters();
+  return t;
 }
 
 namespace {
 struct Checker {
   std::vector<ConfigIssue>& out;
-  void range(const std::string& key, int64_t v, int64_t lo, int64_t hi) {
-    if (v < lo || v > hi)
-      out.push_back({key, "is " + std::to_string(v) + ", must be in [" + std::to_string(lo) + ", " +
-                              std::to_string(hi) + "]"});
-  }
   void fail(const std::string& key, std::string reason) { out.push_back({key, std::move(reason)}); }
 };
 }  // namespace
 
 std::vector<ConfigIssue> validate(const ArpConfig& c) {
-  std::vector<ConfigIssue> issues;
+  // Every declared range first, then what ties keys together.
+  std::vector<ConfigIssue> issues = arp_parameters().check_ranges(c);
   Checker ck{issues};
   const auto& t = c.timing;
-  ck.range("display.eyes", t.eyes, 1, 2);
-  ck.range("display.h_active", t.h_active, 1, 8192);
-  ck.range("display.v_active", t.v_active, 1, 8192);
-  ck.range("display.h_front_porch", t.h_front_porch, 0, 8192);
-  ck.range("display.h_sync", t.h_sync, 0, 8192);
-  ck.range("display.h_back_porch", t.h_back_porch, 0, 8192);
-  ck.range("display.v_front_porch", t.v_front_porch, 0, 8192);
-  ck.range("display.v_sync", t.v_sync, 0, 8192);
-  ck.range("display.v_back_porch", t.v_back_porch, 0, 8192);
-  ck.range("display.pixel_clock_hz", t.pixel_clock_hz, 1000, 100'000'000'000);
-  ck.range("display.fields_per_frame", t.fields_per_frame, 1, 2);
   if (t.fields_per_frame == 2 && issues.empty()) {
     const int64_t frame = int64_t{t.h_total()} * t.v_total();
     const int64_t lines = (t.v_active + 1) / 2;
@@ -84,12 +180,8 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
   }
 
   const auto& l = c.lens;
-  if (!std::isfinite(l.fov_deg) || l.fov_deg <= 0.0 || l.fov_deg >= 180.0)
-    ck.fail("lens.fov_deg", "is " + std::to_string(l.fov_deg) + ", must be > 0 and < 180 degrees");
-  for (int i = 0; i < 4; ++i)
-    if (!std::isfinite(l.k[i])) ck.fail("lens.k", "coefficient k" + std::to_string(i) + " is not finite");
-  if (!std::isfinite(l.center_offset_px) || std::abs(l.center_offset_px) >= t.h_active / 2.0)
-    ck.fail("lens.center_offset_px", "must be finite and less than half of display.h_active in magnitude");
+  if (std::abs(l.center_offset_px) >= t.h_active / 2.0)
+    ck.fail("lens.center_offset_px", "must be less than half of display.h_active in magnitude");
   if (issues.empty()) {
     // The distortion scale must stay positive over the whole panel, or the
     // table would fold the image over itself.
@@ -105,43 +197,9 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
     }
   }
 
-  const auto& w = c.widths;
-  ck.range("datapath.vec_frac", w.vec_frac, 1, 28);
-  ck.range("datapath.mat_frac", w.mat_frac, 1, 28);
-  ck.range("datapath.rot_frac", w.rot_frac, 1, 28);
-  ck.range("datapath.recip_index_bits", w.recip_index_bits, 1, 16);
-  ck.range("datapath.recip_frac_bits", w.recip_frac_bits, 4, 30);
-  ck.range("datapath.newton_steps", w.newton_steps, 0, 4);
-  ck.range("datapath.quot_frac", w.quot_frac, 2, 30);
-  ck.range("datapath.texel_frac", w.texel_frac, 0, 16);
-
-  const auto& m = c.memory;
-  ck.range("memory.count", m.count, 1, 16);
-  ck.range("memory.face_size", m.face_size, 1, 16384);
-  ck.range("memory.red_bits", m.red_bits, 1, 16);
-  ck.range("memory.green_bits", m.green_bits, 1, 16);
-  ck.range("memory.blue_bits", m.blue_bits, 1, 16);
-  if (m.color_bits() > 32) ck.fail("memory.red_bits", "red+green+blue bits must not exceed 32");
-  ck.range("memory.depth_bits", m.depth_bits, 2, 32);
-  for (int i = 0; i < 3; ++i) ck.range("memory.background", m.background[i], 0, 255);
-
-  const auto& p = c.pipeline;
-  ck.range("pipeline.display_bits", p.display_bits, 1, 10);
-  if (p.aa == AaMode::Bilinear && w.texel_frac < 1)
+  if (c.memory.color_bits() > 32) ck.fail("memory.red_bits", "red+green+blue bits must not exceed 32");
+  if (c.pipeline.aa == AaMode::Bilinear && c.widths.texel_frac < 1)
     ck.fail("datapath.texel_frac", "bilinear anti-aliasing needs at least 1 sub-texel bit");
-  ck.range("pipeline.latch_lead_cycles", p.latch_lead_cycles, 0, 1'000'000'000);
-  ck.range("pipeline.photon_delay_ps", p.photon_delay_ps, 0, 1'000'000'000'000);
-
-  const auto& tm = c.timed;
-  for (int s = 0; s < kStageCount; ++s) {
-    const std::string k = std::string("timed.") + stage_key(static_cast<Stage>(s));
-    ck.range(k + "_latency", tm.stage[static_cast<size_t>(s)].latency_cycles, 1, 64);
-    ck.range(k + "_logic_ps", tm.stage[static_cast<size_t>(s)].logic_delay_ps, 0, 1'000'000'000);
-  }
-  ck.range("timed.fifo_depth", tm.fifo_depth, 1, 4096);
-  ck.range("timed.issue_slack_cycles", tm.issue_slack_cycles, 0, 4096);
-  ck.range("timed.host_clock_hz", tm.host_clock_hz, 1000, 100'000'000'000);
-  ck.range("timed.host_texels_per_cycle", tm.host_texels_per_cycle, 1, 1 << 20);
   return issues;
 }
 

@@ -1,5 +1,7 @@
-// Every parameter of the pixel path, with the defaults of brief §3. Plain data:
-// the JSON layer (apps/config) reads and writes it, validate() checks ranges.
+// Every parameter of the pixel path, with the defaults of brief §3. Plain data
+// structs (hot paths read plain fields); each field is declared once more, as a
+// row of arp_parameters() with its key, range, unit and doc, from which JSON
+// read and write, --set, range checks and docs/configuration.md are produced.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "FixedPoint.hpp"
+#include "common/Parameter.hpp"
 
 namespace arp::dp {
 
@@ -15,14 +18,19 @@ enum class LatchPolicy : uint8_t { PerFrame, PerField, PerScanline, PerPixel };
 enum class DividerKind : uint8_t { ReciprocalLut, Exact };
 enum class AaMode : uint8_t { Off, Bilinear };
 
-std::string to_string(EyeScan v);
-std::string to_string(LatchPolicy v);
-std::string to_string(DividerKind v);
-std::string to_string(AaMode v);
-bool parse(const std::string& s, EyeScan& out);
-bool parse(const std::string& s, LatchPolicy& out);
-bool parse(const std::string& s, DividerKind& out);
-bool parse(const std::string& s, AaMode& out);
+// The words each enum's values are written as (configuration, reports, options).
+const EnumNames<EyeScan>& eye_scan_names();          // lockstep, side_by_side
+const EnumNames<LatchPolicy>& latch_policy_names();  // frame, field, scanline, pixel
+const EnumNames<DividerKind>& divider_names();       // lut, exact
+const EnumNames<AaMode>& aa_names();                 // off, bilinear
+inline std::string to_string(EyeScan v) { return enum_name(eye_scan_names(), v); }
+inline std::string to_string(LatchPolicy v) { return enum_name(latch_policy_names(), v); }
+inline std::string to_string(DividerKind v) { return enum_name(divider_names(), v); }
+inline std::string to_string(AaMode v) { return enum_name(aa_names(), v); }
+inline bool parse(const std::string& s, EyeScan& out) { return enum_parse(eye_scan_names(), s, out); }
+inline bool parse(const std::string& s, LatchPolicy& out) { return enum_parse(latch_policy_names(), s, out); }
+inline bool parse(const std::string& s, DividerKind& out) { return enum_parse(divider_names(), s, out); }
+inline bool parse(const std::string& s, AaMode& out) { return enum_parse(aa_names(), s, out); }
 
 struct VideoTimingConfig {
   int eyes = 2;                   // 2 = stereo, 1 = mono
@@ -113,11 +121,11 @@ struct ArpConfig {
   TimedConfig timed;
 };
 
-// One violated constraint: the dotted key path and the reason.
-struct ConfigIssue {
-  std::string key;
-  std::string reason;
-};
+using arp::ConfigIssue;
+
+// Every parameter of ArpConfig, in sections display, lens, datapath, memory,
+// pipeline, timed: the one declaration of each key's range, unit and doc.
+const ParameterTable<ArpConfig>& arp_parameters();
 
 // Every constraint a configuration must meet so no stage can overflow its
 // 64-bit arithmetic; an empty result means valid.

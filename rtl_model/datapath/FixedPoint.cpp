@@ -4,20 +4,9 @@
 
 namespace arp::dp {
 
-std::string to_string(Rounding r) {
-  switch (r) {
-    case Rounding::Floor: return "floor";
-    case Rounding::HalfUp: return "half_up";
-    case Rounding::HalfEven: return "half_even";
-  }
-  return "?";
-}
-
-bool parse_rounding(const std::string& s, Rounding& out) {
-  if (s == "floor") { out = Rounding::Floor; return true; }
-  if (s == "half_up") { out = Rounding::HalfUp; return true; }
-  if (s == "half_even") { out = Rounding::HalfEven; return true; }
-  return false;
+const EnumNames<Rounding>& rounding_names() {
+  static const EnumNames<Rounding> n{{Rounding::Floor, "floor"}, {Rounding::HalfUp, "half_up"}, {Rounding::HalfEven, "half_even"}};
+  return n;
 }
 
 int64_t quantise_real(double v, int frac, int bits) {

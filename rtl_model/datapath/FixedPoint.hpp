@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "common/Parameter.hpp"
+
 namespace arp::dp {
 
 // How a right shift (dropping fraction bits) rounds.
@@ -14,8 +16,9 @@ enum class Rounding : uint8_t {
   HalfEven,  // round to nearest, ties to even: unbiased
 };
 
-std::string to_string(Rounding r);
-bool parse_rounding(const std::string& s, Rounding& out);
+const EnumNames<Rounding>& rounding_names();  // floor, half_up, half_even
+inline std::string to_string(Rounding r) { return enum_name(rounding_names(), r); }
+inline bool parse_rounding(const std::string& s, Rounding& out) { return enum_parse(rounding_names(), s, out); }
 
 // Precomputed constants of a rounding shift so the per-pixel cost is a few
 // branch-free operations: r = ((v << left) + bias + (((v << left) >> right) & even)) >> right.

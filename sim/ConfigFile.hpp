@@ -1,6 +1,7 @@
-// The configuration file (JSON): every key of dp::ArpConfig, defaults
-// embedded (the struct's own), documented in docs/configuration.md. Reading
-// is strict: unknown keys, wrong types and out-of-range values are an
+// The configuration file (JSON) of the pixel path: every key of
+// dp::ArpConfig as declared in dp::arp_parameters(), defaults embedded (the
+// struct's own). Reading is strict (common/ParameterJson, common/StrictJson):
+// unknown keys, repeated keys, wrong types and out-of-range values are an
 // InputError naming the file, the key path and the reason.
 #pragma once
 #include <nlohmann/json.hpp>
@@ -24,5 +25,12 @@ dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::
 
 // Throws InputError(source, key, reason) on the first constraint violated.
 void check(const dp::ArpConfig& c, const std::string& source);
+
+// docs/configuration.md with its generated tables (one per section) made from
+// the parameter table; the prose around them is kept.
+std::string update_reference_doc(const std::string& doc);
+
+// Every key with its value, range, unit and doc (`arpsim config --list`).
+std::string listing(const dp::ArpConfig& c);
 
 }  // namespace arp::config

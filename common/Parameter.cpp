@@ -1,0 +1,131 @@
+#include "Parameter.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "InputError.hpp"
+
+namespace arp::param_detail {
+
+namespace {
+
+// 1000000000 -> "1e9", 1048576 -> "2^20": how the docs write round bounds.
+std::string compact(int64_t v) {
+  if (v == std::numeric_limits<int64_t>::max()) return "2^63-1";
+  if (v >= 10000) {
+    int64_t p = v;
+    int e = 0;
+    while (p % 10 == 0) {
+      p /= 10;
+      ++e;
+    }
+    if (p == 1) return "1e" + std::to_string(e);
+    if ((v & (v - 1)) == 0) {
+      int b = 0;
+      while ((int64_t{1} << b) != v) ++b;
+      return "2^" + std::to_string(b);
+    }
+  }
+  return std::to_string(v);
+}
+
+std::string real_text(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char b[64];
+  if (v == std::floor(v) && std::abs(v) < 1e15) {
+    std::snprintf(b, sizeof b, "%.0f", v);
+    return b;
+  }
+  // The shortest form that reads back the same.
+  for (int prec = 1; prec <= 17; ++prec) {
+    std::snprintf(b, sizeof b, "%.*g", prec, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
+  return b;
+}
+
+std::string interval(int64_t lo, int64_t hi) { return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; }
+
+std::string real_bounds(double lo, double hi) { return "[" + real_text(lo) + ", " + real_text(hi) + "]"; }
+
+}  // namespace
+
+std::string format(const ParamValue& v) {
+  struct {
+    std::string operator()(int64_t x) const { return std::to_string(x); }
+    std::string operator()(double x) const { return real_text(x); }
+    std::string operator()(const std::string& s) const { return "\"" + s + "\""; }
+    std::string operator()(const std::vector<int64_t>& a) const {
+      std::string s = "[";
+      for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + std::to_string(a[i]);
+      return s + "]";
+    }
+    std::string operator()(const std::vector<double>& a) const {
+      std::string s = "[";
+      for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + real_text(a[i]);
+      return s + "]";
+    }
+  } f;
+  return std::visit(f, v);
+}
+
+std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
+                       const std::vector<std::string>& choices) {
+  switch (t) {
+    case ParamType::Integer:
+    case ParamType::IntegerArray: return compact(imin) + " .. " + compact(imax);
+    case ParamType::Real:
+    case ParamType::RealArray: return real_text(rmin) + " .. " + real_text(rmax);
+    case ParamType::Choice: {
+      std::string s;
+      for (const auto& c : choices) s += (s.empty() ? "" : ", ") + c;
+      return s;
+    }
+  }
+  return "";
+}
+
+std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
+                        const std::vector<std::string>& choices, size_t array_size, const ParamValue& v) {
+  switch (t) {
+    case ParamType::Integer: {
+      const int64_t x = std::get<int64_t>(v);
+      if (x < imin || x > imax) return "is " + std::to_string(x) + ", must be in " + interval(imin, imax);
+      return "";
+    }
+    case ParamType::Real: {
+      const double x = std::get<double>(v);
+      if (!std::isfinite(x)) return "is " + real_text(x) + ", must be a finite number";
+      if (x < rmin || x > rmax) return "is " + real_text(x) + ", must be in " + real_bounds(rmin, rmax);
+      return "";
+    }
+    case ParamType::Choice: {
+      const std::string& s = std::get<std::string>(v);
+      for (const auto& c : choices)
+        if (c == s) return "";
+      return "is \"" + quoted(s) + "\", must be one of " + range_text(t, 0, 0, 0, 0, choices);
+    }
+    case ParamType::IntegerArray: {
+      const auto& a = std::get<std::vector<int64_t>>(v);
+      if (a.size() != array_size) return "must have " + std::to_string(array_size) + " elements";
+      for (size_t i = 0; i < a.size(); ++i)
+        if (a[i] < imin || a[i] > imax)
+          return "element " + std::to_string(i) + " is " + std::to_string(a[i]) + ", must be in " + interval(imin, imax);
+      return "";
+    }
+    case ParamType::RealArray: {
+      const auto& a = std::get<std::vector<double>>(v);
+      if (a.size() != array_size) return "must have " + std::to_string(array_size) + " elements";
+      for (size_t i = 0; i < a.size(); ++i) {
+        if (!std::isfinite(a[i])) return "element " + std::to_string(i) + " is " + real_text(a[i]) + ", must be a finite number";
+        if (a[i] < rmin || a[i] > rmax)
+          return "element " + std::to_string(i) + " is " + real_text(a[i]) + ", must be in " + real_bounds(rmin, rmax);
+      }
+      return "";
+    }
+  }
+  return "";
+}
+
+}  // namespace arp::param_detail

@@ -1,0 +1,117 @@
+#include "StrictJson.hpp"
+
+#include <sys/stat.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "InputError.hpp"
+
+namespace arp {
+
+using nlohmann::json;
+
+namespace {
+
+// line:column of a byte offset (1-based), for syntax errors.
+std::string position(const std::string& text, size_t byte) {
+  size_t line = 1, col = 1;
+  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+}  // namespace
+
+std::string brief(const json& v) {
+  if (v.is_object()) return "an object of " + std::to_string(v.size()) + " keys";
+  if (v.is_array()) return "an array of " + std::to_string(v.size()) + " elements";
+  return quoted(v.dump());
+}
+
+json parse_strict_json(const std::string& text, const std::string& source) {
+  // The parser's callback sees every key as it is read: a stack of the keys
+  // of the objects open around it finds repeats; depth is checked on the way in.
+  std::vector<std::set<std::string>> keys;
+  std::vector<std::string> path;
+  std::string problem_place, problem;
+  auto where = [&] {
+    std::string p;
+    for (const auto& k : path) p += (p.empty() ? "" : ".") + k;
+    return p;
+  };
+  json::parser_callback_t cb = [&](int depth, json::parse_event_t ev, json& parsed) {
+    if (!problem.empty()) return false;
+    if (depth > kMaxJsonDepth) {
+      problem_place = where();
+      problem = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+      throw std::out_of_range(problem);
+    }
+    switch (ev) {
+      case json::parse_event_t::object_start: keys.emplace_back(); break;
+      case json::parse_event_t::object_end:
+        if (!keys.empty()) keys.pop_back();
+        path.resize(keys.size());
+        break;
+      case json::parse_event_t::key: {
+        const std::string k = parsed.get<std::string>();
+        path.resize(keys.size());
+        path.back() = k;
+        if (!keys.back().insert(k).second) {
+          problem_place = where();
+          problem = "key given twice in the same object";
+          throw std::out_of_range(problem);
+        }
+        break;
+      }
+      default: break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, cb);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    const auto pos = what.find("parse error");
+    if (what.find("number overflow") != std::string::npos)
+      throw InputError(source, position(text, e.byte), "a number too large for a double (beyond 1.8e308)");
+    throw InputError(source, position(text, e.byte), "JSON syntax error: " + quoted(pos == std::string::npos ? what : what.substr(pos)));
+  } catch (const json::out_of_range& e) {
+    // nlohmann reports a number too large for a double this way: find the literal for its place.
+    if (problem.empty()) {
+      const std::string what = e.what();
+      const auto q0 = what.find('\''), q1 = what.rfind('\'');
+      const std::string literal = q0 != std::string::npos && q1 > q0 ? what.substr(q0 + 1, q1 - q0 - 1) : "";
+      const size_t at = literal.empty() ? std::string::npos : text.find(literal);
+      throw InputError(source, at == std::string::npos ? "" : position(text, at + 1),
+                       "the number " + quoted(literal) + " is too large for a double (beyond 1.8e308)");
+    }
+    throw InputError(source, problem_place, problem);
+  } catch (const std::out_of_range&) {
+    throw InputError(source, problem_place, problem);
+  }
+}
+
+std::string read_input_file(const std::string& path, size_t max_bytes, const char* what) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(path, "", std::string("cannot open the ") + what);
+  if (!S_ISREG(st.st_mode)) throw InputError(path, "", std::string("the ") + what + " must be a regular file");
+  if (static_cast<size_t>(st.st_size) > max_bytes)
+    throw InputError(path, "", std::string("the ") + what + " is " + std::to_string(st.st_size) + " bytes, more than the " +
+                                   std::to_string(max_bytes) + " allowed");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", std::string("cannot open the ") + what);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace arp

@@ -1,0 +1,24 @@
+// Reading JSON that users write (configurations, scenes, walks) strictly:
+// a syntax error names line and column; a key given twice in one object, a
+// number too large for a double and nesting deeper than kMaxDepth are errors
+// too (never "last one wins", never a crash). Messages quote at most
+// kQuoteChars of a value (common/InputError.hpp, brief()).
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace arp {
+
+constexpr int kMaxJsonDepth = 64;
+
+// Parses `text` read from `source`; InputError(source, "line L, column C" or the key path, reason).
+nlohmann::json parse_strict_json(const std::string& text, const std::string& source);
+
+// Reads a whole regular file (InputError: missing, not a regular file, larger than max_bytes).
+std::string read_input_file(const std::string& path, size_t max_bytes, const char* what);
+
+// A value as an error message quotes it: at most kQuoteChars characters.
+std::string brief(const nlohmann::json& v);
+
+}  // namespace arp

@@ -1,0 +1,48 @@
+#include "ConfigFile.hpp"
+
+#include "common/InputError.hpp"
+#include "common/ParameterJson.hpp"
+#include "common/StrictJson.hpp"
+
+namespace arp::config {
+
+using nlohmann::json;
+
+namespace {
+constexpr size_t kMaxConfigBytes = 1 << 20;  // a configuration is a few kB
+}
+
+json to_json(const dp::ArpConfig& c) { return parameters_to_json(dp::arp_parameters(), c); }
+
+void check(const dp::ArpConfig& c, const std::string& source) {
+  const auto issues = dp::validate(c);
+  if (!issues.empty()) throw InputError(source, issues.front().key, issues.front().reason);
+}
+
+dp::ArpConfig from_json(const json& j, const std::string& source, dp::ArpConfig c) {
+  apply_parameters_json(dp::arp_parameters(), j, source, c);
+  check(c, source);
+  return c;
+}
+
+dp::ArpConfig load_file(const std::string& path, dp::ArpConfig base) {
+  return from_json(parse_strict_json(read_input_file(path, kMaxConfigBytes, "configuration file"), path), path, base);
+}
+
+dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::string>& sets) {
+  dp::ArpConfig c = base;
+  apply_parameter_overrides(dp::arp_parameters(), sets, c);
+  check(c, "--set");
+  return c;
+}
+
+std::string update_reference_doc(const std::string& doc) {
+  const dp::ArpConfig defaults;
+  return replace_generated_blocks(doc, [&](const std::string& section) {
+    return parameters_markdown(dp::arp_parameters(), section, defaults);
+  });
+}
+
+std::string listing(const dp::ArpConfig& c) { return parameters_listing(dp::arp_parameters(), c); }
+
+}  // namespace arp::config
