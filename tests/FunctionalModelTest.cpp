@@ -48,11 +48,11 @@ HmdFrame scalar_reference(const ArpConfig& c, const DisplayMemorySet& mem, const
   f.resize(lens.width(), lens.height(), lens.eyes(), false);
   f.display_bits = c.pipeline.display_bits;
   std::vector<uint64_t> w(static_cast<size_t>(mem.count()));
-  const int lead = static_cast<int>(PipelineSchedule(c).orientation_lead());
+  const LatchRule rule(t, c.pipeline.latch, PipelineSchedule(c).orientation_lead());
   for (int e = 0; e < lens.eyes(); ++e)
     for (int y = 0; y < lens.height(); ++y)
       for (int x = 0; x < lens.width(); ++x) {
-        const int64_t lc = latch_cycle(t, c.pipeline.latch, lead, frame, e, x, y);
+        const int64_t lc = rule.read_cycle(frame, e, x, y);
         const Mat3q M = quantise_rotation(o[o.index_at(t.cycles_to_ps(lc))].q, c.widths.mat_frac);
         const CubeAddress a = generate_address(rotate(M, lens.at(e, x, y), rp), ap);
         auto at = [&](int tx, int ty) {

@@ -104,14 +104,48 @@ TEST(OrientationStream, SampleAndHoldWithValidation) {
 
 TEST(LatchPolicy, EachPolicySamplesAtItsBoundary) {
   const VideoTiming t{VideoTimingConfig{}};
-  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerFrame, 0, 2, 0, 100, 300), 840000);
-  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerField, 0, 2, 0, 100, 300), 840000);
-  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerScanline, 0, 2, 0, 100, 300), 840000 + 300 * 800);
-  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerPixel, 0, 2, 0, 100, 300), 840000 + 300 * 800 + 100);
-  EXPECT_EQ(latch_cycle(t, LatchPolicy::PerPixel, 25, 2, 0, 100, 300), 840000 + 300 * 800 + 75);  // pipeline lead
+  auto read = [](const VideoTiming& tt, LatchPolicy p, int64_t lead, int64_t f, int e, int x, int y) {
+    return LatchRule(tt, p, lead).read_cycle(f, e, x, y);
+  };
+  EXPECT_EQ(read(t, LatchPolicy::PerFrame, 0, 2, 0, 100, 300), 840000);
+  EXPECT_EQ(read(t, LatchPolicy::PerField, 0, 2, 0, 100, 300), 840000);
+  EXPECT_EQ(read(t, LatchPolicy::PerScanline, 0, 2, 0, 100, 300), 840000 + 300 * 800);
+  EXPECT_EQ(read(t, LatchPolicy::PerPixel, 0, 2, 0, 100, 300), 840000 + 300 * 800 + 100);
+  EXPECT_EQ(read(t, LatchPolicy::PerPixel, 25, 2, 0, 100, 300), 840000 + 300 * 800 + 75);  // pipeline lead
   VideoTimingConfig ic;
   ic.fields_per_frame = 2;
   const VideoTiming ti{ic};
-  EXPECT_EQ(latch_cycle(ti, LatchPolicy::PerField, 0, 0, 0, 5, 7), 210000);
-  EXPECT_EQ(latch_cycle(ti, LatchPolicy::PerFrame, 0, 0, 0, 5, 7), 0);
+  EXPECT_EQ(read(ti, LatchPolicy::PerField, 0, 0, 0, 5, 7), 210000);
+  EXPECT_EQ(read(ti, LatchPolicy::PerFrame, 0, 0, 0, 5, 7), 0);
+}
+
+// A latch point is a pixel whose own scan-out slot is the one its group reads
+// the register for (lead apart): the closed form the scan logic uses
+// (is_latch_point) against that definition, on every pixel of progressive,
+// interlaced and side-by-side timings.
+TEST(LatchPolicy, LatchPointsAreThePixelsThatStartTheirGroup) {
+  VideoTimingConfig prog, inter, sbs;
+  for (auto* c : {&prog, &inter, &sbs}) {
+    c->h_active = 24;
+    c->v_active = 9;
+  }
+  inter.fields_per_frame = 2;
+  inter.v_front_porch = 11;  // an even frame
+  sbs.eye_scan = EyeScan::SideBySide;
+  int points = 0;
+  for (const auto* c : {&prog, &inter, &sbs})
+    for (LatchPolicy p : {LatchPolicy::PerFrame, LatchPolicy::PerField, LatchPolicy::PerScanline, LatchPolicy::PerPixel}) {
+      const VideoTiming t{*c};
+      const LatchRule rule(t, p, 7);
+      const int eyes = c->eye_scan == EyeScan::SideBySide ? 2 : 1;  // lock-step eyes share eye 0's slot
+      for (int e = 0; e < eyes; ++e)
+        for (int y = 0; y < c->v_active; ++y)
+          for (int x = 0; x < c->h_active; ++x) {
+            const bool starts = rule.read_cycle(3, e, x, y) + 7 == t.pixel_cycle(3, e, x, y);
+            EXPECT_EQ(rule.is_latch_point(e, x, y), starts) << to_string(p) << " eye " << e << " (" << x << ", " << y << ")";
+            points += starts;
+          }
+    }
+  // frame: 1+1+1, field: 1+2+1, scanline: 9 each, pixel: every pixel (216, 216, 432)
+  EXPECT_EQ(points, 3 + 4 + 27 + 864);
 }

@@ -1,12 +1,13 @@
 #include "DriftScenario.hpp"
 
 #include <cmath>
+#include "common/Units.hpp"
 
 namespace arp::tracker {
 
 std::vector<PoseSample> drift_truth(double duration_s, double rate_hz) {
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, 1.0, 0.2));
-  const double omega = 2.0 * M_PI * 1.0, amp = glm::radians(150.0) / omega;  // 1 Hz, 150 deg/s peak
+  const double omega = 2.0 * kPi * 1.0, amp = glm::radians(150.0) / omega;  // 1 Hz, 150 deg/s peak
   std::vector<PoseSample> out;
   const auto n = static_cast<int64_t>(duration_s * rate_hz) + 1;
   for (int64_t i = 0; i < n; ++i) {

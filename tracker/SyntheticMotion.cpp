@@ -4,6 +4,7 @@
 #include <functional>
 #include <random>
 #include <stdexcept>
+#include "common/Units.hpp"
 
 namespace arp::tracker {
 
@@ -51,7 +52,7 @@ std::vector<PoseSample> constant_rotation(const glm::dvec3& axis, double deg_per
 std::vector<PoseSample> head_shake(const glm::dvec3& axis, double peak_deg_per_s, double frequency_hz,
                                    const SamplingSpec& s) {
   if (!(frequency_hz > 0.0)) throw std::invalid_argument("head shake frequency must be positive");
-  const double omega = 2.0 * M_PI * frequency_hz;
+  const double omega = 2.0 * kPi * frequency_hz;
   const double amp = glm::radians(peak_deg_per_s) / omega;
   return generate(axis, [amp, omega](double t, double& a, double& r) {
     a = amp * std::sin(omega * t);
@@ -61,7 +62,7 @@ std::vector<PoseSample> head_shake(const glm::dvec3& axis, double peak_deg_per_s
 
 std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, double period_s, const SamplingSpec& s) {
   if (!(period_s > 0.0)) throw std::invalid_argument("pendulum period must be positive");
-  const double omega = 2.0 * M_PI / period_s, amp = glm::radians(amplitude_deg);
+  const double omega = 2.0 * kPi / period_s, amp = glm::radians(amplitude_deg);
   return generate(axis, [amp, omega](double t, double& a, double& r) {
     a = amp * std::cos(omega * t);
     r = -amp * omega * std::sin(omega * t);

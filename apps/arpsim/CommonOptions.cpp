@@ -12,6 +12,7 @@
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
+#include "host/motion/WalkPath.hpp"
 #include <glm/gtc/quaternion.hpp>
 #include <cmath>
 #include <cstdio>
@@ -65,12 +66,10 @@ void CubeMapOptions::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
       throw InputError("--position", position, "expected three finite numbers x,y,z");
   }
   const glm::dquat q(head.w, head.x, head.y, head.z);
-  const glm::dvec3 right = q * glm::dvec3(1, 0, 0);
   const host::CubeFaceRenderer renderer;
   for (int e = 0; e < mem.eyes(); ++e) {
-    const double side = mem.eyes() == 1 ? 0.0 : (e == 0 ? -0.5 : 0.5);
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
-    renderer.render(sc, {}, time_s, p + right * (side * ipd_m), bank);
+    renderer.render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank);
     bank.vblank();
   }
   source = "scene " + sc.name + " (" + std::to_string(sc.objects.size()) + " objects, " +
@@ -83,21 +82,6 @@ host::CubeMapImages CubeMapOptions::load(int S, std::string& source) const {
   if (!equirect.empty()) { source = equirect; return host::load_equirect(equirect, S); }
   source = "calibration pattern";
   return host::make_calibration_pattern(S);
-}
-
-ProgressLine::ProgressLine(std::string prefix, bool enabled)
-    : prefix_(std::move(prefix)), enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
-
-void ProgressLine::update(double fraction, const std::string& detail) {
-  if (!enabled_) return;
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const bool done = fraction >= 1.0;
-  if (!done && s - last_ < 0.25) return;  // a readable rate
-  last_ = s;
-  const double eta = fraction > 0 ? s * (1.0 - fraction) / fraction : 0.0;
-  std::fprintf(stderr, "\r%s: %-12s %5.1f%%  elapsed %6.1f s  ETA %6.1f s ", prefix_.c_str(), detail.c_str(),
-               100.0 * fraction, s, eta);
-  if (done) std::fprintf(stderr, "\n");
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

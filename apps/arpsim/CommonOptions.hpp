@@ -1,10 +1,10 @@
 // Options every arpsim command shares: the configuration file and overrides.
 #pragma once
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <string>
 #include <vector>
 
+#include "common/ProgressLine.hpp"
 #include "host/cubemap/CubeMapImages.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
@@ -30,20 +30,6 @@ struct CubeMapOptions {
   // Fills memory 0 of every eye and swaps it in: the cube map, or the scene
   // rendered from each eye's position (head at `head`, eyes IPD apart along its x axis).
   void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const;
-};
-
-// A progress line with elapsed time and ETA on stderr, redrawn at most every
-// 0.25 s and always at completion (then ended with a newline).
-class ProgressLine {
- public:
-  explicit ProgressLine(std::string prefix, bool enabled = true);
-  void update(double fraction, const std::string& detail);
-
- private:
-  std::string prefix_;
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_;
-  double last_ = -1.0;
 };
 
 // Writes text to path through a temporary file and a rename.

@@ -30,6 +30,7 @@
 #include "testbench/apparatus/Oscilloscope.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"
+#include "common/Units.hpp"
 
 namespace arp::app {
 
@@ -52,25 +53,6 @@ struct LatencyArgs {
   bool no_field_sync = false;
 };
 
-// A progress line with ETA on stderr (the sweeps take a while).
-class Progress {
- public:
-  Progress(bool quiet, int64_t total) : quiet_(quiet), total_(total), t0_(std::chrono::steady_clock::now()) {}
-  void step(const std::string& what) {
-    ++done_;
-    if (quiet_) return;
-    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    const double eta = done_ > 0 ? el * static_cast<double>(total_ - done_) / static_cast<double>(done_) : 0.0;
-    std::fprintf(stderr, "\r  [%3" PRId64 "/%3" PRId64 "] %-44s  %5.1f s, ETA %5.1f s", done_, total_, what.c_str(), el, eta);
-    if (done_ == total_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  bool quiet_;
-  int64_t total_, done_ = 0;
-  std::chrono::steady_clock::time_point t0_;
-};
-
 std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
@@ -91,7 +73,7 @@ LabConfig lab_config(const LatencyArgs& a) {
   lab.jit_triangles_per_s = a.jit_rate;
   lab.horizon_s = a.horizon_ms * 1e-3;
   lab.triangles = a.triangles;
-  lab.arp_threshold_rad = a.theta_deg * 3.14159265358979323846 / 180.0;
+  lab.arp_threshold_rad = deg_to_rad(a.theta_deg);
   lab.point_distance_m = a.point_distance;
   return lab;
 }
@@ -267,7 +249,7 @@ int run_latency(const LatencyArgs& a) {
   fs::create_directories(out);  // only once every setting has been checked
 
   const int64_t sweep_steps = a.no_sweeps ? 0 : 8 + 21 + 7;
-  Progress progress(a.quiet, static_cast<int64_t>(archs.size()) + sweep_steps + (a.no_apparatus ? 0 : 1) + 1);
+  ProgressLine progress("latency", !a.quiet, static_cast<int64_t>(archs.size()) + sweep_steps + (a.no_apparatus ? 0 : 1) + 1);
   LabSettings ls;
   ls.first_frame = first_frame;
   ls.frames = a.frames;

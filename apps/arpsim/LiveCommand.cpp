@@ -145,7 +145,6 @@ int run_live(const LiveArgs& a) {
   RenderOptions ro;
   ro.threads = a.threads;
   ro.photon_times = true;
-  const int lead = static_cast<int>(dp::PipelineSchedule(c).orientation_lead());
   HmdFrame f;
   host::RgbImage shown;
   const auto wall0 = std::chrono::steady_clock::now();
@@ -177,7 +176,7 @@ int run_live(const LiveArgs& a) {
     std::vector<int64_t> lat;
     for (int y = 0; y < f.height; y += 8)
       for (int x = 0; x < f.width; x += 8) {
-        const size_t s = stream.index_at(t.cycles_to_ps(dp::latch_cycle(t, c.pipeline.latch, lead, k, 0, x, y)));
+        const size_t s = model.latch_rule().sample(stream, k, 0, x, y);
         lat.push_back(f.photon_ps[f.index(0, x, y)] - stream[s].time_ps);
       }
     std::sort(lat.begin(), lat.end());

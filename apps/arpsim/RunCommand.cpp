@@ -34,6 +34,7 @@
 #include "rtl_model/systemc/TimedRun.hpp"
 #include "tracker/PoseSource.hpp"
 #include "tracker/TraceFile.hpp"
+#include "common/Units.hpp"
 
 namespace arp::app {
 
@@ -193,7 +194,7 @@ int run(const RunArgs& a) {
     pc.display_hz = t.refresh_hz();
     pc.baseline = a.baseline;
     if (!(a.threshold_deg >= 0) || a.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
-    pc.threshold_rad = a.threshold_deg * 3.14159265358979323846 / 180.0;
+    pc.threshold_rad = deg_to_rad(a.threshold_deg);
     for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", a.engine.triangles_per_s},
                            {"--engine-fill", a.engine.pixels_per_s}})
       if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");
@@ -354,8 +355,8 @@ int run(const RunArgs& a) {
     ps.tear_at = a.tear_at;
     probe = std::make_unique<TruthProbe>(ps);
   }
-  const int latch_lead = static_cast<int>(dp::PipelineSchedule(c).orientation_lead());
-  const double px_rad = c.lens.fov_deg * 3.14159265358979323846 / 180.0 / c.timing.h_active;
+  const dp::LatchRule latch_rule(c);
+  const double px_rad = deg_to_rad(c.lens.fov_deg) / c.timing.h_active;
   in.sink = [&](const HmdFrame& f, const cycle::FrameReport& r) {
     uint64_t ph = 0xcbf29ce484222325ull, th = ph;
     for (uint32_t p : f.pixels) ph = fnv(ph, p);
@@ -381,9 +382,7 @@ int run(const RunArgs& a) {
     std::snprintf(hex[0], sizeof hex[0], "%016" PRIx64, ph);
     std::snprintf(hex[1], sizeof hex[1], "%016" PRIx64, th);
     // The samples the frame's latches can take: from its first latch to the next frame's.
-    const int64_t lead = latch_lead;  // the schedule computed once above
-    const size_t lo = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame) - lead));
-    const size_t hi = stream.index_at(t.cycles_to_ps(t.frame_start_cycle(r.frame + 1) - lead));
+    const auto [lo, hi] = latch_rule.frame_samples(stream, r.frame);
     nlohmann::json err;
     if (probe && (r.frame - a.first) % a.error_every == 0) probe->measure(f, r.frame, err);
     frames.push_back({{"frame", r.frame},
@@ -527,7 +526,7 @@ int run(const RunArgs& a) {
                         {"texels_per_s", static_cast<double>(L.texels) / secs},
                         {"engine_busy_s", L.busy_s}});
       }
-      r["host"] = {{"threshold_deg", hostsim->scheduler().threshold_rad() * 180.0 / 3.14159265358979323846},
+      r["host"] = {{"threshold_deg", rad_to_deg(hostsim->scheduler().threshold_rad())},
                    {"mode", regions ? "regions" : (a.baseline ? "baseline" : "objects")},
                    {"baseline", a.baseline},
                    {"engine", {{"triangles_per_s", a.engine.triangles_per_s}, {"pixels_per_s", a.engine.pixels_per_s},

@@ -12,12 +12,12 @@
 #include "host/error/FrameError.hpp"
 #include "host/error/SeamMetrics.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
+#include "common/Units.hpp"
 
 namespace arp::app {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr uint8_t kTearMarks = host::kCrackMark;  // the seam's own discontinuity picks the place
 
 double mean_of(const std::vector<int64_t>& v) {
@@ -37,7 +37,7 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       lens_(s.config->lens, s.config->timing, s.config->widths.vec_frac),
       rot_(s.config->widths),
       addr_(s.config->widths, s.config->memory.face_size),
-      latch_lead_(static_cast<int>(dp::PipelineSchedule(*s.config).orientation_lead())),
+      latch_(*s.config),
       px_rad_(s.config->lens.fov_deg * kPi / 180.0 / s.config->timing.h_active),
       truth_ids_(static_cast<size_t>(s.config->timing.eyes)) {
   const dp::ArpConfig& c = *s.config;
@@ -109,7 +109,7 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
       size_t held = SIZE_MAX;
       dp::Mat3q M{};
       for (int x = 0; x < W; ++x) {
-        const size_t sidx = stream.index_at(t.cycles_to_ps(dp::latch_cycle(t, c.pipeline.latch, latch_lead_, frame, e, x, y)));
+        const size_t sidx = latch_.sample(stream, frame, e, x, y);
         if (sidx != held) {
           M = dp::quantise_rotation(stream[sidx].q, c.widths.mat_frac);
           held = sidx;

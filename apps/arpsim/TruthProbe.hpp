@@ -68,7 +68,7 @@ class TruthProbe {
   dp::LensVectorTable lens_;
   dp::RotateParams rot_;
   dp::AddressGeneratorParams addr_;
-  int latch_lead_;
+  dp::LatchRule latch_;
   double px_rad_;
   std::vector<std::vector<host::FaceImage>> truth_ids_;
   std::vector<double> psnrs_;

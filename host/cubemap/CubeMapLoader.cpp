@@ -7,6 +7,7 @@
 #include "CubeFaceBasis.hpp"
 #include "ImageFiles.hpp"
 #include "common/InputError.hpp"
+#include "common/Units.hpp"
 
 namespace arp::host {
 
@@ -107,7 +108,7 @@ CubeMapImages load_equirect(const std::string& path, int S) {
                        b.forward.z + a * b.right.z + c * b.up.z};
         const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         const double lon = std::atan2(d[0], -d[2]), lat = std::asin(std::clamp(d[1] / n, -1.0, 1.0));
-        const double u = (0.5 + lon / (2 * M_PI)) * img.width - 0.5, v = (0.5 - lat / M_PI) * img.height - 0.5;
+        const double u = (0.5 + lon / (2 * kPi)) * img.width - 0.5, v = (0.5 - lat / kPi) * img.height - 0.5;
         const int u0 = static_cast<int>(std::floor(u)), v0 = static_cast<int>(std::floor(v));
         const double fu = u - u0, fv = v - v0;
         auto at = [&](int uu, int vv, int ch) {

@@ -1,17 +1,18 @@
 #include "PriorityScheduler.hpp"
 
 #include <cmath>
+#include "common/Units.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
 namespace arp::host {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size)
     : scene_(scene),
       cfg_(cfg),
-      threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : (kPi / 2) / face_size),
+      threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : dp::texel_angle_rad(face_size)),
       memory_(scene.objects.size(), 0),
       desired_(scene.objects.size(), 0) {}
 

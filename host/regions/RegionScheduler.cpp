@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "common/InputError.hpp"
+#include "common/Units.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
 namespace arp::host {
 
@@ -11,7 +13,7 @@ RegionScheduler::RegionScheduler(const RegionGrid& grid, const RegionConfig& cfg
                                  const std::string& source)
     : grid_(grid),
       cfg_(cfg),
-      threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : (3.14159265358979323846 / 2) / face_size),
+      threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : dp::texel_angle_rad(face_size)),
       center_(grid.region_of(start)),
       memory_(static_cast<size_t>(grid.count()), 0),
       last_(static_cast<size_t>(cfg.memories), start) {

@@ -1,11 +1,11 @@
 #include "Primitives.hpp"
 
 #include <cmath>
+#include "common/Units.hpp"
 
 namespace arp::host {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 void add_quad(Mesh& m, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
   const auto base = static_cast<uint32_t>(m.positions.size());
   m.positions.insert(m.positions.end(), {a, b, c, d});

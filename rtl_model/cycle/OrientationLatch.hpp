@@ -20,7 +20,7 @@ class OrientationLatch {
       : arith_(a), stream_(s), timing_(a.config().timing), extra_(a.config().pipeline.latch_lead_cycles) {}
 
   // The register's sample at pixel clock `cycle`.
-  size_t register_sample(int64_t cycle) const { return stream_.index_at(timing_.cycles_to_ps(cycle)); }
+  size_t register_sample(int64_t cycle) const { return dp::register_sample(stream_, timing_, cycle); }
 
   // A pixel entering the unit at `cycle`: loads the matrix if it is a latch point.
   void on_pixel(const PixelSlot& s, int64_t cycle) {

@@ -12,7 +12,7 @@ ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t fram
     : timing_(c.timing),
       sched_(c),
       tc_(c.timing),
-      latch_(c.pipeline.latch),
+      latch_(c),
       first_(first_frame),
       end_(first_frame + frames),
       field_cycles_(timing_.field_cycles()),
@@ -72,13 +72,7 @@ bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
     out.eye_count = static_cast<uint8_t>(tc_.eyes);
     out.x = p.hpos;
   }
-  const bool line_start = out.x == 0 && out.eye_first == 0;
-  switch (latch_) {
-    case dp::LatchPolicy::PerFrame: out.latch = line_start && out.y == 0; break;
-    case dp::LatchPolicy::PerField: out.latch = line_start && p.line == 0; break;
-    case dp::LatchPolicy::PerScanline: out.latch = line_start; break;
-    case dp::LatchPolicy::PerPixel: out.latch = true; break;
-  }
+  out.latch = latch_.is_latch_point(out.eye_first, out.x, out.y);
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "PixelTokens.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
 
@@ -98,7 +99,7 @@ class ScanTiming {
   dp::VideoTiming timing_;
   dp::PipelineSchedule sched_;
   dp::VideoTimingConfig tc_;
-  dp::LatchPolicy latch_;
+  dp::LatchRule latch_;
   int64_t first_, end_;
   int64_t field_cycles_;
   int row_pixels_;      // active pixel clocks per line

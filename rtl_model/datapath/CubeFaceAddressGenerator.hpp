@@ -19,6 +19,7 @@
 #include "ArpConfig.hpp"
 #include "LensVectorTable.hpp"
 #include "ReciprocalUnit.hpp"
+#include "common/Units.hpp"
 
 namespace arp::dp {
 
@@ -62,6 +63,10 @@ struct FaceSelect {
 };
 
 // Branch-free (selects only) so a line of pixels vectorises.
+// A face's 90 degrees over its S texels: the angle of one texel, priority
+// rendering's default threshold angle (theta_t 0 means "one texel").
+inline double texel_angle_rad(int face_size) { return (kPi / 2) / face_size; }
+
 inline FaceSelect select_face(const Vec3q& r) {
   const int64_t x = r.x, y = r.y, z = r.z;
   const int64_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;

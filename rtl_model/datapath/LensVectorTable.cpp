@@ -1,6 +1,7 @@
 #include "LensVectorTable.hpp"
 
 #include <cmath>
+#include "common/Units.hpp"
 
 namespace arp::dp {
 
@@ -17,7 +18,7 @@ LensVectorTable::LensVectorTable(const LensConfig& lens, const VideoTimingConfig
   y_.resize(n);
   z_.resize(n);
   const double half_w = w_ / 2.0;
-  const double tan_half = std::tan(lens.fov_deg * M_PI / 360.0);
+  const double tan_half = std::tan(lens.fov_deg * kPi / 360.0);
   const int bits = vec_frac + 2;
   for (int e = 0; e < eyes_; ++e) {
     const double cx = lens_center_x(lens, timing, e);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "PipelineSchedule.hpp"
+#include "common/Units.hpp"
 #include "common/InputError.hpp"
 
 namespace arp::dp {
@@ -23,7 +25,7 @@ static Quat mul(const Quat& a, const Quat& b) {
 }
 
 Quat from_yaw_pitch_roll_deg(double yaw, double pitch, double roll) {
-  const double k = M_PI / 360.0;  // half angle in radians per degree
+  const double k = kPi / 360.0;  // half angle in radians per degree
   const Quat qy{std::cos(yaw * k), 0, std::sin(yaw * k), 0};
   const Quat qp{std::cos(pitch * k), std::sin(pitch * k), 0, 0};
   const Quat qr{std::cos(roll * k), 0, 0, std::sin(roll * k)};
@@ -81,16 +83,24 @@ size_t OrientationStream::index_at(int64_t t_ps) const {
   return it == samples_.begin() ? 0 : static_cast<size_t>(it - samples_.begin()) - 1;
 }
 
-int64_t latch_cycle(const VideoTiming& t, LatchPolicy policy, int lead_cycles, int64_t frame, int eye, int x,
-                    int y) {
+size_t register_sample(const OrientationStream& s, const VideoTiming& t, int64_t cycle) {
+  return s.index_at(t.cycles_to_ps(cycle));
+}
+
+LatchRule::LatchRule(const VideoTiming& t, LatchPolicy policy, int64_t lead_cycles)
+    : timing_(t), policy_(policy), lead_(lead_cycles), fields_(t.config().fields_per_frame) {}
+
+LatchRule::LatchRule(const ArpConfig& c) : LatchRule(VideoTiming(c.timing), c.pipeline.latch, PipelineSchedule(c).orientation_lead()) {}
+
+int64_t LatchRule::read_cycle(int64_t frame, int eye, int x, int y) const {
   int64_t c = 0;
-  switch (policy) {
-    case LatchPolicy::PerFrame: c = t.frame_start_cycle(frame); break;
-    case LatchPolicy::PerField: c = t.field_start_cycle(frame, t.field_of_line(y)); break;
-    case LatchPolicy::PerScanline: c = t.line_start_cycle(frame, y); break;
-    case LatchPolicy::PerPixel: c = t.pixel_cycle(frame, eye, x, y); break;
+  switch (policy_) {
+    case LatchPolicy::PerFrame: c = timing_.frame_start_cycle(frame); break;
+    case LatchPolicy::PerField: c = timing_.field_start_cycle(frame, timing_.field_of_line(y)); break;
+    case LatchPolicy::PerScanline: c = timing_.line_start_cycle(frame, y); break;
+    case LatchPolicy::PerPixel: c = timing_.pixel_cycle(frame, eye, x, y); break;
   }
-  return c - lead_cycles;
+  return c - lead_;
 }
 
 }  // namespace arp::dp

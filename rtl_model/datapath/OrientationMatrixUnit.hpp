@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ArpConfig.hpp"
@@ -78,10 +79,58 @@ class OrientationStream {
   std::vector<OrientationSample> samples_;
 };
 
-// The pixel-clock cycle at which the orientation register is sampled for
-// pixel (x, y) of `eye`: the start of its frame, field or scanline, or the
-// pixel itself, minus the pipeline's lead.
-int64_t latch_cycle(const VideoTiming& t, LatchPolicy policy, int lead_cycles, int64_t frame, int eye, int x,
-                    int y);
+// The orientation register as a reader sees it at pixel clock `cycle`: the
+// sample-and-hold of the tracker stream (the last sample at or before the clock).
+size_t register_sample(const OrientationStream& s, const VideoTiming& t, int64_t cycle);
+
+// The latch rule: the one place that says which tracker sample a pixel sees.
+// The orientation matrix unit reloads its matrix at latch points -- the first
+// pixel of each frame, field or scanline, or every pixel -- reading the
+// register `lead` pixel clocks before the latch point's scan-out slot; every
+// pixel up to the next latch point uses that matrix. The lead is the
+// pipeline's (PipelineSchedule::orientation_lead) for every fidelity level, so
+// all of them latch the same sample; the timed levels, whose latch point may
+// be late after a stall, read the register at the cycle it really enters the
+// unit (minus pipeline.latch_lead_cycles) through register_sample.
+class LatchRule {
+ public:
+  LatchRule(const VideoTiming& t, LatchPolicy policy, int64_t lead_cycles);
+  // The configuration's policy and pipeline lead.
+  explicit LatchRule(const ArpConfig& c);
+
+  LatchPolicy policy() const { return policy_; }
+  int64_t lead_cycles() const { return lead_; }
+
+  // Whether pixel (eye, x, y) is a latch point. (In a lock-step stereo slot
+  // both eyes share eye 0's answer; a side-by-side line starts at eye 0.)
+  bool is_latch_point(int eye, int x, int y) const {
+    const bool line_start = x == 0 && eye == 0;
+    switch (policy_) {
+      case LatchPolicy::PerFrame: return line_start && y == 0;
+      case LatchPolicy::PerField: return line_start && y < fields_;
+      case LatchPolicy::PerScanline: return line_start;
+      case LatchPolicy::PerPixel: return true;
+    }
+    return true;
+  }
+  // The pixel clock at which the register is read for pixel (frame, eye, x, y).
+  int64_t read_cycle(int64_t frame, int eye, int x, int y) const;
+  // The sample pixel (frame, eye, x, y) sees.
+  size_t sample(const OrientationStream& s, int64_t frame, int eye, int x, int y) const {
+    return register_sample(s, timing_, read_cycle(frame, eye, x, y));
+  }
+  // The first and last sample frame `frame`'s pixels can see (its first latch
+  // to the next frame's first latch).
+  std::pair<size_t, size_t> frame_samples(const OrientationStream& s, int64_t frame) const {
+    return {register_sample(s, timing_, timing_.frame_start_cycle(frame) - lead_),
+            register_sample(s, timing_, timing_.frame_start_cycle(frame + 1) - lead_)};
+  }
+
+ private:
+  VideoTiming timing_;
+  LatchPolicy policy_;
+  int64_t lead_;
+  int fields_;
+};
 
 }  // namespace arp::dp

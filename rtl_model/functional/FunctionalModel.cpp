@@ -28,12 +28,10 @@ struct Segment {
 
 // Splits one scanline into runs that see the same orientation sample. Only
 // the per-pixel latch can produce more than one run.
-void line_segments(const VideoTiming& t, const PipelineConfig& p, int64_t lead, const OrientationStream& o,
-                   int64_t frame, int eye, int y, int width, std::vector<Segment>& out) {
+void line_segments(const LatchRule& rule, const OrientationStream& o, int64_t frame, int eye, int y, int width,
+                   std::vector<Segment>& out) {
   out.clear();
-  auto sample_at = [&](int x) {
-    return o.index_at(t.cycles_to_ps(latch_cycle(t, p.latch, static_cast<int>(lead), frame, eye, x, y)));
-  };
+  auto sample_at = [&](int x) { return rule.sample(o, frame, eye, x, y); };
   const size_t first = sample_at(0), last = sample_at(width - 1);
   if (first == last) {
     out.push_back({0, width, first});
@@ -66,7 +64,7 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
       comp_(fmt_, cfg.memory.background),
       layout_(fmt_),
       scan_(fmt_, cfg.pipeline),
-      orientation_lead_(dp::PipelineSchedule(cfg).orientation_lead()) {
+      latch_(cfg) {
   // Tabulate the reciprocal unit when its domain is small and its output fits 32 bits.
   memo_ = tabulate_aligned_reciprocal(addr_, cfg_.widths);
   if (!memo_.empty()) memo_view_.aligned = memo_.data();
@@ -101,9 +99,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
   // The orientation register can only hold samples between the frame's first
   // latch and the start of the next frame; quantise each once.
-  const int64_t lead = orientation_lead_;
-  const size_t s_lo = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame) - lead));
-  const size_t s_hi = orientation.index_at(timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1) - lead));
+  const auto [s_lo, s_hi] = latch_.frame_samples(orientation, frame);
   std::vector<Mat3q> mats;
   for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
 
@@ -159,7 +155,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     for (int line = 0; line < E * H; ++line) {
       const int eye = line / H, y = line % H;
       const passes::EyeSources& src = sources[static_cast<size_t>(eye)];
-      line_segments(timing_, pc, lead, orientation, frame, eye, y, W, segs);
+      line_segments(latch_, orientation, frame, eye, y, W, segs);
       uint32_t* dst_line = &out.pixels[out.index(eye, 0, y)];
       for (int c0 = 0; c0 < W; c0 += C) {
         const int n = std::min(C, W - c0);

@@ -35,9 +35,9 @@ class FunctionalModel {
   const dp::LensVectorTable& lens() const { return lens_; }
   const dp::AddressGeneratorParams& address_params() const { return addr_; }
   const dp::RotateParams& rotate_params() const { return rot_; }
-  // Pixel clocks between sampling the orientation register and the latch
-  // point's photon (dp::PipelineSchedule::orientation_lead).
-  int64_t orientation_lead() const { return orientation_lead_; }
+  // Which tracker sample each pixel sees (its lead: dp::PipelineSchedule::orientation_lead).
+  const dp::LatchRule& latch_rule() const { return latch_; }
+  int64_t orientation_lead() const { return latch_.lead_cycles(); }
 
   // Renders frame `frame` (its timing decides which orientation samples
   // apply). The memory set must have this configuration's eyes, count and format.
@@ -58,7 +58,7 @@ class FunctionalModel {
   dp::CompositionParams comp_;
   dp::ChannelLayout layout_;
   dp::HmdScanOut scan_;
-  int64_t orientation_lead_;
+  dp::LatchRule latch_;
   // dp::reciprocal tabulated over its whole input domain (see LinePasses.hpp).
   std::vector<uint32_t> memo_;  // the aligned reciprocal of every |ma|
   passes::ReciprocalMemo memo_view_;

@@ -5,6 +5,8 @@
 
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
+#include "common/Units.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
 namespace arp::pipelines {
 
@@ -12,10 +14,10 @@ ArpOrientationPath::ArpOrientationPath(const DisplayRaster& d, const dp::ArpConf
                                        const ArpTranslation& translation)
     : d_(d),
       latch_(latch),
-      lead_cycles_(static_cast<int>(dp::PipelineSchedule(c).orientation_lead())),
+      rule_(d.timing(), latch, dp::PipelineSchedule(c).orientation_lead()),
       horizon_ps_(static_cast<int64_t>(std::llround(horizon_s * 1e12))),
       tr_(translation) {
-  if (tr_.threshold_rad <= 0) tr_.threshold_rad = (3.14159265358979323846 / 2) / c.memory.face_size;
+  if (tr_.threshold_rad <= 0) tr_.threshold_rad = dp::texel_angle_rad(c.memory.face_size);
 }
 
 void ArpOrientationPath::schedule(int64_t first_frame, int64_t last_frame) {
@@ -42,11 +44,12 @@ std::string ArpOrientationPath::name() const { return "arp-" + dp::to_string(lat
 std::string ArpOrientationPath::description() const {
   char b[200];
   std::snprintf(b, sizeof b, "orientation latched per %s at scan-out, %d pixel clocks (%.0f ns) before the photon",
-                dp::to_string(latch_).c_str(), lead_cycles_, static_cast<double>(d_.timing().cycles_to_ps(lead_cycles_)) * 1e-3);
+                dp::to_string(latch_).c_str(), static_cast<int>(rule_.lead_cycles()),
+                static_cast<double>(d_.timing().cycles_to_ps(rule_.lead_cycles())) * 1e-3);
   std::string out = b;
   if (tr_.feed && tr_.feed->has_positions()) {
     std::snprintf(b, sizeof b, "; translation by priority rendering (theta_t %.2f deg at %.1f m, %lld re-renders)",
-                  tr_.threshold_rad * 180.0 / 3.14159265358979323846, tr_.point_distance_m, static_cast<long long>(renders_));
+                  rad_to_deg(tr_.threshold_rad), tr_.point_distance_m, static_cast<long long>(renders_));
     out += b;
   }
   return out;
@@ -54,7 +57,7 @@ std::string ArpOrientationPath::description() const {
 
 PoseUse ArpOrientationPath::pose_for(int64_t frame, int x, int y) const {
   PoseUse u;
-  u.compute_ps = d_.timing().cycles_to_ps(dp::latch_cycle(d_.timing(), latch_, lead_cycles_, frame, 0, x, y));
+  u.compute_ps = d_.timing().cycles_to_ps(rule_.read_cycle(frame, 0, x, y));
   u.target_ps = u.compute_ps + horizon_ps_;
   if (!position_ps_.empty() && frame >= first_ && frame - first_ < static_cast<int64_t>(position_ps_.size()))
     u.position_ps = position_ps_[static_cast<size_t>(frame - first_)];

@@ -1,7 +1,7 @@
 // The ARP in the latency laboratory: head rotation applied at scan-out. The
 // orientation register is read for each frame, field, scanline or pixel (the
 // pipeline's latch policy) the pipeline's own lead before the pixel's photon
-// -- the datapath's latch_cycle and PipelineSchedule, the same arithmetic the
+// -- the datapath's LatchRule and PipelineSchedule, the same arithmetic the
 // functional and cycle models use.
 //
 // Translation goes through priority rendering: the display memory holding a
@@ -18,6 +18,7 @@
 #include "DisplayArchitecture.hpp"
 #include "TrackerFeed.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 
 namespace arp::pipelines {
 
@@ -43,7 +44,7 @@ class ArpOrientationPath : public DisplayArchitecture {
  private:
   const DisplayRaster& d_;
   dp::LatchPolicy latch_;
-  int lead_cycles_;
+  dp::LatchRule rule_;  // the datapath's latch rule under this path's policy
   int64_t horizon_ps_;
   ArpTranslation tr_;
   int64_t first_ = 0, renders_ = 0;

@@ -79,7 +79,6 @@ TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& 
   HmdFrame f;
   cycle::LatencyCollector lat;
   const auto& pc = in.config.pipeline;
-  const int lead = static_cast<int>(model.orientation_lead());
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
     if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
@@ -90,7 +89,7 @@ TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& 
     for (int e = 0; e < f.eyes; ++e)
       for (int y = 0; y < f.height; ++y)
         for (int x = 0; x < f.width; ++x) {
-          const size_t s = in.orientation->index_at(t.cycles_to_ps(dp::latch_cycle(t, pc.latch, lead, frame, e, x, y)));
+          const size_t s = model.latch_rule().sample(*in.orientation, frame, e, x, y);
           lat.add(f.photon_ps[f.index(e, x, y)], (*in.orientation)[s].time_ps);
         }
     lat.summarise(fr);

@@ -13,6 +13,7 @@
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "testbench/golden/GoldenReference.hpp"
+#include "common/Units.hpp"
 
 namespace arp::accuracy {
 
@@ -99,8 +100,8 @@ glm::dquat random_quat(std::mt19937_64& rng) {  // uniform over rotations (Shoem
   std::uniform_real_distribution<double> U(0.0, 1.0);
   const double u1 = U(rng), u2 = U(rng), u3 = U(rng);
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-  return glm::dquat(b * std::cos(2 * M_PI * u3), a * std::sin(2 * M_PI * u2), a * std::cos(2 * M_PI * u2),
-                    b * std::sin(2 * M_PI * u3));
+  return glm::dquat(b * std::cos(2 * kPi * u3), a * std::sin(2 * kPi * u2), a * std::cos(2 * kPi * u2),
+                    b * std::sin(2 * kPi * u3));
 }
 
 Vec3q quantise_dir(const glm::dvec3& d, int frac) {

@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "tracker/SyntheticMotion.hpp"
+#include "common/Units.hpp"
 
 namespace arp::apparatus {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 std::vector<tracker::PoseSample> pendulum_motion(const PendulumSpec& p, double seconds, double rate_hz) {

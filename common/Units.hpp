@@ -1,0 +1,11 @@
+// Angles: one constant for pi and the degree conversions every layer uses.
+// (Evaluated as deg * pi / 180, left to right, as the code always did: results stay bit-identical.)
+#pragma once
+
+namespace arp {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double deg_to_rad(double deg) { return deg * kPi / 180.0; }
+constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
+
+}  // namespace arp
