@@ -258,11 +258,11 @@ int run(const RunArgs& a) {
     }
   }
 
-  std::vector<cycle::StallWindow> stalls;
+  std::vector<stage::StallWindow> stalls;
   for (const std::string& spec : a.stalls) {
     // STAGE:CLOCK:CYCLES, CLOCK counted from the first frame's first active pixel.
     const auto c1 = spec.find(':'), c2 = spec.find(':', c1 == std::string::npos ? 0 : c1 + 1);
-    cycle::StallWindow w{dp::Stage::Lens, 0, 0};
+    stage::StallWindow w{dp::Stage::Lens, 0, 0};
     bool ok = c1 != std::string::npos && c2 != std::string::npos;
     if (ok) {
       const std::string stage = spec.substr(0, c1);
@@ -295,7 +295,7 @@ int run(const RunArgs& a) {
   ProgressLine progress("run " + a.fidelity, !a.quiet);
   opt.progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
 
-  cycle::TimedInputs in;
+  stage::TimedInputs in;
   in.config = c;
   in.memories = &mem;
   in.orientation = &stream;
@@ -357,7 +357,7 @@ int run(const RunArgs& a) {
   }
   const dp::LatchRule latch_rule(c);
   const double px_rad = deg_to_rad(c.lens.fov_deg) / c.timing.h_active;
-  in.sink = [&](const HmdFrame& f, const cycle::FrameReport& r) {
+  in.sink = [&](const HmdFrame& f, const stage::FrameReport& r) {
     uint64_t ph = 0xcbf29ce484222325ull, th = ph;
     for (uint32_t p : f.pixels) ph = fnv(ph, p);
     for (int64_t p : f.photon_ps) th = fnv(th, static_cast<uint64_t>(p));

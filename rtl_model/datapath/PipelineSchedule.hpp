@@ -9,15 +9,29 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "ArpConfig.hpp"
 #include "VideoTiming.hpp"
 
 namespace arp::dp {
 
+// A stage as the schedule sees it: its latency, and which of the
+// configuration's stages it is (none: a stage an architect inserted).
+struct ScheduledStage {
+  int latency_cycles = 1;
+  int id = -1;  // static_cast<int>(Stage), or -1
+};
+
 class PipelineSchedule {
  public:
+  // The standard pipeline: the configuration's seven stages and latencies.
   explicit PipelineSchedule(const ArpConfig& c);
+  // Any chain of stages after the video timing generator, in data-flow order,
+  // ending with scan-out (the detailed model's, e.g. with a register inserted).
+  PipelineSchedule(const ArpConfig& c, const std::vector<ScheduledStage>& chain);
+  // The standard chain's stages.
+  static std::vector<ScheduledStage> standard_chain(const ArpConfig& c);
 
   // Cycles between issuing a pixel and scanning it out.
   int64_t issue_lead() const { return issue_lead_; }

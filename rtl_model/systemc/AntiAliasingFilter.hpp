@@ -1,20 +1,19 @@
-// Anti-aliasing filter: blends the composited taps (or passes the nearest).
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Anti-aliasing filter: blends the composited taps, or passes the nearest (stage::FilterStage).
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/FilterStage.hpp"
 
 namespace arp::scm {
 
-class AntiAliasingFilter : public PipelineStageModule<cycle::ComposedToken, cycle::ColorToken> {
+class AntiAliasingFilter : public StageModule<stage::FilterStage> {
  public:
-  sc_core::sc_port<FifoReadIf<cycle::ComposedToken>>& composed_taps_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::ColorToken>>& pixel_colors_out = output_;
+  static constexpr const char* kInput = "composed_taps", *kOutput = "pixel_colors";
+  static constexpr const char* kInstance = "anti_aliasing_filter";
+  sc_core::sc_port<FifoReadIf<stage::ComposedToken>>& composed_taps_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::ColorToken>>& pixel_colors_out = output;
 
-  SC_HAS_PROCESS(AntiAliasingFilter);
-  AntiAliasingFilter(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle);
-
- private:
-  void tick(FifoReadIf<cycle::ComposedToken>& in, FifoWriteIf<cycle::ColorToken>& out) override { k_.tick_filter(cycle_, in, out); }
+  AntiAliasingFilter(sc_core::sc_module_name name, const stage::StageContext& ctx)
+      : StageModule(name, ctx, kInput, kOutput, {"color", "x", "y"}) {}
 };
 
 }  // namespace arp::scm

@@ -6,41 +6,52 @@ namespace arp::scm {
 
 using namespace sc_core;
 
-ClockGenerator::ClockGenerator(sc_module_name name, int64_t hz, int64_t base_ps, int64_t first_cycle,
-                               int64_t end_cycle)
-    : sc_module(name), clk("clk"), hz_(hz), base_ps_(base_ps), end_(end_cycle), cycle_(first_cycle - 1) {
+ClockGenerator::ClockGenerator(sc_module_name name, int64_t hz, int64_t base_ps, int64_t first_cycle, int64_t end_cycle)
+    : sc_module(name), hz_(hz), base_ps_(base_ps), end_(end_cycle), cycle_(first_cycle - 1) {
   SC_METHOD(edge);  // runs once at initialisation to schedule the first edge
 }
 
 int64_t ClockGenerator::edge_ps(int64_t n) const { return dp::clock_cycle_to_ps(n, hz_); }
 
-// The next rising edge: cycle_ + 1, or later if the gate says nothing needs a clock before.
-void ClockGenerator::schedule_rise(const sc_time& now) {
-  if (gate_) {
-    const int64_t n = gate_(cycle_ + 1);
-    if (n >= end_) return;
-    cycle_ = n - 1;
-  }
-  if (cycle_ + 1 < end_) next_trigger(sim_time(edge_ps(cycle_ + 1), base_ps_) - now);
+void ClockGenerator::trace(sc_trace_file* tf, const std::string& name) {
+  traced_ = true;
+  sc_trace(tf, level_, name);
 }
 
+void ClockGenerator::trace_cycle(sc_trace_file* tf, const std::string& name) const { sc_trace(tf, cycle_, name); }
+
+// One activation per edge. A rising edge is decided at its own time: the gate
+// is asked then, after every clocked process of the previous cycle has run.
 void ClockGenerator::edge() {
   const sc_time now = sc_time_stamp();
   if (!started_) {
     started_ = true;
-    schedule_rise(now);
+    next_trigger(sim_time(edge_ps(cycle_ + 1), base_ps_) - now);
     return;
   }
-  if (!high_) {
-    ++cycle_;
-    high_ = true;
-    clk.write(true);
+  if (level_) {  // the falling edge (traced clocks only)
+    level_ = false;
+    next_trigger(sim_time(edge_ps(cycle_ + 1), base_ps_) - now);
+    return;
+  }
+  int64_t n = cycle_ + 1;
+  if (gate_ && !skipped_) n = gate_(n);
+  if (n >= end_) return;
+  if (n != cycle_ + 1) {  // nothing needs the clocks in between
+    cycle_ = n - 1;
+    skipped_ = true;
+    next_trigger(sim_time(edge_ps(n), base_ps_) - now);
+    return;
+  }
+  skipped_ = false;
+  ++cycle_;
+  posedge_.notify(SC_ZERO_TIME);  // the clocked processes run in the next delta, as after a signal's edge
+  if (traced_) {
+    level_ = true;
     const int64_t rise = edge_ps(cycle_), next = edge_ps(cycle_ + 1);
     next_trigger(sim_time(rise + (next - rise) / 2, base_ps_) - now);
-  } else {
-    high_ = false;
-    clk.write(false);
-    schedule_rise(now);
+  } else if (cycle_ + 1 < end_) {
+    next_trigger(sim_time(edge_ps(cycle_ + 1), base_ps_) - now);
   }
 }
 

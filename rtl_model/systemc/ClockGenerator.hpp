@@ -1,12 +1,17 @@
-// A clock with exact edges: cycle n rises at floor(n * 1e12 / hz) ps of
-// absolute time, so a 25.175 MHz pixel clock (39721.9... ps) never drifts
-// from the datapath's VideoTiming; edges jitter by under 1 ps instead.
-// Simulated time 0 is absolute time `base_ps` (a run may start before 0).
+// A clock with exact edges, as a channel: cycle n rises at floor(n * 1e12 /
+// hz) ps of absolute time, so a 25.175 MHz pixel clock (39721.9... ps) never
+// drifts from the datapath's VideoTiming; edges jitter by under 1 ps instead.
+// Modules bind a port to it (sc_port<ClockIf>), are sensitive to its rising
+// edge and read the cycle number from it -- no module shares another's
+// counter. Simulated time 0 is absolute time `base_ps` (a run may start
+// before 0). The falling edge exists only for the waveform: while no trace
+// shows the clock, each cycle costs one activation.
 #pragma once
 #include <systemc>
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 namespace arp::scm {
 
@@ -15,29 +20,39 @@ inline sc_core::sc_time sim_time(int64_t abs_ps, int64_t base_ps) {
   return sc_core::sc_time::from_value(static_cast<sc_core::sc_time::value_type>(abs_ps - base_ps));
 }
 
-class ClockGenerator : public sc_core::sc_module {
+class ClockIf : virtual public sc_core::sc_interface {
  public:
-  sc_core::sc_out<bool> clk;
+  // The current cycle: the one whose rising edge came last.
+  virtual int64_t cycle() const = 0;
+  virtual const sc_core::sc_event& posedge_event() const = 0;
+  const sc_core::sc_event& default_event() const override { return posedge_event(); }
+};
 
+class ClockGenerator : public sc_core::sc_module, public ClockIf {
+ public:
   SC_HAS_PROCESS(ClockGenerator);
-  // Rising edges of cycles [first_cycle, end_cycle); `cycle()` is the current one after each.
+  // Rising edges of cycles [first_cycle, end_cycle).
   ClockGenerator(sc_core::sc_module_name name, int64_t hz, int64_t base_ps, int64_t first_cycle, int64_t end_cycle);
 
   // Clock gating: before each rising edge, the generator asks for the first
   // cycle at or after the next one that needs a clock and skips to it.
   void gate(std::function<int64_t(int64_t)> next_needed) { gate_ = std::move(next_needed); }
 
-  int64_t cycle() const { return cycle_; }
-  const int64_t& cycle_ref() const { return cycle_; }
+  int64_t cycle() const override { return cycle_; }
+  const sc_core::sc_event& posedge_event() const override { return posedge_; }
+  // Waveforms: the clock level (with its falling edge, until stop_trace()), the cycle number.
+  void trace(sc_core::sc_trace_file* tf, const std::string& name);
+  void trace_cycle(sc_core::sc_trace_file* tf, const std::string& name) const;
+  void stop_trace() { traced_ = false; }
 
  private:
   void edge();
-  void schedule_rise(const sc_core::sc_time& now);
   int64_t edge_ps(int64_t n) const;
   std::function<int64_t(int64_t)> gate_;
+  sc_core::sc_event posedge_;
   int64_t hz_, base_ps_, end_;
   int64_t cycle_;
-  bool started_ = false, high_ = false;
+  bool started_ = false, level_ = false, traced_ = false, skipped_ = false;
 };
 
 }  // namespace arp::scm

@@ -1,20 +1,19 @@
-// Composition unit: per tap, the nearest of the memories' texels wins.
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Composition unit: per tap, the nearest of the memories' texels wins (stage::CompositionStage).
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/CompositionStage.hpp"
 
 namespace arp::scm {
 
-class CompositionUnit : public PipelineStageModule<cycle::FetchToken, cycle::ComposedToken> {
+class CompositionUnit : public StageModule<stage::CompositionStage> {
  public:
-  sc_core::sc_port<FifoReadIf<cycle::FetchToken>>& texel_words_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::ComposedToken>>& composed_taps_out = output_;
+  static constexpr const char* kInput = "texel_words", *kOutput = "composed_taps";
+  static constexpr const char* kInstance = "composition_unit";
+  sc_core::sc_port<FifoReadIf<stage::FetchToken>>& texel_words_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::ComposedToken>>& composed_taps_out = output;
 
-  SC_HAS_PROCESS(CompositionUnit);
-  CompositionUnit(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle);
-
- private:
-  void tick(FifoReadIf<cycle::FetchToken>& in, FifoWriteIf<cycle::ComposedToken>& out) override { k_.tick_compose(cycle_, in, out); }
+  CompositionUnit(sc_core::sc_module_name name, const stage::StageContext& ctx)
+      : StageModule(name, ctx, kInput, kOutput, {"color_tap0", "color_tap1", "weight_x"}) {}
 };
 
 }  // namespace arp::scm

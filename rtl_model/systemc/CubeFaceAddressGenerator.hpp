@@ -1,20 +1,20 @@
-// Cube-face address generator: rotated direction to face, texel and sub-texel position.
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Cube-face address generator: face, texel and sub-texel bits of each rotated vector
+// (stage::AddressStage).
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/AddressStage.hpp"
 
 namespace arp::scm {
 
-class CubeFaceAddressGenerator : public PipelineStageModule<cycle::RotatedToken, cycle::AddressToken> {
+class CubeFaceAddressGenerator : public StageModule<stage::AddressStage> {
  public:
-  sc_core::sc_port<FifoReadIf<cycle::RotatedToken>>& world_vectors_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::AddressToken>>& cube_addresses_out = output_;
+  static constexpr const char* kInput = "world_vectors", *kOutput = "cube_addresses";
+  static constexpr const char* kInstance = "cube_face_address_generator";
+  sc_core::sc_port<FifoReadIf<stage::RotatedToken>>& world_vectors_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::AddressToken>>& cube_addresses_out = output;
 
-  SC_HAS_PROCESS(CubeFaceAddressGenerator);
-  CubeFaceAddressGenerator(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle);
-
- private:
-  void tick(FifoReadIf<cycle::RotatedToken>& in, FifoWriteIf<cycle::AddressToken>& out) override { k_.tick_address(cycle_, in, out); }
+  CubeFaceAddressGenerator(sc_core::sc_module_name name, const stage::StageContext& ctx)
+      : StageModule(name, ctx, kInput, kOutput, {"face", "texel_x", "texel_y"}) {}
 };
 
 }  // namespace arp::scm

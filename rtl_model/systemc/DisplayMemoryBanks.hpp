@@ -1,26 +1,31 @@
-// Display memory banks: the pipeline read port (every memory and tap in parallel) with the
-// double-buffer swap at vertical blank on the pixel clock, and the host write port on the
-// host clock.
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Display memory banks: the pipeline read port (every memory and tap in
+// parallel) with the double-buffer swap at vertical blank on the pixel clock
+// (stage::MemoryReadStage), and the host write port on the host clock
+// (stage::HostWritePort), both over the same memories.
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/HostWritePort.hpp"
+#include "rtl_model/stages/MemoryReadStage.hpp"
 
 namespace arp::scm {
 
-class DisplayMemoryBanks : public PipelineStageModule<cycle::AddressToken, cycle::FetchToken> {
+class DisplayMemoryBanks : public StageModule<stage::MemoryReadStage> {
  public:
-  sc_core::sc_in<bool> host_clk;
-  sc_core::sc_port<FifoReadIf<cycle::AddressToken>>& cube_addresses_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::FetchToken>>& texel_words_out = output_;
+  static constexpr const char* kInput = "cube_addresses", *kOutput = "texel_words";
+  static constexpr const char* kInstance = "display_memory_banks";
+  sc_core::sc_port<ClockIf> host_clk;
+  sc_core::sc_port<FifoReadIf<stage::AddressToken>>& cube_addresses_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::FetchToken>>& texel_words_out = output;
 
   SC_HAS_PROCESS(DisplayMemoryBanks);
-  DisplayMemoryBanks(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle, const int64_t& host_cycle);
+  DisplayMemoryBanks(sc_core::sc_module_name name, const stage::StageContext& ctx);
+
+  const stage::HostWritePort& host_port() const { return host_; }
 
  private:
-  void tick(FifoReadIf<cycle::AddressToken>& in, FifoWriteIf<cycle::FetchToken>& out) override { k_.tick_fetch(cycle_, in, out); }
-  void on_host_clock();
-  const int64_t& host_cycle_;
+  void on_host_clock() { host_.tick(host_clk->cycle()); }
   void trace_more(sc_core::sc_trace_file* tf, const std::string& n) const override;
+  stage::HostWritePort host_;
 };
 
 }  // namespace arp::scm

@@ -9,57 +9,61 @@ namespace arp::scm {
 
 using namespace sc_core;
 
-FastCycleModel::FastCycleModel(sc_module_name name, cycle::PipelineKernels& k, const dp::ArpConfig& c,
-                               const dp::OrientationStream& o, const RunWindow& w)
+namespace {
+template <class Stages, size_t... I>
+Stages make_stages(const stage::StageContext& ctx, std::index_sequence<I...>) {
+  return Stages((static_cast<void>(I), ctx)...);
+}
+template <class Fifos, class List, size_t... I>
+Fifos make_fifos(int depth, std::index_sequence<I...>) {
+  return Fifos(std::make_unique<stage::ClockedFifo<typename List::template Module<I>::Output>>(
+      List::template Module<I>::kOutput, depth)...);
+}
+}  // namespace
+
+FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in, bool speculate)
     : sc_module(name),
-      k_(k),
-      w_(w),
-      pixel_hz_(c.timing.pixel_clock_hz),
-      host_hz_(c.timed.host_clock_hz),
-      tracker("tracker_interface", o, w.base_ps, w.end_ps),
-      pixel_requests_("pixel_requests", c.timed.fifo_depth),
-      view_vectors_("view_vectors", c.timed.fifo_depth),
-      world_vectors_("world_vectors", c.timed.fifo_depth),
-      cube_addresses_("cube_addresses", c.timed.fifo_depth),
-      texel_words_("texel_words", c.timed.fifo_depth),
-      composed_taps_("composed_taps", c.timed.fifo_depth),
-      pixel_colors_("pixel_colors", c.timed.fifo_depth),
-      cycle_(w.first_cycle),
-      host_cycle_(w.first_host_cycle) {
-  pixel_requests_.start_statistics(w.first_cycle);
-  view_vectors_.start_statistics(w.first_cycle);
-  world_vectors_.start_statistics(w.first_cycle);
-  cube_addresses_.start_statistics(w.first_cycle);
-  texel_words_.start_statistics(w.first_cycle);
-  composed_taps_.start_statistics(w.first_cycle);
-  pixel_colors_.start_statistics(w.first_cycle);
+      ctx_{in, ArpStages::schedule(in.config)},
+      stages_(make_stages<Stages>(ctx_, std::make_index_sequence<kN>{})),
+      host_(in.config, in.host_jobs, *in.memories),
+      fifos_(make_fifos<ArpStages::Fifos<stage::ClockedFifo>, ArpStages>(in.config.timed.fifo_depth,
+                                                                         std::make_index_sequence<kN - 1>{})),
+      w_(run_window(timing(), in.config)),
+      pixel_hz_(in.config.timing.pixel_clock_hz),
+      host_hz_(in.config.timed.host_clock_hz),
+      tracker("tracker_interface", *in.orientation, w_.base_ps, w_.end_ps),
+      cycle_(w_.first_cycle),
+      host_cycle_(w_.first_host_cycle) {
+  std::get<stage::MemoryReadStage>(stages_).connect(&host_);
+  std::apply([this](auto&... f) { (f->start_statistics(w_.first_cycle), ...); }, fifos_);
+  if (speculate) {
+    spec_ = std::make_unique<FrameSpeculation>(ctx_, std::get<stage::LensVectorStage>(stages_),
+                                               std::get<stage::OrientationStage>(stages_),
+                                               std::get<stage::AddressStage>(stages_), memories());
+    std::get<stage::ScanOutStage>(stages_).use_prerendered(spec_.get());
+  }
   SC_METHOD(pixel_domain);
   SC_METHOD(host_domain);
 }
 
 bool FastCycleModel::idle() const {
-  return pixel_requests_.occupancy() == 0 && view_vectors_.occupancy() == 0 && world_vectors_.occupancy() == 0 &&
-         cube_addresses_.occupancy() == 0 && texel_words_.occupancy() == 0 && composed_taps_.occupancy() == 0 &&
-         pixel_colors_.occupancy() == 0 && k_.stages_idle();
+  bool empty = true;
+  std::apply([&](const auto&... f) { ((empty = empty && f->occupancy() == 0), ...); }, fifos_);
+  std::apply([&](const auto&... s) { ((empty = empty && s.idle()), ...); }, stages_);
+  return empty;
 }
 
-// One pixel clock: every stage, then the clock edge of every FIFO.
+template <size_t... I>
+void FastCycleModel::tick_middle(int64_t c, std::index_sequence<I...>) {
+  (tick_stage(std::get<I + 1>(stages_), c, *std::get<I>(fifos_), *std::get<I + 1>(fifos_)), ...);
+}
+
+// One pixel clock: every stage in data-flow order, then the clock edge of every FIFO.
 void FastCycleModel::evaluate(int64_t c) {
-  k_.tick_timing(c, pixel_requests_);
-  k_.tick_lens(c, pixel_requests_, view_vectors_);
-  k_.tick_rotate(c, view_vectors_, world_vectors_);
-  k_.tick_address(c, world_vectors_, cube_addresses_);
-  k_.tick_fetch(c, cube_addresses_, texel_words_);
-  k_.tick_compose(c, texel_words_, composed_taps_);
-  k_.tick_filter(c, composed_taps_, pixel_colors_);
-  k_.tick_scanout(c, pixel_colors_);
-  pixel_requests_.update();
-  view_vectors_.update();
-  world_vectors_.update();
-  cube_addresses_.update();
-  texel_words_.update();
-  composed_taps_.update();
-  pixel_colors_.update();
+  std::get<0>(stages_).tick(c, *std::get<0>(fifos_));
+  tick_middle(c, std::make_index_sequence<kN - 2>{});
+  std::get<kN - 1>(stages_).tick(c, *std::get<kN - 2>(fifos_));
+  std::apply([](auto&... f) { (f->update(), ...); }, fifos_);
   ++evaluated_;
 }
 
@@ -70,8 +74,8 @@ void FastCycleModel::pixel_domain() {
     next_trigger(sim_time(dp::clock_cycle_to_ps(cycle_, pixel_hz_), w_.base_ps) - now);
     return;
   }
-  const auto& sched = k_.scan.schedule();
-  const int64_t F = k_.scan.timing().frame_cycles();
+  const auto& sched = ctx_.schedule;
+  const int64_t F = timing().scan().timing().frame_cycles();
   // Never run past a swap cycle: it must be evaluated at its own time.
   const int64_t f = (cycle_ - sched.swap_cycle(0)) / F;
   int64_t stop = w_.end_cycle;
@@ -82,31 +86,31 @@ void FastCycleModel::pixel_domain() {
   int64_t c = cycle_;
   while (c < stop) {
     evaluate(c++);
-    if (!tracing_ && c < stop && idle()) c = std::min(stop, k_.next_busy_cycle(c, w_.end_cycle));
+    if (!tracing_ && c < stop && idle()) c = std::min(stop, timing().next_busy_cycle(c, w_.end_cycle));
   }
   cycle_ = c;
-  if (!tracing_ && idle()) cycle_ = k_.next_busy_cycle(cycle_, w_.end_cycle);
+  if (!tracing_ && idle()) cycle_ = timing().next_busy_cycle(cycle_, w_.end_cycle);
   if (cycle_ < w_.end_cycle) next_trigger(sim_time(dp::clock_cycle_to_ps(cycle_, pixel_hz_), w_.base_ps) - now);
 }
 
 void FastCycleModel::host_domain() {
   const sc_time now = sc_time_stamp();
   if (host_started_) {
-    k_.tick_host(host_cycle_);
+    host_.tick(host_cycle_);
     ++host_cycle_;
   }
   host_started_ = true;
-  host_cycle_ = k_.host.next_active_cycle(host_cycle_);  // gated while the port is idle
+  host_cycle_ = host_.next_active_cycle(host_cycle_);  // gated while the port is idle
   if (host_cycle_ < w_.end_host_cycle)
     next_trigger(sim_time(dp::clock_cycle_to_ps(host_cycle_, host_hz_), w_.base_ps) - now);
 }
 
 void FastCycleModel::trace(sc_trace_file* tf) {
   tracing_ = true;
-  k_.set_tracing(true);
   const std::string n = name();
   sc_trace(tf, cycle_, n + ".pixel_cycle");
-  const cycle::ScanTiming& s = k_.scan;
+  stage::VideoTimingStage& s = std::get<0>(stages_);
+  s.track_position = true;
   sc_trace(tf, s.frame_count, n + ".video_timing_generator.frame");
   sc_trace(tf, s.v_count, n + ".video_timing_generator.v_count");
   sc_trace(tf, s.h_count, n + ".video_timing_generator.h_count");
@@ -114,26 +118,43 @@ void FastCycleModel::trace(sc_trace_file* tf) {
   sc_trace(tf, s.vblank, n + ".video_timing_generator.vblank");
   sc_trace(tf, s.issued, n + ".video_timing_generator.valid_out");
   tracker.trace(tf);
-  sc_trace(tf, k_.latch.sample, n + ".orientation_matrix_unit.matrix_sample");
-  sc_trace(tf, k_.swapper.front_select, n + ".display_memory_banks.front_select");
-  sc_trace(tf, k_.host.busy, n + ".display_memory_banks.host_busy");
-  sc_trace(tf, k_.scanout.display_valid, n + ".hmd_scan_out.display_valid");
-  sc_trace(tf, k_.scanout.display_rgb, n + ".hmd_scan_out.display_rgb");
-  sc_trace(tf, k_.scanout.underflow_count, n + ".hmd_scan_out.underflows");
-  sc_trace(tf, pixel_requests_.occupancy_ref(), n + ".pixel_requests.occupancy");
-  sc_trace(tf, view_vectors_.occupancy_ref(), n + ".view_vectors.occupancy");
-  sc_trace(tf, world_vectors_.occupancy_ref(), n + ".world_vectors.occupancy");
-  sc_trace(tf, cube_addresses_.occupancy_ref(), n + ".cube_addresses.occupancy");
-  sc_trace(tf, texel_words_.occupancy_ref(), n + ".texel_words.occupancy");
-  sc_trace(tf, composed_taps_.occupancy_ref(), n + ".composed_taps.occupancy");
-  sc_trace(tf, pixel_colors_.occupancy_ref(), n + ".pixel_colors.occupancy");
+  sc_trace(tf, std::get<stage::OrientationStage>(stages_).sample, n + ".orientation_matrix_unit.matrix_sample");
+  sc_trace(tf, memories().swapper().front_select, n + ".display_memory_banks.front_select");
+  sc_trace(tf, host_.busy, n + ".display_memory_banks.host_busy");
+  const stage::ScanOutStage& so = scan_out();
+  sc_trace(tf, so.display_valid, n + ".hmd_scan_out.display_valid");
+  sc_trace(tf, so.display_rgb, n + ".hmd_scan_out.display_rgb");
+  sc_trace(tf, so.underflow_count, n + ".hmd_scan_out.underflows");
+  std::apply([&](const auto&... f) { (sc_trace(tf, f->occupancy_ref(), n + "." + f->name() + ".occupancy"), ...); }, fifos_);
 }
 
-std::vector<std::pair<std::string, cycle::FifoStats>> FastCycleModel::fifo_stats(int64_t end_cycle) const {
-  return {{"pixel_requests", pixel_requests_.stats(end_cycle)}, {"view_vectors", view_vectors_.stats(end_cycle)},
-          {"world_vectors", world_vectors_.stats(end_cycle)},   {"cube_addresses", cube_addresses_.stats(end_cycle)},
-          {"texel_words", texel_words_.stats(end_cycle)},       {"composed_taps", composed_taps_.stats(end_cycle)},
-          {"pixel_colors", pixel_colors_.stats(end_cycle)}};
+void FastCycleModel::stop_tracing() {
+  tracing_ = false;
+  std::get<0>(stages_).track_position = false;
+}
+
+std::vector<std::pair<std::string, stage::FifoStats>> FastCycleModel::fifo_stats(int64_t end_cycle) const {
+  std::vector<std::pair<std::string, stage::FifoStats>> s;
+  std::apply([&](const auto&... f) { (s.push_back({f->name(), f->stats(end_cycle)}), ...); }, fifos_);
+  return s;
+}
+
+std::array<stage::StageStats, dp::kStageCount> FastCycleModel::stage_stats() const {
+  std::array<stage::StageStats, dp::kStageCount> s{};
+  std::apply(
+      [&](const auto&... st) {
+        auto one = [&](const auto& x) {
+          if constexpr (detail::configured_stage<std::decay_t<decltype(x)>>::value)
+            s[static_cast<size_t>(std::decay_t<decltype(x)>::kId)] = x.stats();
+        };
+        (one(st), ...);
+      },
+      stages_);
+  auto& so = s[static_cast<size_t>(dp::Stage::ScanOut)];
+  so.latency_cycles = scan_out().latency();
+  so.min_cycles = so.max_cycles = so.latency_cycles;
+  so.mean_cycles = so.latency_cycles;
+  return s;
 }
 
 }  // namespace arp::scm

@@ -1,8 +1,10 @@
 // The fast cycle-accurate model: one process per clock domain. The pixel
-// clock's process evaluates every stage each cycle through the same
-// cycle::PipelineKernels ticks and FIFO cores as the detailed model, then
-// clocks the FIFOs -- the same cycle semantics, without a signal or process
-// per stage. Two exact shortcuts, both off while a waveform is traced:
+// clock's process ticks the same stage objects as the detailed model's
+// modules (the same StageList: rtl_model/stages) on plain FIFO cores, then
+// clocks the FIFOs -- the same cycle semantics, without a signal or a
+// process per stage. The host clock's process ticks the host write port.
+// Three exact shortcuts, all off while a waveform is traced:
+// - frame speculation (FrameSpeculation), which wraps the stages' arithmetic;
 // - temporal decoupling: one activation evaluates up to kBatch cycles ahead
 //   of simulated time, stopping before each vertical-blank swap cycle -- the
 //   only cycle that reads another domain's state (the host's commits);
@@ -11,50 +13,64 @@
 #pragma once
 #include <systemc>
 
+#include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "ArpPipelineTop.hpp"
+#include "FrameSpeculation.hpp"
 #include "TrackerInterface.hpp"
-#include "rtl_model/cycle/ClockedFifo.hpp"
-#include "rtl_model/cycle/PipelineKernels.hpp"
+#include "rtl_model/stages/ClockedFifo.hpp"
 
 namespace arp::scm {
 
 class FastCycleModel : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(FastCycleModel);
-  FastCycleModel(sc_core::sc_module_name name, cycle::PipelineKernels& k, const dp::ArpConfig& c,
-                 const dp::OrientationStream& o, const RunWindow& w);
+  FastCycleModel(sc_core::sc_module_name name, const stage::TimedInputs& in, bool speculate);
 
+  const RunWindow& window() const { return w_; }
   void trace(sc_core::sc_trace_file* tf);
-  void stop_tracing() {
-    tracing_ = false;
-    k_.set_tracing(false);
-  }
+  void stop_tracing();
   const TrackerInterface& tracker_interface() const { return tracker; }
-  std::vector<std::pair<std::string, cycle::FifoStats>> fifo_stats(int64_t end_cycle) const;
+  std::vector<std::pair<std::string, stage::FifoStats>> fifo_stats(int64_t end_cycle) const;
+  std::array<stage::StageStats, dp::kStageCount> stage_stats() const;
+  const stage::VideoTimingStage& timing() const { return std::get<0>(stages_); }
+  const stage::ScanOutStage& scan_out() const { return std::get<ArpStages::kSize - 1>(stages_); }
+  const stage::MemoryReadStage& memories() const { return std::get<stage::MemoryReadStage>(stages_); }
+  const stage::HostWritePort& host_port() const { return host_; }
+  const FrameSpeculation* speculation() const { return spec_.get(); }
   int64_t evaluated_cycles() const { return evaluated_; }
 
  private:
+  template <class... M>
+  static auto stage_tuple(std::tuple<M...>*) -> std::tuple<typename M::Stage...>;
+  using Stages = decltype(stage_tuple(static_cast<ArpStages::Modules*>(nullptr)));
+  static constexpr size_t kN = ArpStages::kSize;
+
   void pixel_domain();
   void host_domain();
   bool idle() const;
   void evaluate(int64_t c);
+  template <size_t... I>
+  void tick_middle(int64_t c, std::index_sequence<I...>);
+  template <class S, class I, class O>
+  void tick_stage(S& s, int64_t c, I& in, O& out) {
+    if (spec_) spec_->tick(s, c, in, out);
+    else s.tick(c, in, out);
+  }
   static constexpr int64_t kBatch = 4096;
 
-  cycle::PipelineKernels& k_;
+  stage::StageContext ctx_;
+  Stages stages_;
+  stage::HostWritePort host_;
+  ArpStages::Fifos<stage::ClockedFifo> fifos_;
   RunWindow w_;
   int64_t pixel_hz_, host_hz_;
   TrackerInterface tracker;
-  cycle::ClockedFifo<cycle::PixelSlot> pixel_requests_;
-  cycle::ClockedFifo<cycle::LensToken> view_vectors_;
-  cycle::ClockedFifo<cycle::RotatedToken> world_vectors_;
-  cycle::ClockedFifo<cycle::AddressToken> cube_addresses_;
-  cycle::ClockedFifo<cycle::FetchToken> texel_words_;
-  cycle::ClockedFifo<cycle::ComposedToken> composed_taps_;
-  cycle::ClockedFifo<cycle::ColorToken> pixel_colors_;
+  std::unique_ptr<FrameSpeculation> spec_;
   int64_t cycle_, host_cycle_;
   int64_t evaluated_ = 0;
   bool tracing_ = false, started_ = false, host_started_ = false;

@@ -1,13 +1,13 @@
 // The clocked FIFO as a SystemC primitive channel: stages reach it through
 // ports of its two interfaces; reads and writes take effect in the update
 // phase of the clock edge's delta cycle, like registers, through the same
-// core (cycle::ClockedFifo) the fast model uses.
+// core (stage::ClockedFifo) the fast model uses.
 #pragma once
 #include <systemc>
 
 #include <string>
 
-#include "rtl_model/cycle/ClockedFifo.hpp"
+#include "rtl_model/stages/ClockedFifo.hpp"
 
 namespace arp::scm {
 
@@ -50,14 +50,14 @@ class FifoChannel : public sc_core::sc_prim_channel, public FifoWriteIf<T>, publ
     request_update();
   }
 
-  cycle::ClockedFifo<T>& core() { return core_; }
-  const cycle::ClockedFifo<T>& core() const { return core_; }
+  stage::ClockedFifo<T>& core() { return core_; }
+  const stage::ClockedFifo<T>& core() const { return core_; }
 
  protected:
   void update() override { core_.update(); }
 
  private:
-  cycle::ClockedFifo<T> core_;
+  stage::ClockedFifo<T> core_;
 };
 
 }  // namespace arp::scm

@@ -1,20 +1,20 @@
-// Lens vector table: the ROM of head-frame viewing directions, read for each issued pixel.
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Lens vector table: the ROM of head-frame viewing directions, read for each issued pixel
+// (stage::LensVectorStage).
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/LensVectorStage.hpp"
 
 namespace arp::scm {
 
-class LensVectorTable : public PipelineStageModule<cycle::PixelSlot, cycle::LensToken> {
+class LensVectorTable : public StageModule<stage::LensVectorStage> {
  public:
-  sc_core::sc_port<FifoReadIf<cycle::PixelSlot>>& pixel_requests_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::LensToken>>& view_vectors_out = output_;
+  static constexpr const char* kInput = "pixel_requests", *kOutput = "view_vectors";
+  static constexpr const char* kInstance = "lens_vector_table";
+  sc_core::sc_port<FifoReadIf<stage::PixelSlot>>& pixel_requests_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::LensToken>>& view_vectors_out = output;
 
-  SC_HAS_PROCESS(LensVectorTable);
-  LensVectorTable(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle);
-
- private:
-  void tick(FifoReadIf<cycle::PixelSlot>& in, FifoWriteIf<cycle::LensToken>& out) override { k_.tick_lens(cycle_, in, out); }
+  LensVectorTable(sc_core::sc_module_name name, const stage::StageContext& ctx)
+      : StageModule(name, ctx, kInput, kOutput, {"view_x", "view_y", "view_z"}) {}
 };
 
 }  // namespace arp::scm

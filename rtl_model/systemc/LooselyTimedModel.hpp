@@ -1,11 +1,12 @@
 // The loosely timed model: one process whose quantum is a scanline. At the
 // time a line's first pixel would be issued it computes the whole line
-// through the same stage arithmetic, latching the orientation for each pixel
-// at the cycle the schedule says it enters the orientation matrix unit, and
-// annotates each pixel with its scan-out time. Host writes are applied whole
-// at the vertical blank that swaps them. No FIFOs or stalls are modelled:
-// its frames and photon times equal the cycle-accurate models' whenever those
-// do not stall (tested), and it cannot show underflows.
+// through the same stage objects' arithmetic (rtl_model/stages), latching
+// the orientation for each pixel at the cycle the schedule says it enters the
+// orientation matrix unit, and annotates each pixel with its scan-out time.
+// Host writes are applied whole at the vertical blank that swaps them. No
+// FIFOs or stalls are modelled: its frames and photon times equal the
+// cycle-accurate models' whenever those do not stall (tested), and it cannot
+// show underflows.
 #pragma once
 #include <systemc>
 
@@ -15,20 +16,26 @@
 
 #include "ArpPipelineTop.hpp"
 #include "TrackerInterface.hpp"
-#include "rtl_model/cycle/FrameReport.hpp"
-#include "rtl_model/cycle/HostWritePort.hpp"
-#include "rtl_model/cycle/PipelineKernels.hpp"
+#include "rtl_model/stages/AddressStage.hpp"
+#include "rtl_model/stages/CompositionStage.hpp"
+#include "rtl_model/stages/FilterStage.hpp"
+#include "rtl_model/stages/HostWritePort.hpp"
+#include "rtl_model/stages/LensVectorStage.hpp"
+#include "rtl_model/stages/MemoryReadStage.hpp"
+#include "rtl_model/stages/OrientationStage.hpp"
+#include "rtl_model/stages/VideoTimingStage.hpp"
 
 namespace arp::scm {
 
 class LooselyTimedModel : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(LooselyTimedModel);
-  LooselyTimedModel(sc_core::sc_module_name name, const cycle::TimedInputs& in, const RunWindow& w);
+  LooselyTimedModel(sc_core::sc_module_name name, const stage::TimedInputs& in);
 
+  const RunWindow& window() const { return w_; }
   void trace(sc_core::sc_trace_file* tf);
   const TrackerInterface& tracker_interface() const { return tracker; }
-  const std::vector<cycle::HostJobTiming>& host_timings() const { return host_.timings(); }
+  const std::vector<stage::HostJobTiming>& host_timings() const { return host_.timings(); }
   int64_t swaps() const { return swaps_; }
   int64_t quanta() const { return quanta_; }
 
@@ -40,25 +47,32 @@ class LooselyTimedModel : public sc_core::sc_module {
   size_t next_line_ = 0;
   int64_t frame_no_ = 0;
 
-  const cycle::TimedInputs& in_;
+  const stage::TimedInputs& in_;
+  stage::StageContext ctx_;
+  stage::VideoTimingStage timing_;
   RunWindow w_;
-  cycle::StageArithmetic arith_;
-  cycle::ScanTiming scan_;
-  cycle::OrientationLatch latch_;
-  cycle::PlannedHostWrites host_;
+  // The stages whose arithmetic a line goes through, in order.
+  stage::LensVectorStage lens_;
+  stage::OrientationStage orientation_;
+  stage::AddressStage address_;
+  stage::MemoryReadStage memories_;
+  stage::CompositionStage composition_;
+  stage::FilterStage filter_;
+  dp::HmdScanOut panel_;  // memory colour -> the panel's
+  stage::PlannedHostWrites host_;
   TrackerInterface tracker;
   struct Tokens {  // one pixel's tokens, stage by stage
-    cycle::LensToken lens;
-    cycle::RotatedToken rotated;
-    cycle::AddressToken address;
-    cycle::FetchToken fetch;
-    cycle::ComposedToken composed;
-    cycle::ColorToken color;
+    stage::LensToken lens;
+    stage::RotatedToken rotated;
+    stage::AddressToken address;
+    stage::FetchToken fetch;
+    stage::ComposedToken composed;
+    stage::ColorToken color;
   };
   std::unique_ptr<Tokens> tokens_;
   int64_t rotate_to_scanout_;
   HmdFrame frame_;
-  cycle::LatencyCollector lat_;
+  stage::LatencyCollector lat_;
   int64_t swaps_ = 0, quanta_ = 0;
   // Traced.
   int64_t quantum_frame_ = 0;

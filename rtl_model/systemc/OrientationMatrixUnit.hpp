@@ -1,21 +1,21 @@
-// Orientation matrix unit: loads the orientation register at latch points and rotates each
-// view vector into the cube frame.
-// Its arithmetic is the datapath's, through cycle::PipelineKernels.
+// Orientation matrix unit: loads the orientation register at latch points
+// and rotates each view vector into the cube frame (stage::OrientationStage).
 #pragma once
-#include "PipelineStageModule.hpp"
+#include "StageModule.hpp"
+#include "rtl_model/stages/OrientationStage.hpp"
 
 namespace arp::scm {
 
-class OrientationMatrixUnit : public PipelineStageModule<cycle::LensToken, cycle::RotatedToken> {
+class OrientationMatrixUnit : public StageModule<stage::OrientationStage> {
  public:
-  sc_core::sc_port<FifoReadIf<cycle::LensToken>>& view_vectors_in = input_;
-  sc_core::sc_port<FifoWriteIf<cycle::RotatedToken>>& world_vectors_out = output_;
+  static constexpr const char* kInput = "view_vectors", *kOutput = "world_vectors";
+  static constexpr const char* kInstance = "orientation_matrix_unit";
+  sc_core::sc_port<FifoReadIf<stage::LensToken>>& view_vectors_in = input;
+  sc_core::sc_port<FifoWriteIf<stage::RotatedToken>>& world_vectors_out = output;
 
-  SC_HAS_PROCESS(OrientationMatrixUnit);
-  OrientationMatrixUnit(sc_core::sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle);
+  OrientationMatrixUnit(sc_core::sc_module_name name, const stage::StageContext& ctx);
 
  private:
-  void tick(FifoReadIf<cycle::LensToken>& in, FifoWriteIf<cycle::RotatedToken>& out) override { k_.tick_rotate(cycle_, in, out); }
   void trace_more(sc_core::sc_trace_file* tf, const std::string& n) const override;
 };
 

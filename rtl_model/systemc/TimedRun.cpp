@@ -51,7 +51,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-void check_inputs(const cycle::TimedInputs& in, bool timed) {
+void check_inputs(const stage::TimedInputs& in, bool timed) {
   const auto issues = timed ? dp::validate_timed(in.config) : dp::validate(in.config);
   if (!issues.empty()) throw InputError("configuration", issues.front().key, issues.front().reason);
   if (!in.memories || !in.orientation) throw std::logic_error("run_timed: memories and orientation are required");
@@ -59,31 +59,33 @@ void check_inputs(const cycle::TimedInputs& in, bool timed) {
     throw std::logic_error("run_timed: the memory set does not match the configuration");
   if (in.frames < 1) throw InputError("frames", "", "must be at least 1");
   if (in.first_frame < 0) throw InputError("first frame", "", "must be >= 0");
-  cycle::check_host_jobs(in.host_jobs, in.config, "host write jobs");
+  stage::check_host_jobs(in.host_jobs, in.config, "host write jobs");
 }
 
 // The functional level: frames from the untimed model, host jobs at their
 // vertical blanks, photon times and latencies computed from the schedule.
-TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& opt) {
+TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& opt) {
   TimedResult r;
   r.fidelity = Fidelity::Functional;
   const FunctionalModel model(in.config);
-  const dp::PipelineSchedule sched(in.config);
+  const stage::StageContext ctx{in, dp::PipelineSchedule(in.config)};
+  const dp::PipelineSchedule& sched = ctx.schedule;
   const auto& t = model.timing();
-  cycle::ScanTiming scan(in.config, in.first_frame, in.frames);
-  cycle::PlannedHostWrites host(in.config, in.host_jobs);
+  const stage::VideoTimingStage timing(ctx);  // the run's clocks and the frames' last slots, as the timed levels have them
+  const stage::ScanTiming& scan = timing.scan();
+  stage::PlannedHostWrites host(in.config, in.host_jobs);
   RenderOptions ro;
   ro.threads = opt.threads;
   ro.photon_times = true;
   const auto t0 = Clock::now();
   HmdFrame f;
-  cycle::LatencyCollector lat;
+  stage::LatencyCollector lat;
   const auto& pc = in.config.pipeline;
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
     if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
     model.render(*in.memories, *in.orientation, frame, f, ro);
-    cycle::FrameReport fr;
+    stage::FrameReport fr;
     fr.frame = frame;
     fr.pixels = static_cast<int64_t>(f.width) * f.height;
     for (int e = 0; e < f.eyes; ++e)
@@ -105,11 +107,27 @@ TimedResult run_functional(const cycle::TimedInputs& in, const TimedRunOptions& 
   }
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.host_jobs = host.timings();
-  r.first_cycle = scan.first_cycle();
-  r.end_cycle = scan.end_cycle();
+  r.first_cycle = timing.first_cycle();
+  r.end_cycle = timing.end_cycle();
   r.issue_lead = sched.issue_lead();
   r.orientation_lead = sched.orientation_lead();
   return r;
+}
+
+// What both cycle-accurate levels measure, from their stages.
+template <class Model>
+void fill_cycle_statistics(TimedResult& r, const Model& m, const stage::MemoryReadStage& memories,
+                           const stage::HostWritePort& host, const stage::VideoTimingStage& timing,
+                           const stage::ScanOutStage& scan_out, int64_t end_cycle) {
+  r.stages_measured = r.fifos_modelled = true;
+  r.stages = m.stage_stats();
+  r.fifos = m.fifo_stats(end_cycle);
+  r.host_jobs = host.timings();
+  r.swaps = memories.swapper().swaps();
+  r.underflows = scan_out.underflows();
+  r.issue_stalls = timing.issue_stalls();
+  r.orientation_writes = m.tracker_interface().writes();
+  r.late_discarded = scan_out.late_discarded();
 }
 
 bool g_simulated = false;
@@ -123,7 +141,7 @@ void claim_simulation() {
   sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);  // e.g. the trace file's time-unit notice
 }
 
-TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) {
+TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) {
   if (opt.fidelity == Fidelity::Functional) {
     check_inputs(in, false);
     return run_functional(in, opt);
@@ -133,34 +151,41 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
 
   TimedResult r;
   r.fidelity = opt.fidelity;
-  cycle::TimedInputs run_in = in;  // the kernels keep references to the inputs
-  const cycle::FrameSink user_sink = in.sink;
+  stage::TimedInputs run_in = in;  // the models keep references to the inputs
+  const stage::FrameSink user_sink = in.sink;
   const int64_t frames = in.frames;
-  run_in.sink = [&r, &user_sink, &opt, frames](const HmdFrame& f, const cycle::FrameReport& fr) {
+  run_in.sink = [&r, &user_sink, &opt, frames](const HmdFrame& f, const stage::FrameReport& fr) {
     r.frames.push_back(fr);
     if (user_sink) user_sink(f, fr);
     if (opt.progress)
       opt.progress(static_cast<double>(r.frames.size()) / static_cast<double>(frames),
                    "frame " + std::to_string(r.frames.size()) + "/" + std::to_string(frames));
   };
-  cycle::PipelineKernels k(run_in);
-  const RunWindow w = run_window(k, in.config);
-  r.first_cycle = w.first_cycle;
-  r.end_cycle = w.end_cycle;
-  r.issue_lead = k.scan.schedule().issue_lead();
-  r.orientation_lead = k.scan.schedule().orientation_lead();
 
   std::unique_ptr<ArpPipelineTop> rtl;
   std::unique_ptr<FastCycleModel> fast;
   std::unique_ptr<LooselyTimedModel> lt;
+  RunWindow w{};
   switch (opt.fidelity) {
-    case Fidelity::Rtl: rtl = std::make_unique<ArpPipelineTop>("arp", k, in.config, *in.orientation, w); break;
-    case Fidelity::Cycle:
-      fast = std::make_unique<FastCycleModel>("arp", k, in.config, *in.orientation, w);
-      k.enable_speculation(opt.vcd.path.empty() && opt.speculate);  // waveforms show every stage's data
+    case Fidelity::Rtl:
+      rtl = std::make_unique<ArpPipelineTop>("arp", run_in);
+      w = rtl->window();
       break;
-    default: lt = std::make_unique<LooselyTimedModel>("arp", run_in, w); break;
+    case Fidelity::Cycle:
+      // Waveforms show every stage's data: no speculation while tracing.
+      fast = std::make_unique<FastCycleModel>("arp", run_in, opt.vcd.path.empty() && opt.speculate);
+      w = fast->window();
+      break;
+    default:
+      lt = std::make_unique<LooselyTimedModel>("arp", run_in);
+      w = lt->window();
+      break;
   }
+  const dp::PipelineSchedule sched = ArpStages::schedule(in.config);
+  r.first_cycle = w.first_cycle;
+  r.end_cycle = w.end_cycle;
+  r.issue_lead = sched.issue_lead();
+  r.orientation_lead = sched.orientation_lead();
 
   // The waveform window, in simulated time.
   const int64_t span = w.end_ps - w.base_ps;
@@ -201,19 +226,14 @@ TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt) 
   advance_to(span + 1);
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
-  if (rtl || fast) {
-    r.stages_measured = r.fifos_modelled = true;
-    r.stages = k.stage_stats();
-    r.fifos = rtl ? rtl->fifo_stats(w.end_cycle) : fast->fifo_stats(w.end_cycle);
-    r.host_jobs = k.host.timings();
-    r.swaps = k.swapper.swaps();
-    r.underflows = k.scanout.underflows();
-    r.issue_stalls = k.scan.issue_stalls();
-    r.orientation_writes = rtl ? rtl->tracker_interface().writes() : fast->tracker_interface().writes();
-    r.late_discarded = k.scanout.late_discarded();
-    if (k.speculation()) {
-      r.speculated_pixels = k.speculation()->speculated;
-      r.fallback_pixels = k.speculation()->fallbacks;
+  if (rtl) {
+    fill_cycle_statistics(r, *rtl, rtl->memories().stage(), rtl->memories().host_port(), rtl->timing().stage(),
+                          rtl->scan_out().stage(), w.end_cycle);
+  } else if (fast) {
+    fill_cycle_statistics(r, *fast, fast->memories(), fast->host_port(), fast->timing(), fast->scan_out(), w.end_cycle);
+    if (fast->speculation()) {
+      r.speculated_pixels = fast->speculation()->speculated;
+      r.fallback_pixels = fast->speculation()->fallbacks;
     }
   } else {
     r.host_jobs = lt->host_timings();

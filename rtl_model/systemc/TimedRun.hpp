@@ -12,8 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "rtl_model/cycle/ClockedFifo.hpp"
-#include "rtl_model/cycle/PipelineKernels.hpp"
+#include "rtl_model/stages/ClockedFifo.hpp"
+#include "rtl_model/stages/StageContext.hpp"
+#include "rtl_model/stages/StagePipe.hpp"
 
 namespace arp::scm {
 
@@ -38,11 +39,11 @@ struct TimedRunOptions {
 
 struct TimedResult {
   Fidelity fidelity = Fidelity::Rtl;
-  std::vector<cycle::FrameReport> frames;
+  std::vector<stage::FrameReport> frames;
   bool stages_measured = false, fifos_modelled = false;
-  std::array<cycle::StageStats, dp::kStageCount> stages{};
-  std::vector<std::pair<std::string, cycle::FifoStats>> fifos;
-  std::vector<cycle::HostJobTiming> host_jobs;
+  std::array<stage::StageStats, dp::kStageCount> stages{};
+  std::vector<std::pair<std::string, stage::FifoStats>> fifos;
+  std::vector<stage::HostJobTiming> host_jobs;
   int64_t speculated_pixels = 0, fallback_pixels = 0;  // fast level: on/off the nominal schedule
   int64_t swaps = 0, underflows = 0, late_discarded = 0, issue_stalls = 0, orientation_writes = 0;
   int64_t first_cycle = 0, end_cycle = 0;  // pixel clocks simulated: [first, end)
@@ -55,7 +56,7 @@ struct TimedResult {
 
 // Validates (validate_timed for the timed levels; InputError naming the
 // setting) before anything is simulated.
-TimedResult run_timed(const cycle::TimedInputs& in, const TimedRunOptions& opt);
+TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt);
 
 // Every SystemC simulation of a process starts here: SystemC cannot run a
 // second one (std::logic_error then). Sets the 1 ps resolution and quiets SC_INFO.

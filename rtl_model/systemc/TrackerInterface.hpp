@@ -1,7 +1,7 @@
 // The tracker's side of the orientation register: writes each sample into
 // the register at its simulated time, so the register's contents (sample
 // number and quaternion, Q1.14) can be seen in a waveform. The orientation
-// matrix unit reads the same register through cycle::OrientationLatch.
+// matrix unit reads the same register (stage::OrientationStage).
 #pragma once
 #include <systemc>
 

@@ -6,20 +6,17 @@ namespace arp::scm {
 
 using namespace sc_core;
 
-VideoTimingGenerator::VideoTimingGenerator(sc_module_name name, cycle::PipelineKernels& k, const int64_t& cycle)
-    : sc_module(name), clk("clk"), pixel_requests_out("pixel_requests_out"), k_(k), cycle_(cycle) {
+VideoTimingGenerator::VideoTimingGenerator(sc_module_name name, const stage::StageContext& ctx)
+    : sc_module(name), clk("clk"), pixel_requests_out("pixel_requests_out"), stage_(ctx) {
   SC_METHOD(on_clock);
-  sensitive << clk.pos();
+  sensitive << clk;
   dont_initialize();
 }
 
-void VideoTimingGenerator::end_of_elaboration() { out_ = pixel_requests_out.operator->(); }
-
-void VideoTimingGenerator::on_clock() { k_.tick_timing(cycle_, *out_); }
-
-void VideoTimingGenerator::trace(sc_trace_file* tf) const {
+void VideoTimingGenerator::trace(sc_trace_file* tf) {
+  stage_.track_position = true;
   const std::string n = name();
-  const cycle::ScanTiming& s = k_.scan;
+  const stage::VideoTimingStage& s = stage_;
   sc_trace(tf, s.frame_count, n + ".frame");
   sc_trace(tf, s.v_count, n + ".v_count");
   sc_trace(tf, s.h_count, n + ".h_count");

@@ -57,9 +57,9 @@ dp::OrientationStream fast_turn(const dp::ArpConfig& c, int64_t first_frame, int
   return dp::OrientationStream(s, "fast turn");
 }
 
-std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, cycle::TimedInputs in, scm::TimedResult* result) {
+std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, stage::TimedInputs in, scm::TimedResult* result) {
   std::map<int64_t, CollectedFrame> out;
-  in.sink = [&out](const HmdFrame& fr, const cycle::FrameReport& r) { out[r.frame] = {fr, r}; };
+  in.sink = [&out](const HmdFrame& fr, const stage::FrameReport& r) { out[r.frame] = {fr, r}; };
   scm::TimedRunOptions opt;
   opt.fidelity = f;
   const scm::TimedResult res = scm::run_timed(in, opt);
@@ -67,7 +67,7 @@ std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, cycle::TimedInputs 
   return out;
 }
 
-std::map<int64_t, CollectedFrame> functional_frames(const cycle::TimedInputs& in) {
+std::map<int64_t, CollectedFrame> functional_frames(const stage::TimedInputs& in) {
   return run_level(scm::Fidelity::Functional, in);
 }
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <vector>
 
-#include "rtl_model/cycle/PipelineKernels.hpp"
+#include "rtl_model/stages/StageContext.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "rtl_model/systemc/TimedRun.hpp"
 
@@ -25,13 +25,13 @@ dp::OrientationStream fast_turn(const dp::ArpConfig& c, int64_t first_frame, int
 
 struct CollectedFrame {
   HmdFrame frame;
-  cycle::FrameReport report;
+  stage::FrameReport report;
 };
 
 // Runs a level, keeping every frame.
-std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, cycle::TimedInputs in, scm::TimedResult* result = nullptr);
+std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, stage::TimedInputs in, scm::TimedResult* result = nullptr);
 
 // The functional model's frames for the same inputs (host jobs applied at their swaps).
-std::map<int64_t, CollectedFrame> functional_frames(const cycle::TimedInputs& in);
+std::map<int64_t, CollectedFrame> functional_frames(const stage::TimedInputs& in);
 
 }  // namespace arp::bench

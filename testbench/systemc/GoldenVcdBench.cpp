@@ -58,12 +58,12 @@ TEST(GoldenVcd, TinyFrameThroughTheDetailedModelMatchesTheReviewedWaveform) {
   const auto o = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(30, 10, 0));
   // A host job during the frame, so the write port and the swap show in the waveform too.
   const dp::VideoTiming t(c.timing);
-  cycle::HostWriteJob job;
+  stage::HostWriteJob job;
   job.start_ps = t.cycles_to_ps(t.frame_start_cycle(1) + 5);
   job.eye = 0;
   job.memory = 0;
   for (uint16_t i = 0; i < 4; ++i) job.texels.push_back({5, i, i, 0xff0000u, 3});
-  cycle::TimedInputs in;
+  stage::TimedInputs in;
   in.config = c;
   in.memories = &mem;
   in.orientation = &o;

@@ -32,13 +32,13 @@ using namespace sc_core;
 
 namespace {
 
-// Everything a stage module needs around it.
+// Everything a stage module needs around it: the run's inputs, from which
+// each bench elaborates the one module under test.
 struct World {
   dp::ArpConfig c = small_config();
   std::unique_ptr<dp::DisplayMemorySet> mem;
   dp::OrientationStream stream = dp::OrientationStream::constant(dp::Quat{});
-  cycle::TimedInputs in;
-  std::unique_ptr<cycle::PipelineKernels> k;
+  stage::TimedInputs in;
   void build() {
     mem = std::make_unique<dp::DisplayMemorySet>(c.memory, c.timing.eyes);
     fill_memories(*mem);
@@ -46,8 +46,8 @@ struct World {
     in.memories = mem.get();
     in.orientation = &stream;
     in.frames = 3;
-    k = std::make_unique<cycle::PipelineKernels>(in);
   }
+  stage::StageContext context() const { return {in, dp::PipelineSchedule(c)}; }
 };
 
 template <class In, class Out>
@@ -63,18 +63,16 @@ struct Result {
 // (waveforms/bench_<test>.gtkw is its view).
 class BenchWaveform {
  public:
-  BenchWaveform(const scm::ClockGenerator& gen, const sc_signal<bool>& clk, const int& in_occupancy,
-                const int& out_occupancy, cycle::PipelineKernels& k) {
+  BenchWaveform(scm::ClockGenerator& gen, const int& in_occupancy, const int& out_occupancy) {
     const char* dir = std::getenv("ARPSIM_BENCH_VCD");
     if (!dir) return;
     const std::string name = std::string(dir) + "/bench_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
     tf_ = sc_create_vcd_trace_file(name.c_str());
     tf_->set_time_unit(1, SC_PS);
-    sc_trace(tf_, clk, "bench.clk");
-    sc_trace(tf_, gen.cycle_ref(), "bench.cycle");
+    gen.trace(tf_, "bench.clk");
+    gen.trace_cycle(tf_, "bench.cycle");
     sc_trace(tf_, in_occupancy, "stimulus_fifo.occupancy");
     sc_trace(tf_, out_occupancy, "response_fifo.occupancy");
-    k.set_tracing(true);
   }
   ~BenchWaveform() {
     if (tf_) sc_close_vcd_trace_file(tf_);
@@ -87,37 +85,38 @@ class BenchWaveform {
   sc_trace_file* tf_ = nullptr;
 };
 
-// Runs a stage module between driver and monitor for `cycles` pixel clocks.
-template <class In, class Out, class Module>
-Result<In, Out> run_bench(World& w, std::vector<In> stimulus, int64_t cycles,
-                          const std::function<std::unique_ptr<Module>(const int64_t&, const int64_t&)>& make,
-                          const std::function<void(Module&, scm::FifoChannel<In>&, scm::FifoChannel<Out>&)>& bind,
-                          int64_t phase_two_cycle = 0) {
+// Runs a stage module, elaborated alone, between a driver and a monitor for `cycles` pixel clocks.
+template <class Module>
+Result<typename Module::Input, typename Module::Output> run_bench(World& w, std::vector<typename Module::Input> stimulus,
+                                                                  int64_t cycles, std::unique_ptr<Module>* keep = nullptr,
+                                                                  int64_t phase_two_cycle = 0) {
+  using In = typename Module::Input;
+  using Out = typename Module::Output;
   sc_set_time_resolution(1, SC_PS);
   sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
-  sc_signal<bool> clk("clk"), host_clk("host_clk");
   scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, cycles);
-  gen.clk(clk);
   const int64_t host_cycles = dp::clock_cycle_at_or_after(dp::clock_cycle_to_ps(cycles, w.c.timing.pixel_clock_hz),
                                                           w.c.timed.host_clock_hz);
   scm::ClockGenerator host_gen("host_clock", w.c.timed.host_clock_hz, 0, 0, host_cycles);
-  host_gen.clk(host_clk);
-  cycle::PipelineKernels& k = *w.k;
-  host_gen.gate([&k](int64_t n) { return k.host.next_active_cycle(n); });
   scm::FifoChannel<In> in_fifo("stimulus_fifo", w.c.timed.fifo_depth);
   scm::FifoChannel<Out> out_fifo("response_fifo", w.c.timed.fifo_depth);
-  StimulusDriver<In> drv("driver", gen.cycle_ref(), stimulus, 11);
+  StimulusDriver<In> drv("driver", stimulus, 11);
   drv.phase_two_cycle = phase_two_cycle;
-  drv.clk(clk);
+  drv.clk(gen);
   drv.stimulus_out(in_fifo);
-  std::unique_ptr<Module> dut = make(gen.cycle_ref(), host_gen.cycle_ref());
-  dut->clk(clk);
-  if constexpr (std::is_same_v<Module, scm::DisplayMemoryBanks>) dut->host_clk(host_clk);
-  bind(*dut, in_fifo, out_fifo);
-  ResponseMonitor<Out> mon("monitor", gen.cycle_ref(), drv.phase_one(), 23);
-  mon.clk(clk);
+  auto dut = std::make_unique<Module>("dut", w.context());
+  dut->clk(gen);
+  if constexpr (std::is_same_v<Module, scm::DisplayMemoryBanks>) {
+    dut->host_clk(host_gen);
+    const Module& d = *dut;
+    host_gen.gate([&d](int64_t n) { return d.host_port().next_active_cycle(n); });
+  }
+  dut->input(in_fifo);
+  dut->output(out_fifo);
+  ResponseMonitor<Out> mon("monitor", drv.phase_one(), 23);
+  mon.clk(gen);
   mon.response_in(out_fifo);
-  BenchWaveform wave(gen, clk, in_fifo.core().occupancy_ref(), out_fifo.core().occupancy_ref(), *w.k);
+  BenchWaveform wave(gen, in_fifo.core().occupancy_ref(), out_fifo.core().occupancy_ref());
   if (wave.file()) dut->trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(dp::clock_cycle_to_ps(cycles + 1, w.c.timing.pixel_clock_hz))));
   Result<In, Out> r;
@@ -126,10 +125,11 @@ Result<In, Out> run_bench(World& w, std::vector<In> stimulus, int64_t cycles,
   r.write_cycle = drv.write_cycle;
   r.read_cycle = mon.read_cycle;
   r.phase_one = drv.phase_one();
+  if (keep) *keep = std::move(dut);
   return r;
 }
 
-int64_t slot_cycle_of(const cycle::PixelSlot& s) { return s.slot_cycle; }
+int64_t slot_cycle_of(const stage::PixelSlot& s) { return s.slot_cycle; }
 template <class T>
 int64_t slot_cycle_of(const T& t) {
   return t.slot.slot_cycle;
@@ -150,8 +150,8 @@ void check_flow(const Result<In, Out>& r, int latency) {
   }
 }
 
-cycle::PixelSlot slot_of(int64_t i, int x, int y) {
-  cycle::PixelSlot s;
+stage::PixelSlot slot_of(int64_t i, int x, int y) {
+  stage::PixelSlot s;
   s.frame = 0;
   s.slot_cycle = 1000 + i;  // distinct, increasing: the order check
   s.x = x;
@@ -178,19 +178,14 @@ TEST(ModuleBench, LensVectorTable) {
   World w;
   w.build();
   std::mt19937 rng(1);
-  std::vector<cycle::PixelSlot> stim;
+  std::vector<stage::PixelSlot> stim;
   const int W = w.c.timing.h_active, H = w.c.timing.v_active;
   for (auto [x, y] : {std::pair{0, 0}, {W - 1, 0}, {0, H - 1}, {W - 1, H - 1}, {W / 2, H / 2}})
     stim.push_back(slot_of(static_cast<int64_t>(stim.size()), x, y));
   while (stim.size() < 400)
     stim.push_back(slot_of(static_cast<int64_t>(stim.size()), std::uniform_int_distribution<int>(0, W - 1)(rng),
                            std::uniform_int_distribution<int>(0, H - 1)(rng)));
-  auto r = run_bench<cycle::PixelSlot, cycle::LensToken, scm::LensVectorTable>(
-      w, stim, 2000, [&](const int64_t& c, const int64_t&) { return std::make_unique<scm::LensVectorTable>("dut", *w.k, c); },
-      [](scm::LensVectorTable& m, auto& i, auto& o) {
-        m.pixel_requests_in(i);
-        m.view_vectors_out(o);
-      });
+  auto r = run_bench<scm::LensVectorTable>(w, stim, 2000);
   check_flow(r, lat(w, dp::Stage::Lens));
   const dp::LensVectorTable table(w.c.lens, w.c.timing, w.c.widths.vec_frac);
   const double lsb = std::ldexp(1.0, -w.c.widths.vec_frac);
@@ -218,24 +213,19 @@ TEST(ModuleBench, OrientationMatrixUnit) {
     samples.push_back({dp::clock_cycle_to_ps(37 * i, w.c.timing.pixel_clock_hz), dp::Quat{n(rng), n(rng), n(rng), n(rng)}});
   w.stream = dp::OrientationStream(samples, "random orientations");
   w.build();
-  std::vector<cycle::LensToken> stim;
+  std::vector<stage::LensToken> stim;
   const int F = w.c.widths.vec_frac;
   const int32_t one = 1 << F;
   const dp::Vec3q axes[] = {{one, 0, 0}, {-one, 0, 0}, {0, one, 0}, {0, -one, 0}, {0, 0, one}, {0, 0, -one}};
   for (int i = 0; i < 600; ++i) {
-    cycle::LensToken t;
+    stage::LensToken t;
     t.slot = slot_of(i, 0, 0);
     t.slot.latch = i == 0 || std::bernoulli_distribution(0.2)(rng);
     t.view[0] = i < 6 ? axes[i] : random_vector(rng, F);
     t.view[1] = random_vector(rng, F);
     stim.push_back(t);
   }
-  auto r = run_bench<cycle::LensToken, cycle::RotatedToken, scm::OrientationMatrixUnit>(
-      w, stim, 2800, [&](const int64_t& c, const int64_t&) { return std::make_unique<scm::OrientationMatrixUnit>("dut", *w.k, c); },
-      [](scm::OrientationMatrixUnit& m, auto& i, auto& o) {
-        m.view_vectors_in(i);
-        m.world_vectors_out(o);
-      });
+  auto r = run_bench<scm::OrientationMatrixUnit>(w, stim, 2800);
   check_flow(r, lat(w, dp::Stage::Rotate));
   const dp::RotateParams rp(w.c.widths);
   const dp::VideoTiming t(w.c.timing);
@@ -279,22 +269,16 @@ TEST(ModuleBench, CubeFaceAddressGenerator) {
                                  {0, 0, -one},  {h, h, 0},     {-h, h, 0},     {h, -h, -h},    {-h, -h, -h},
                                  {h, h, h},     {h, h - 1, h}, {h - 1, h, h},  {0, h, h},      {0, -h, h},
                                  {2 * one - 1, 0, 0}, {-2 * one + 1, 2 * one - 1, 2 * one - 1}, {1, 0, 0}, {0, 0, 1}};
-  std::vector<cycle::RotatedToken> stim;
+  std::vector<stage::RotatedToken> stim;
   for (int i = 0; i < 700; ++i) {
-    cycle::RotatedToken t;
+    stage::RotatedToken t;
     t.slot = slot_of(i, 0, 0);
     t.sample = 0;
     t.world[0] = i < static_cast<int>(dirs.size()) ? dirs[static_cast<size_t>(i)] : random_vector(rng, F);
     t.world[1] = random_vector(rng, F);
     stim.push_back(t);
   }
-  auto r = run_bench<cycle::RotatedToken, cycle::AddressToken, scm::CubeFaceAddressGenerator>(
-      w, stim, 3000,
-      [&](const int64_t& c, const int64_t&) { return std::make_unique<scm::CubeFaceAddressGenerator>("dut", *w.k, c); },
-      [](scm::CubeFaceAddressGenerator& m, auto& i, auto& o) {
-        m.world_vectors_in(i);
-        m.cube_addresses_out(o);
-      });
+  auto r = run_bench<scm::CubeFaceAddressGenerator>(w, stim, 3000);
   check_flow(r, lat(w, dp::Stage::Address));
   const dp::AddressGeneratorParams ap(w.c.widths, w.c.memory.face_size);
   const double tf = std::ldexp(1.0, -w.c.widths.texel_frac);
@@ -325,27 +309,26 @@ TEST(ModuleBench, DisplayMemoryBanks) {
   w.build();
   // A host job rewrites memory 1 of eye 1 during the run; it swaps at the first vertical blank.
   const dp::VideoTiming t(w.c.timing);
-  cycle::HostWriteJob job;
+  stage::HostWriteJob job;
   job.start_ps = 0;
   job.eye = 1;
   job.memory = 1;
   for (int y = 0; y < 64; y += 2)
     for (int x = 0; x < 64; x += 3) job.texels.push_back({5, static_cast<uint16_t>(x), static_cast<uint16_t>(y), 0x00ff00u, 5});
   w.in.host_jobs = {job};
-  w.k = std::make_unique<cycle::PipelineKernels>(w.in);
   const int64_t swap = dp::PipelineSchedule(w.c).swap_cycle(0);
   // Reference memories: before and after the swap.
   dp::DisplayMemorySet before(w.c.memory, 2), after(w.c.memory, 2);
   fill_memories(before);
   fill_memories(after);
-  cycle::PlannedHostWrites plan(w.c, w.in.host_jobs);
+  stage::PlannedHostWrites plan(w.c, w.in.host_jobs);
   plan.at_vertical_blank(t.cycles_to_ps(swap), after);
 
   std::mt19937 rng(4);
   const int64_t S = w.c.memory.face_size << w.c.widths.texel_frac;
-  std::vector<cycle::AddressToken> stim;
+  std::vector<stage::AddressToken> stim;
   for (int i = 0; i < 800; ++i) {
-    cycle::AddressToken a;
+    stage::AddressToken a;
     a.slot = slot_of(i, 0, 0);
     a.sample = 0;
     for (int e = 0; e < 2; ++e) {
@@ -362,21 +345,16 @@ TEST(ModuleBench, DisplayMemoryBanks) {
     stim.push_back(a);
   }
   // The second half is driven only after the swap.
-  auto r = run_bench<cycle::AddressToken, cycle::FetchToken, scm::DisplayMemoryBanks>(
-      w, stim, swap + 3000,
-      [&](const int64_t& c, const int64_t& hc) { return std::make_unique<scm::DisplayMemoryBanks>("dut", *w.k, c, hc); },
-      [](scm::DisplayMemoryBanks& m, auto& i, auto& o) {
-        m.cube_addresses_in(i);
-        m.texel_words_out(o);
-      },
-      swap + 10);
+  std::unique_ptr<scm::DisplayMemoryBanks> dut;
+  auto r = run_bench<scm::DisplayMemoryBanks>(w, stim, swap + 3000, &dut, swap + 10);
   check_flow(r, lat(w, dp::Stage::Fetch));
   // The host port took the job when the plan says and the banks swapped once, at the vertical blank.
-  ASSERT_EQ(w.k->host.timings().size(), 1u);
-  EXPECT_EQ(w.k->host.timings()[0].start_ps, plan.timings()[0].start_ps);
-  EXPECT_EQ(w.k->host.timings()[0].commit_ps, plan.timings()[0].commit_ps);
-  EXPECT_EQ(w.k->swapper.swaps(), 1);
-  EXPECT_EQ(w.k->swapper.front_select, 1u << (1 * w.c.memory.count + 1));
+  const auto& host = dut->host_port();
+  ASSERT_EQ(host.timings().size(), 1u);
+  EXPECT_EQ(host.timings()[0].start_ps, plan.timings()[0].start_ps);
+  EXPECT_EQ(host.timings()[0].commit_ps, plan.timings()[0].commit_ps);
+  EXPECT_EQ(dut->stage().swapper().swaps(), 1);
+  EXPECT_EQ(dut->stage().swapper().front_select, 1u << (1 * w.c.memory.count + 1));
   int changed = 0;
   for (size_t i = 0; i < r.got.size(); ++i) {
     const dp::DisplayMemorySet& ref = i < r.phase_one ? before : after;
@@ -404,9 +382,9 @@ TEST(ModuleBench, CompositionUnit) {
   const dp::MemoryFormat f(w.c.memory);
   const uint32_t empty = f.empty_depth();
   const int N = w.c.memory.count;
-  std::vector<cycle::FetchToken> stim;
+  std::vector<stage::FetchToken> stim;
   for (int i = 0; i < 600; ++i) {
-    cycle::FetchToken t{};
+    stage::FetchToken t{};
     t.slot = slot_of(i, 0, 0);
     t.memories = static_cast<uint8_t>(N);
     t.taps = 4;
@@ -424,12 +402,7 @@ TEST(ModuleBench, CompositionUnit) {
     }
     stim.push_back(t);
   }
-  auto r = run_bench<cycle::FetchToken, cycle::ComposedToken, scm::CompositionUnit>(
-      w, stim, 2600, [&](const int64_t& c, const int64_t&) { return std::make_unique<scm::CompositionUnit>("dut", *w.k, c); },
-      [](scm::CompositionUnit& m, auto& i, auto& o) {
-        m.texel_words_in(i);
-        m.composed_taps_out(o);
-      });
+  auto r = run_bench<scm::CompositionUnit>(w, stim, 2600);
   check_flow(r, lat(w, dp::Stage::Compose));
   const dp::CompositionParams cp(f, w.c.memory.background);
   for (size_t i = 0; i < r.got.size(); ++i)
@@ -452,9 +425,9 @@ TEST(ModuleBench, AntiAliasingFilter) {
   std::mt19937 rng(6);
   const int T = w.c.widths.texel_frac;
   const uint32_t W = 1u << T;
-  std::vector<cycle::ComposedToken> stim;
+  std::vector<stage::ComposedToken> stim;
   for (int i = 0; i < 600; ++i) {
-    cycle::ComposedToken t{};
+    stage::ComposedToken t{};
     t.slot = slot_of(i, 0, 0);
     for (int e = 0; e < 2; ++e) {
       // Directed: zero and maximal weights, saturated and black taps.
@@ -465,13 +438,7 @@ TEST(ModuleBench, AntiAliasingFilter) {
     }
     stim.push_back(t);
   }
-  auto r = run_bench<cycle::ComposedToken, cycle::ColorToken, scm::AntiAliasingFilter>(
-      w, stim, 2600,
-      [&](const int64_t& c, const int64_t&) { return std::make_unique<scm::AntiAliasingFilter>("dut", *w.k, c); },
-      [](scm::AntiAliasingFilter& m, auto& i, auto& o) {
-        m.composed_taps_in(i);
-        m.pixel_colors_out(o);
-      });
+  auto r = run_bench<scm::AntiAliasingFilter>(w, stim, 2600);
   check_flow(r, lat(w, dp::Stage::Filter));
   const dp::ChannelLayout L{dp::MemoryFormat(w.c.memory)};
   for (size_t i = 0; i < r.got.size(); ++i)
@@ -497,23 +464,20 @@ TEST(ModuleBench, VideoTimingGenerator) {
   w.build();
   w.in.first_frame = 1;
   w.in.frames = 1;
-  w.k = std::make_unique<cycle::PipelineKernels>(w.in);
   sc_set_time_resolution(1, SC_PS);
   const dp::VideoTiming t(w.c.timing);
   const dp::PipelineSchedule sched(w.c);
   const int64_t end = t.frame_start_cycle(2) + 10;
-  sc_signal<bool> clk("clk");
   scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, end);
-  gen.clk(clk);
-  scm::FifoChannel<cycle::PixelSlot> out_fifo("requests", w.c.timed.fifo_depth);
-  scm::VideoTimingGenerator dut("dut", *w.k, gen.cycle_ref());
-  dut.clk(clk);
+  scm::FifoChannel<stage::PixelSlot> out_fifo("requests", w.c.timed.fifo_depth);
+  scm::VideoTimingGenerator dut("dut", w.context());
+  dut.clk(gen);
   dut.pixel_requests_out(out_fifo);
-  ResponseMonitor<cycle::PixelSlot> mon("monitor", gen.cycle_ref(), SIZE_MAX, 7);
-  mon.clk(clk);
+  ResponseMonitor<stage::PixelSlot> mon("monitor", SIZE_MAX, 7);
+  mon.clk(gen);
   mon.response_in(out_fifo);
   const int none = 0;
-  BenchWaveform wave(gen, clk, none, out_fifo.core().occupancy_ref(), *w.k);
+  BenchWaveform wave(gen, none, out_fifo.core().occupancy_ref());
   if (wave.file()) dut.trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(t.cycles_to_ps(end + 1))));
   const int W = w.c.timing.h_active, H = w.c.timing.v_active;
@@ -529,7 +493,7 @@ TEST(ModuleBench, VideoTimingGenerator) {
     ASSERT_EQ(s.latch, x == 0);
     ASSERT_EQ(mon.read_cycle[i], s.slot_cycle - sched.issue_lead() + 1);  // issued, visible one clock later
   }
-  EXPECT_EQ(w.k->scan.issue_stalls(), 0);
+  EXPECT_EQ(dut.stage().issue_stalls(), 0);
 }
 
 // Scan-out: each slot shows its pixel, converted to the panel's depth, at its
@@ -538,18 +502,17 @@ TEST(ModuleBench, VideoTimingGenerator) {
 TEST(ModuleBench, HmdScanOut) {
   World w;
   w.c.pipeline.display_bits = 6;
-  std::vector<std::pair<HmdFrame, cycle::FrameReport>> frames;
-  w.in.sink = [&frames](const HmdFrame& f, const cycle::FrameReport& r) { frames.push_back({f, r}); };
+  std::vector<std::pair<HmdFrame, stage::FrameReport>> frames;
+  w.in.sink = [&frames](const HmdFrame& f, const stage::FrameReport& r) { frames.push_back({f, r}); };
   w.build();
   w.in.first_frame = 1;  // frame 0 starts at clock 0, before the bench's first clock
   w.in.frames = 1;
-  w.k = std::make_unique<cycle::PipelineKernels>(w.in);
   sc_set_time_resolution(1, SC_PS);
   const dp::VideoTiming t(w.c.timing);
   const dp::PipelineSchedule sched(w.c);
   const int W = w.c.timing.h_active, H = w.c.timing.v_active;
   std::mt19937 rng(8);
-  std::vector<cycle::ColorToken> tokens;
+  std::vector<stage::ColorToken> tokens;
   std::vector<int64_t> due;  // when the driver writes each token
   std::set<std::pair<int, int>> missing, late;
   for (int y = 0; y < H; ++y)
@@ -559,7 +522,7 @@ TEST(ModuleBench, HmdScanOut) {
         missing.insert({x, y});  // never sent
         continue;
       }
-      cycle::ColorToken c{};
+      stage::ColorToken c{};
       c.slot = slot_of(0, x, y);
       c.slot.slot_cycle = slot;
       c.color[0] = std::uniform_int_distribution<uint32_t>(0, 0xffffff)(rng);
@@ -570,43 +533,41 @@ TEST(ModuleBench, HmdScanOut) {
       due.push_back(is_late ? slot : slot - 3);  // late: written at its own slot, after scan-out needed it
     }
   const int64_t end = sched.swap_cycle(1) + 1;
-  sc_signal<bool> clk("clk");
   scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, end);
-  gen.clk(clk);
-  scm::FifoChannel<cycle::ColorToken> in_fifo("colors", w.c.timed.fifo_depth);
-  scm::HmdScanOut dut("dut", *w.k, gen.cycle_ref());
-  dut.clk(clk);
+  scm::FifoChannel<stage::ColorToken> in_fifo("colors", w.c.timed.fifo_depth);
+  scm::HmdScanOut dut("dut", w.context());
+  dut.clk(gen);
   dut.pixel_colors_in(in_fifo);
   // A driver writing each token at its due clock.
   struct TimedDriver : sc_module {
-    sc_in<bool> clk;
+    sc_port<scm::ClockIf> clk;
     SC_HAS_PROCESS(TimedDriver);
-    TimedDriver(sc_module_name n, const int64_t& c, scm::FifoChannel<cycle::ColorToken>& f,
-                const std::vector<cycle::ColorToken>& tk, const std::vector<int64_t>& d)
-        : sc_module(n), cycle(c), fifo(f), tokens(tk), due(d) {
+    TimedDriver(sc_module_name n, scm::FifoChannel<stage::ColorToken>& f, const std::vector<stage::ColorToken>& tk,
+                const std::vector<int64_t>& d)
+        : sc_module(n), fifo(f), tokens(tk), due(d) {
       SC_METHOD(tick);
-      sensitive << clk.pos();
+      sensitive << clk;
       dont_initialize();
     }
     void tick() {
+      const int64_t cycle = clk->cycle();
       if (next < tokens.size() && due[next] <= cycle && fifo.can_write()) fifo.write(tokens[next++], cycle);
     }
-    const int64_t& cycle;
-    scm::FifoChannel<cycle::ColorToken>& fifo;
-    const std::vector<cycle::ColorToken>& tokens;
+    scm::FifoChannel<stage::ColorToken>& fifo;
+    const std::vector<stage::ColorToken>& tokens;
     const std::vector<int64_t>& due;
     size_t next = 0;
-  } drv("driver", gen.cycle_ref(), in_fifo, tokens, due);
-  drv.clk(clk);
+  } drv("driver", in_fifo, tokens, due);
+  drv.clk(gen);
   const int none = 0;
-  BenchWaveform wave(gen, clk, in_fifo.core().occupancy_ref(), none, *w.k);
+  BenchWaveform wave(gen, in_fifo.core().occupancy_ref(), none);
   if (wave.file()) dut.trace(wave.file());
   sc_start(sc_time::from_value(static_cast<sc_time::value_type>(t.cycles_to_ps(end + 1))));
   ASSERT_EQ(frames.size(), 1u);
   const HmdFrame& f = frames[0].first;
-  const cycle::FrameReport& rep = frames[0].second;
+  const stage::FrameReport& rep = frames[0].second;
   const dp::HmdScanOut scan(dp::MemoryFormat(w.c.memory), w.c.pipeline);
-  const uint32_t bad = cycle::underflow_color(6);
+  const uint32_t bad = stage::underflow_color(6);
   size_t k = 0;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {

@@ -20,14 +20,14 @@ namespace arp::bench {
 template <class T>
 class StimulusDriver : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk;
+  sc_core::sc_port<scm::ClockIf> clk;
   sc_core::sc_port<scm::FifoWriteIf<T>> stimulus_out;
 
   SC_HAS_PROCESS(StimulusDriver);
-  StimulusDriver(sc_core::sc_module_name n, const int64_t& cycle, std::vector<T> items, uint32_t seed)
-      : sc_module(n), clk("clk"), stimulus_out("stimulus_out"), items_(std::move(items)), cycle_(cycle), rng_(seed) {
+  StimulusDriver(sc_core::sc_module_name n, std::vector<T> items, uint32_t seed)
+      : sc_module(n), clk("clk"), stimulus_out("stimulus_out"), items_(std::move(items)), rng_(seed) {
     SC_METHOD(on_clock);
-    sensitive << clk.pos();
+    sensitive << clk;
     dont_initialize();
   }
   std::vector<int64_t> write_cycle;  // per item
@@ -37,15 +37,15 @@ class StimulusDriver : public sc_core::sc_module {
 
  private:
   void on_clock() {
-    if (cycle_ < start_cycle || next_ >= items_.size()) return;
-    if (next_ >= phase_one() && cycle_ < phase_two_cycle) return;
+    const int64_t cycle = clk->cycle();
+    if (cycle < start_cycle || next_ >= items_.size()) return;
+    if (next_ >= phase_one() && cycle < phase_two_cycle) return;
     if (next_ >= phase_one() && std::bernoulli_distribution(0.3)(rng_)) return;  // a gap
     if (!stimulus_out->can_write()) return;
-    stimulus_out->write(items_[next_++], cycle_);
-    write_cycle.push_back(cycle_);
+    stimulus_out->write(items_[next_++], cycle);
+    write_cycle.push_back(cycle);
   }
   std::vector<T> items_;
-  const int64_t& cycle_;
   std::mt19937 rng_;
   size_t next_ = 0;
 };
@@ -53,14 +53,14 @@ class StimulusDriver : public sc_core::sc_module {
 template <class T>
 class ResponseMonitor : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk;
+  sc_core::sc_port<scm::ClockIf> clk;
   sc_core::sc_port<scm::FifoReadIf<T>> response_in;
 
   SC_HAS_PROCESS(ResponseMonitor);
-  ResponseMonitor(sc_core::sc_module_name n, const int64_t& cycle, size_t phase_one, uint32_t seed)
-      : sc_module(n), clk("clk"), response_in("response_in"), cycle_(cycle), phase_one_(phase_one), rng_(seed) {
+  ResponseMonitor(sc_core::sc_module_name n, size_t phase_one, uint32_t seed)
+      : sc_module(n), clk("clk"), response_in("response_in"), phase_one_(phase_one), rng_(seed) {
     SC_METHOD(on_clock);
-    sensitive << clk.pos();
+    sensitive << clk;
     dont_initialize();
   }
   std::vector<T> got;
@@ -71,10 +71,9 @@ class ResponseMonitor : public sc_core::sc_module {
     if (!response_in->can_read()) return;
     if (got.size() >= phase_one_ && std::bernoulli_distribution(0.3)(rng_)) return;  // backpressure
     got.push_back(response_in->front());
-    read_cycle.push_back(cycle_);
-    response_in->read(cycle_);
+    read_cycle.push_back(clk->cycle());
+    response_in->read(clk->cycle());
   }
-  const int64_t& cycle_;
   size_t phase_one_;
   std::mt19937 rng_;
 };

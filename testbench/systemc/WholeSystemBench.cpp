@@ -6,7 +6,7 @@
 
 #include "BenchSupport.hpp"
 #include "common/InputError.hpp"
-#include "rtl_model/cycle/HostWritePort.hpp"
+#include "rtl_model/stages/HostWritePort.hpp"
 
 using namespace arp;
 using namespace arp::bench;
@@ -78,7 +78,7 @@ void expect_same_as_functional(scm::Fidelity level, const dp::ArpConfig& c, int 
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const dp::OrientationStream o = fast_turn(c, 1, frames);
-  cycle::TimedInputs in;
+  stage::TimedInputs in;
   in.config = c;
   in.orientation = &o;
   in.first_frame = 1;
@@ -143,26 +143,26 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(0, 0, 0));
-  cycle::TimedInputs in;
+  stage::TimedInputs in;
   in.config = c;
   in.orientation = &still;
   in.first_frame = 0;
   in.frames = 4;
   // Job 0: memory 1 of eye 0, a near red square over the -Z face, started mid-frame 0.
   // Job 1: the same memory again (waits for job 0's swap), cleared: the square goes away.
-  cycle::HostWriteJob j0;
+  stage::HostWriteJob j0;
   j0.start_ps = t.cycles_to_ps(t.frame_start_cycle(0) + 5000);
   j0.eye = 0;
   j0.memory = 1;
   for (int y = 16; y < 48; ++y)
     for (int x = 16; x < 48; ++x) j0.texels.push_back({5, static_cast<uint16_t>(x), static_cast<uint16_t>(y), mem_ref.format().pack_rgb8(255, 0, 0), 10});
-  cycle::HostWriteJob j1 = j0;
+  stage::HostWriteJob j1 = j0;
   j1.texels.clear();
   j1.clear_first = true;
   j1.start_ps = j0.start_ps + 1;
   in.host_jobs = {j0, j1};
 
-  const auto plan = cycle::plan_host_jobs(in.host_jobs, c);
+  const auto plan = stage::plan_host_jobs(in.host_jobs, c);
   // 1024 texels at 2 per 3 MHz clock: 512 clocks, 170.7 us -- inside frame 0's scan.
   EXPECT_EQ(plan[0].swap_frame, 0);
   EXPECT_GT(plan[1].start_ps, plan[0].swap_ps);  // waited for the swap
@@ -208,7 +208,7 @@ TEST_P(Backpressure, StalledStageFillsFifosThenUnderflowsAreCounted) {
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(10, 5, 0));
-  cycle::TimedInputs in;
+  stage::TimedInputs in;
   in.config = c;
   in.orientation = &still;
   in.first_frame = 0;
@@ -232,13 +232,13 @@ TEST_P(Backpressure, StalledStageFillsFifosThenUnderflowsAreCounted) {
   // A 40-clock stall leaves the pipeline 40 pixels behind. Scan-out pops one
   // pixel a clock, so the rest of line 30 misses its slots; in the horizontal
   // blanking the late pixels are dropped and line 31 is on time again.
-  const cycle::FrameReport& r0 = got.at(0).report;
+  const stage::FrameReport& r0 = got.at(0).report;
   EXPECT_GT(r0.underflows, 0);
   EXPECT_EQ(r0.underflows, res.underflows);
   EXPECT_GE(r0.late_discarded, stall_len - c.timed.issue_slack_cycles - 1);
   EXPECT_LE(r0.underflows, c.timing.h_active - 40);
   // The underflowed pixels are exactly the ones that differ, all on line 30 after the stall, in the underflow colour.
-  const uint32_t bad = cycle::underflow_color(c.pipeline.display_bits);
+  const uint32_t bad = stage::underflow_color(c.pipeline.display_bits);
   int64_t differ = 0;
   const HmdFrame& g0 = got.at(0).frame;
   const HmdFrame& w0 = want.at(0).frame;
@@ -270,7 +270,7 @@ TEST(TimedLevels, ImpossibleHardwareIsRefusedBeforeSimulation) {
     }
     dp::DisplayMemorySet mem(c.memory.count <= 16 && c.memory.count >= 1 ? c.memory : dp::MemoryConfig{}, c.timing.eyes);
     const auto o = dp::OrientationStream::constant(dp::Quat{});
-    cycle::TimedInputs in;
+    stage::TimedInputs in;
     in.config = c;
     in.memories = &mem;
     in.orientation = &o;

@@ -8,7 +8,7 @@
 
 #include "rtl_model/functional/HmdFrame.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 struct FrameReport {
   int64_t frame = 0;
@@ -60,4 +60,4 @@ inline uint32_t underflow_color(int display_bits) {
   return (m << (2 * display_bits)) | m;
 }
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

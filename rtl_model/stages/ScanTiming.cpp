@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace arp::cycle {
+namespace arp::stage {
 
 namespace {
 int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
@@ -10,7 +10,6 @@ int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 
 
 ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames)
     : timing_(c.timing),
-      sched_(c),
       tc_(c.timing),
       latch_(c),
       first_(first_frame),
@@ -76,4 +75,4 @@ bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
   return true;
 }
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

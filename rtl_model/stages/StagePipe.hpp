@@ -13,7 +13,7 @@
 
 #include "PixelTokens.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 struct StageStats {
   int latency_cycles = 0;    // configured
@@ -119,4 +119,4 @@ class StagePipe {
   int64_t n_ = 0, sum_ = 0, min_ = std::numeric_limits<int64_t>::max(), max_ = 0, stalled_ = 0, forced_ = 0;
 };
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

@@ -9,7 +9,7 @@
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "rtl_model/datapath/LensVectorTable.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 constexpr int kMaxEyes = 2;
 constexpr int kMaxTaps = 4;  // bilinear; nearest uses tap 0
@@ -97,4 +97,4 @@ inline void probe(const FetchToken& t, std::array<int64_t, 3>& o) {
 inline void probe(const ComposedToken& t, std::array<int64_t, 3>& o) { o = {t.tap_color[0][0], t.tap_color[0][1], t.wx[0]}; }
 inline void probe(const ColorToken& t, std::array<int64_t, 3>& o) { o = {t.color[0], t.slot.x, t.slot.y}; }
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

@@ -5,7 +5,7 @@
 
 #include "common/InputError.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 namespace {
 constexpr int64_t kNever = std::numeric_limits<int64_t>::min();
@@ -143,37 +143,4 @@ void HostWritePort::tick(int64_t host_cycle) {
   }
 }
 
-BufferSwapper::BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const HostWritePort* host)
-    : mem_(mem), host_(host), timing_(c.timing), sched_(c) {}
-
-void BufferSwapper::tick(int64_t cycle) {
-  swap_strobe = false;
-  if (cycle < next_swap_ && cycle >= last_cycle_) {  // clocks only move forward: no swap before next_swap_
-    last_cycle_ = cycle;
-    return;
-  }
-  last_cycle_ = cycle;
-  const int64_t F = timing_.frame_cycles();
-  const int64_t f = floor_div(cycle - sched_.swap_cycle(0), F);
-  next_swap_ = sched_.swap_cycle(f) >= cycle ? sched_.swap_cycle(f) : sched_.swap_cycle(f + 1);
-  if (sched_.swap_cycle(f) != cycle) return;
-  next_swap_ = sched_.swap_cycle(f + 1);
-  swap_strobe = true;
-  if (hook_ && f + 1 < hook_end_) {  // the host model updates the memories in this blank, before the next frame
-    hook_(f + 1, static_cast<double>(timing_.cycles_to_ps(timing_.frame_start_cycle(f + 1))) * 1e-12);
-    ++host_calls_;
-  }
-  const int64_t now = timing_.cycles_to_ps(cycle);
-  for (int e = 0; e < mem_.eyes(); ++e)
-    for (int m = 0; m < mem_.count(); ++m) {
-      dp::DisplayMemoryBank& b = mem_.bank(e, m);
-      // Only what the write port committed, strictly before this blank (a host
-      // model's own commits are its to swap).
-      if (!b.committed() || !host_ || host_->commit_ps(e, m) == kNever || host_->commit_ps(e, m) >= now) continue;
-      b.vblank();
-      ++swaps_;
-      front_select ^= 1u << (e * mem_.count() + m);
-    }
-}
-
-}  // namespace arp::cycle
+}  // namespace arp::stage

@@ -1,23 +1,39 @@
-// The HMD scan-out's logic: at each active slot the pixel for that slot must
-// be at the head of its FIFO, taken timed.scanout_latency cycles early and
-// shown at the slot. A missing pixel is an underflow (counted, and shown in
-// the underflow colour); a pixel arriving after its slot is dropped and
-// counted. Frames are handed to the sink after their last active slot.
+// HMD scan-out: at each active slot the pixel for that slot must be at the
+// head of its FIFO, taken timed.scanout_latency clocks early, converted to
+// the panel's colour depth and shown at the slot (photon time = slot time +
+// pipeline.photon_delay_ps). A missing pixel is an underflow (counted, and
+// shown in the underflow colour); a pixel arriving after its slot is dropped
+// and counted. Frames go to the sink after their last active slot, with the
+// orientation-sample -> photon latency of their pixels. The stage keeps its
+// own scan counters (ScanTiming), its delay line and the frame it assembles.
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "FrameReport.hpp"
-#include "FrameSpeculation.hpp"
 #include "ScanTiming.hpp"
-#include "StageArithmetic.hpp"
+#include "StageContext.hpp"
+#include "rtl_model/datapath/HmdScanOut.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
+
+// Frames computed ahead of the clock (the fast level's speculation): where
+// scan-out takes the colour of a pixel marked on_schedule.
+class PrerenderedFrames {
+ public:
+  virtual ~PrerenderedFrames() = default;
+  virtual const HmdFrame& frame(int64_t f) = 0;
+  virtual void retire_before(int64_t f) = 0;
+};
 
 class ScanOutStage {
  public:
-  ScanOutStage(const StageArithmetic& a, const ScanTiming& scan, const dp::OrientationStream& stream, FrameSink sink);
+  using Input = ColorToken;
+  static constexpr dp::Stage kId = dp::Stage::ScanOut;
+  explicit ScanOutStage(const StageContext& ctx);
 
+  int latency() const { return latency_; }
+  bool idle() const { return true; }  // it holds no pixel between clocks: its delay line is the panel's
   template <class InFifo>
   void tick(int64_t cycle, InFifo& in) {
     // The panel side: the pixel taken latency cycles ago is shown now.
@@ -51,9 +67,11 @@ class ScanOutStage {
   }
 
   int64_t underflows() const { return underflows_total_; }
-  // Fast model: where on-schedule pixels take their colour from.
-  void use_speculation(FrameSpeculation* s) { spec_ = s; }
   int64_t late_discarded() const { return late_total_; }
+  // The fast level: where on-schedule pixels take their colour from.
+  void use_prerendered(PrerenderedFrames* p) { prerendered_ = p; }
+  // Memory colour code -> the panel's.
+  uint32_t to_display(uint32_t color) const { return panel_.to_display(color); }
 
   // Traced: the pixel on the panel this cycle (first eye) and the running underflow count.
   bool display_valid = false;
@@ -73,8 +91,8 @@ class ScanOutStage {
   void underflow(const PixelSlot& s);
   void finish_frame(int64_t frame);
 
-  const StageArithmetic& arith_;
-  const ScanTiming& scan_;
+  ScanTiming scan_;
+  dp::HmdScanOut panel_;
   const dp::OrientationStream& stream_;
   FrameSink sink_;
   int latency_;
@@ -85,8 +103,8 @@ class ScanOutStage {
   int64_t underflows_ = 0, late_ = 0, underflows_total_ = 0, late_total_ = 0;
   uint32_t bad_;
   ScanTiming::Cursor cursor_;
-  FrameSpeculation* spec_ = nullptr;
+  PrerenderedFrames* prerendered_ = nullptr;
   dp::ClockTimeCursor clock_;
 };
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

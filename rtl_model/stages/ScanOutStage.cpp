@@ -1,31 +1,31 @@
 #include "ScanOutStage.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
-ScanOutStage::ScanOutStage(const StageArithmetic& a, const ScanTiming& scan, const dp::OrientationStream& stream,
-                           FrameSink sink)
-    : arith_(a),
-      scan_(scan),
-      stream_(stream),
-      sink_(std::move(sink)),
-      latency_(a.config().timed.stage[static_cast<size_t>(dp::Stage::ScanOut)].latency_cycles),
-      photon_delay_(a.config().pipeline.photon_delay_ps),
+ScanOutStage::ScanOutStage(const StageContext& ctx)
+    : scan_(ctx.config(), ctx.in.first_frame, ctx.in.frames),
+      panel_(dp::MemoryFormat(ctx.config().memory), ctx.config().pipeline),
+      stream_(*ctx.in.orientation),
+      sink_(ctx.in.sink),
+      latency_(ctx.config().timed.stage[static_cast<size_t>(dp::Stage::ScanOut)].latency_cycles),
+      photon_delay_(ctx.config().pipeline.photon_delay_ps),
       delay_(static_cast<size_t>(latency_)),
-      bad_(underflow_color(a.config().pipeline.display_bits)),
-      clock_(a.config().timing.pixel_clock_hz) {
-  frame_.resize(a.lens_table().width(), a.lens_table().height(), a.lens_table().eyes(), true);
-  frame_.display_bits = a.config().pipeline.display_bits;
-  frame_.frame_index = scan.first_frame();
+      bad_(underflow_color(ctx.config().pipeline.display_bits)),
+      clock_(ctx.config().timing.pixel_clock_hz) {
+  const auto& tc = ctx.config().timing;
+  frame_.resize(tc.h_active, tc.v_active, tc.eyes, true);
+  frame_.display_bits = ctx.config().pipeline.display_bits;
+  frame_.frame_index = scan_.first_frame();
 }
 
 void ScanOutStage::show(const ColorToken& t, int64_t slot) {
   const int64_t photon = clock_.ps(slot) + photon_delay_;
   const int64_t sample_ps = stream_[t.sample].time_ps;
   lat_.add(photon, sample_ps, t.slot.eye_count);
-  const HmdFrame* spec = t.slot.on_schedule ? &spec_->frame(t.slot.frame, -1) : nullptr;
+  const HmdFrame* spec = t.slot.on_schedule ? &prerendered_->frame(t.slot.frame) : nullptr;
   for (int k = 0; k < t.slot.eye_count; ++k) {
     const size_t i = frame_.index(t.slot.eye_first + k, t.slot.x, t.slot.y);
-    frame_.pixels[i] = spec ? spec->pixels[i] : arith_.display(t.color[k]);
+    frame_.pixels[i] = spec ? spec->pixels[i] : panel_.to_display(t.color[k]);
     frame_.photon_ps[i] = photon;
   }
   Shown& d = delay_[ring(slot)];
@@ -60,9 +60,9 @@ void ScanOutStage::finish_frame(int64_t frame) {
   lat_.summarise(r);
   frame_.frame_index = frame;
   if (sink_) sink_(frame_, r);
-  if (spec_) spec_->retire_before(frame + 1);
+  if (prerendered_) prerendered_->retire_before(frame + 1);
   lat_.reset();
   underflows_ = late_ = 0;
 }
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

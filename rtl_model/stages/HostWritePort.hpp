@@ -16,7 +16,7 @@
 #include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 struct TexelWrite {
   uint8_t face;
@@ -76,7 +76,8 @@ class HostWritePort {
   // anything (INT64_MAX: never again): the port's clock is gated off while idle.
   int64_t next_active_cycle(int64_t host_cycle) const;
   const std::vector<HostJobTiming>& timings() const { return done_; }
-  // When bank (eye, memory) last committed (INT64_MIN: never).
+  static constexpr int64_t kNever = std::numeric_limits<int64_t>::min();
+  // When bank (eye, memory) last committed (kNever: never).
   int64_t commit_ps(int eye, int memory) const { return commit_ps_[static_cast<size_t>(eye * count_ + memory)]; }
 
   // Traced.
@@ -97,35 +98,4 @@ class HostWritePort {
   std::vector<HostJobTiming> done_;
 };
 
-// The pipeline side of the double buffers: at a vertical blank every bank
-// whose commit came strictly before it swaps.
-class BufferSwapper {
- public:
-  BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const HostWritePort* host);
-  // Call every pixel clock before the memories are read; swaps at swap cycles.
-  void tick(int64_t cycle);
-  int64_t swaps() const { return swaps_; }
-  // Changes to the front buffers so far: swaps and host-model calls (FrameSpeculation's check).
-  int64_t generation() const { return swaps_ + host_calls_; }
-  // A host model acting at each vertical blank before frames up to `end_frame`
-  // (exclusive): called with the next frame and its start in seconds.
-  void set_host_model(std::function<void(int64_t, double)> hook, int64_t end_frame) {
-    hook_ = std::move(hook);
-    hook_end_ = end_frame;
-  }
-  // Traced: which buffer of each bank is in front (bit per bank), pulsed swap strobe.
-  uint32_t front_select = 0;
-  bool swap_strobe = false;
-
- private:
-  dp::DisplayMemorySet& mem_;
-  const HostWritePort* host_;
-  dp::VideoTiming timing_;
-  dp::PipelineSchedule sched_;
-  int64_t swaps_ = 0, host_calls_ = 0;
-  std::function<void(int64_t, double)> hook_;
-  int64_t hook_end_ = 0;
-  int64_t next_swap_ = std::numeric_limits<int64_t>::min(), last_cycle_ = std::numeric_limits<int64_t>::max();
-};
-
-}  // namespace arp::cycle
+}  // namespace arp::stage

@@ -12,7 +12,7 @@
 
 #include "PixelTokens.hpp"
 
-namespace arp::cycle {
+namespace arp::stage {
 
 struct FifoStats {
   int depth = 0;
@@ -119,4 +119,4 @@ class ClockedFifo {
   int64_t area_ = 0, full_ = 0, empty_ = 0, since_ = 0, start_ = 0;
 };
 
-}  // namespace arp::cycle
+}  // namespace arp::stage

@@ -1,0 +1,91 @@
+#include "MemoryReadStage.hpp"
+
+namespace arp::stage {
+
+namespace {
+int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
+}  // namespace
+
+BufferSwapper::BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const HostWritePort* host,
+                             int64_t hook_end, std::function<void(int64_t, double)> hook)
+    : mem_(&mem), host_(host), timing_(c.timing), sched_(c), hook_(std::move(hook)), hook_end_(hook_end) {}
+
+void BufferSwapper::tick(int64_t cycle) {
+  swap_strobe = false;
+  if (cycle < next_swap_ && cycle >= last_cycle_) {  // clocks only move forward: no swap before next_swap_
+    last_cycle_ = cycle;
+    return;
+  }
+  last_cycle_ = cycle;
+  const int64_t F = timing_.frame_cycles();
+  const int64_t f = floor_div(cycle - sched_.swap_cycle(0), F);
+  next_swap_ = sched_.swap_cycle(f) >= cycle ? sched_.swap_cycle(f) : sched_.swap_cycle(f + 1);
+  if (sched_.swap_cycle(f) != cycle) return;
+  next_swap_ = sched_.swap_cycle(f + 1);
+  swap_strobe = true;
+  if (hook_ && f + 1 < hook_end_) {  // the host model updates the memories in this blank, before the next frame
+    hook_(f + 1, static_cast<double>(timing_.cycles_to_ps(timing_.frame_start_cycle(f + 1))) * 1e-12);
+    ++host_calls_;
+  }
+  const int64_t now = timing_.cycles_to_ps(cycle);
+  for (int e = 0; e < mem_->eyes(); ++e)
+    for (int m = 0; m < mem_->count(); ++m) {
+      dp::DisplayMemoryBank& b = mem_->bank(e, m);
+      // Only what the write port committed, strictly before this blank (a host
+      // model's own commits are its to swap).
+      if (!b.committed() || !host_ || host_->commit_ps(e, m) == HostWritePort::kNever || host_->commit_ps(e, m) >= now) continue;
+      b.vblank();
+      ++swaps_;
+      front_select ^= 1u << (e * mem_->count() + m);
+    }
+}
+
+MemoryReadStage::MemoryReadStage(const StageContext& ctx)
+    : RegisteredStage(ctx, kId),
+      mem_(*ctx.in.memories),
+      swapper_(ctx.config(), mem_, nullptr, ctx.in.first_frame + ctx.in.frames, ctx.in.before_frame),
+      memories_(ctx.config().memory.count),
+      texel_frac_(ctx.config().widths.texel_frac),
+      face_size_(ctx.config().memory.face_size),
+      bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear) {}
+
+// Reads through the banks' published front-buffer tables (the same words
+// DisplayMemoryBank::read returns), each memory's face table looked up once.
+void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
+  using Bank = dp::DisplayMemoryBank;
+  t.slot = in.slot;
+  t.sample = in.sample;
+  t.memories = static_cast<uint8_t>(memories_);
+  t.taps = static_cast<uint8_t>(bilinear_ ? 4 : 1);
+  for (int k = 0; k < in.slot.eye_count; ++k) {
+    const int eye = in.slot.eye_first + k;
+    const dp::CubeAddress& a = in.address[k];
+    int32_t tx[kMaxTaps] = {a.x}, ty[kMaxTaps] = {a.y};
+    t.wx[k] = t.wy[k] = 0;
+    int taps = 1;
+    if (bilinear_) {
+      const dp::BilinearTaps b = dp::bilinear_taps(a.u, a.v, texel_frac_, face_size_);
+      // Tap order x0y0, x1y0, x0y1, x1y1: the filter's c00, c10, c01, c11.
+      tx[0] = b.x0; ty[0] = b.y0;
+      tx[1] = b.x1; ty[1] = b.y0;
+      tx[2] = b.x0; ty[2] = b.y1;
+      tx[3] = b.x1; ty[3] = b.y1;
+      t.wx[k] = b.wx;
+      t.wy[k] = b.wy;
+      taps = 4;
+    }
+    for (int m = 0; m < memories_; ++m) {
+      const Bank& bank = mem_.bank(eye, m);
+      const int32_t* index = bank.front_tile_index(a.face);
+      const uint64_t* pool = bank.front_pool();
+      const int tpr = bank.tiles_per_row();
+      for (int i = 0; i < taps; ++i) {
+        const int32_t tile = index[(ty[i] >> Bank::kTileShift) * tpr + (tx[i] >> Bank::kTileShift)];
+        t.words[k][i][m] = pool[static_cast<size_t>(tile) * Bank::kTileWords +
+                                static_cast<size_t>(Bank::tile_word(tx[i] & (Bank::kTile - 1), ty[i] & (Bank::kTile - 1)))];
+      }
+    }
+  }
+}
+
+}  // namespace arp::stage
