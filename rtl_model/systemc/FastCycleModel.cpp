@@ -14,11 +14,6 @@ template <class Stages, size_t... I>
 Stages make_stages(const stage::StageContext& ctx, std::index_sequence<I...>) {
   return Stages((static_cast<void>(I), ctx)...);
 }
-template <class Fifos, class List, size_t... I>
-Fifos make_fifos(int depth, std::index_sequence<I...>) {
-  return Fifos(std::make_unique<stage::ClockedFifo<typename List::template Module<I>::Output>>(
-      List::template Module<I>::kOutput, depth)...);
-}
 }  // namespace
 
 FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in, bool speculate)
@@ -26,8 +21,7 @@ FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in
       ctx_{in, ArpStages::schedule(in.config)},
       stages_(make_stages<Stages>(ctx_, std::make_index_sequence<kN>{})),
       host_(in.config, in.host_jobs, *in.memories),
-      fifos_(make_fifos<ArpStages::Fifos<stage::ClockedFifo>, ArpStages>(in.config.timed.fifo_depth,
-                                                                         std::make_index_sequence<kN - 1>{})),
+      fifos_(ArpStages::make_fifo_values<stage::ClockedFifo>(in.config.timed.fifo_depth, std::make_index_sequence<kN - 1>{})),
       w_(run_window(timing(), in.config)),
       pixel_hz_(in.config.timing.pixel_clock_hz),
       host_hz_(in.config.timed.host_clock_hz),
@@ -35,7 +29,7 @@ FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in
       cycle_(w_.first_cycle),
       host_cycle_(w_.first_host_cycle) {
   std::get<stage::MemoryReadStage>(stages_).connect(&host_);
-  std::apply([this](auto&... f) { (f->start_statistics(w_.first_cycle), ...); }, fifos_);
+  std::apply([this](auto&... f) { (f.start_statistics(w_.first_cycle), ...); }, fifos_);
   if (speculate) {
     spec_ = std::make_unique<FrameSpeculation>(ctx_, std::get<stage::LensVectorStage>(stages_),
                                                std::get<stage::OrientationStage>(stages_),
@@ -47,23 +41,21 @@ FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in
 }
 
 bool FastCycleModel::idle() const {
-  bool empty = true;
-  std::apply([&](const auto&... f) { ((empty = empty && f->occupancy() == 0), ...); }, fifos_);
-  std::apply([&](const auto&... s) { ((empty = empty && s.idle()), ...); }, stages_);
-  return empty;
+  return std::apply([](const auto&... f) { return ((f.occupancy() == 0) && ...); }, fifos_) &&
+         std::apply([](const auto&... s) { return (s.idle() && ...); }, stages_);
 }
 
 template <size_t... I>
 void FastCycleModel::tick_middle(int64_t c, std::index_sequence<I...>) {
-  (tick_stage(std::get<I + 1>(stages_), c, *std::get<I>(fifos_), *std::get<I + 1>(fifos_)), ...);
+  (tick_stage(std::get<I + 1>(stages_), c, std::get<I>(fifos_), std::get<I + 1>(fifos_)), ...);
 }
 
 // One pixel clock: every stage in data-flow order, then the clock edge of every FIFO.
 void FastCycleModel::evaluate(int64_t c) {
-  std::get<0>(stages_).tick(c, *std::get<0>(fifos_));
+  std::get<0>(stages_).tick(c, std::get<0>(fifos_));
   tick_middle(c, std::make_index_sequence<kN - 2>{});
-  std::get<kN - 1>(stages_).tick(c, *std::get<kN - 2>(fifos_));
-  std::apply([](auto&... f) { (f->update(), ...); }, fifos_);
+  std::get<kN - 1>(stages_).tick(c, std::get<kN - 2>(fifos_));
+  std::apply([](auto&... f) { (f.update(), ...); }, fifos_);
   ++evaluated_;
 }
 
@@ -125,7 +117,7 @@ void FastCycleModel::trace(sc_trace_file* tf) {
   sc_trace(tf, so.display_valid, n + ".hmd_scan_out.display_valid");
   sc_trace(tf, so.display_rgb, n + ".hmd_scan_out.display_rgb");
   sc_trace(tf, so.underflow_count, n + ".hmd_scan_out.underflows");
-  std::apply([&](const auto&... f) { (sc_trace(tf, f->occupancy_ref(), n + "." + f->name() + ".occupancy"), ...); }, fifos_);
+  std::apply([&](const auto&... f) { (sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"), ...); }, fifos_);
 }
 
 void FastCycleModel::stop_tracing() {
@@ -135,7 +127,7 @@ void FastCycleModel::stop_tracing() {
 
 std::vector<std::pair<std::string, stage::FifoStats>> FastCycleModel::fifo_stats(int64_t end_cycle) const {
   std::vector<std::pair<std::string, stage::FifoStats>> s;
-  std::apply([&](const auto&... f) { (s.push_back({f->name(), f->stats(end_cycle)}), ...); }, fifos_);
+  std::apply([&](const auto&... f) { (s.push_back({f.name(), f.stats(end_cycle)}), ...); }, fifos_);
   return s;
 }
 

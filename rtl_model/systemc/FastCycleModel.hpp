@@ -66,7 +66,7 @@ class FastCycleModel : public sc_core::sc_module {
   stage::StageContext ctx_;
   Stages stages_;
   stage::HostWritePort host_;
-  ArpStages::Fifos<stage::ClockedFifo> fifos_;
+  ArpStages::FifoValues<stage::ClockedFifo> fifos_;
   RunWindow w_;
   int64_t pixel_hz_, host_hz_;
   TrackerInterface tracker;

@@ -34,11 +34,20 @@ struct StageList {
     for_each_after_first(c, chain, std::make_index_sequence<kSize - 1>{});
     return dp::PipelineSchedule(c, chain);
   }
-  // The FIFO between module I and I + 1 carries Module<I>::Output.
+  // The FIFO between module I and I + 1 carries Module<I>::Output: channels
+  // (which SystemC does not let move) held by pointer, plain cores by value.
   template <template <class> class Fifo, size_t... I>
   static auto fifo_tuple(std::index_sequence<I...>) -> std::tuple<std::unique_ptr<Fifo<typename Module<I>::Output>>...>;
   template <template <class> class Fifo>
   using Fifos = decltype(fifo_tuple<Fifo>(std::make_index_sequence<kSize - 1>{}));
+  template <template <class> class Fifo, size_t... I>
+  static auto fifo_value_tuple(std::index_sequence<I...>) -> std::tuple<Fifo<typename Module<I>::Output>...>;
+  template <template <class> class Fifo>
+  using FifoValues = decltype(fifo_value_tuple<Fifo>(std::make_index_sequence<kSize - 1>{}));
+  template <template <class> class Fifo, size_t... I>
+  static FifoValues<Fifo> make_fifo_values(int depth, std::index_sequence<I...>) {
+    return FifoValues<Fifo>(Fifo<typename Module<I>::Output>(Module<I>::kOutput, depth)...);
+  }
 
  private:
   template <size_t... I>
