@@ -1,5 +1,7 @@
 #include "AtomicFile.hpp"
 
+#include <fstream>
+
 #include <unistd.h>
 
 #include "InputError.hpp"
@@ -28,6 +30,18 @@ void commit_temp_file(const fs::path& tmp, const std::string& target) {
 void discard_temp_file(const fs::path& tmp) noexcept {
   std::error_code ec;
   fs::remove(tmp, ec);
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) {
+  const auto tmp = temp_path_beside(path);
+  std::ofstream out(tmp, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) {
+    discard_temp_file(tmp);
+    throw InputError(path, "", "cannot write the file");
+  }
+  commit_temp_file(tmp, path);
 }
 
 }  // namespace arp

@@ -16,4 +16,7 @@ void commit_temp_file(const std::filesystem::path& tmp, const std::string& targe
 // Removes a temporary file after a failed write (never throws).
 void discard_temp_file(const std::filesystem::path& tmp) noexcept;
 
+// Writes text to path through a temporary file and a rename; InputError naming the path on failure.
+void write_text_atomic(const std::string& path, const std::string& text);
+
 }  // namespace arp

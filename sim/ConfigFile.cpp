@@ -36,6 +36,14 @@ dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::
   return c;
 }
 
+dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& sets) {
+  dp::ArpConfig c;
+  if (!file.empty()) c = load_file(file, c);
+  if (!sets.empty()) c = apply_overrides(c, sets);
+  check(c, file.empty() ? "configuration" : file);
+  return c;
+}
+
 std::string update_reference_doc(const std::string& doc) {
   const dp::ArpConfig defaults;
   return replace_generated_blocks(doc, [&](const std::string& section) {

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "testbench/accuracy/AccuracyHarness.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
 
 using namespace arp;
 

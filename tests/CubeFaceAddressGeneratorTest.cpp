@@ -4,7 +4,7 @@
 #include <random>
 
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
-#include "testbench/golden/GoldenReference.hpp"
+#include "reference/golden/GoldenReference.hpp"
 
 using namespace arp::dp;
 

@@ -10,7 +10,7 @@
 TEST(GoldenReference, IncludesNoDatapathArithmetic) {
   const std::set<std::string> allowed{"rtl_model/datapath/ArpConfig.hpp", "rtl_model/datapath/DisplayMemoryBank.hpp",
                                       "rtl_model/datapath/FixedPoint.hpp"};  // FixedPoint: ArpConfig's Rounding enum
-  const std::filesystem::path dir = std::filesystem::path(ARPSIM_SOURCE_DIR) / "testbench/golden";
+  const std::filesystem::path dir = std::filesystem::path(ARPSIM_SOURCE_DIR) / "reference/golden";
   int files = 0, model_includes = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     std::ifstream in(e.path());

@@ -6,15 +6,15 @@
 #include <gtest/gtest.h>
 
 #include "common/InputError.hpp"
-#include "rtl_model/pipelines/ArpOrientationPath.hpp"
-#include "rtl_model/pipelines/ConventionalPipeline.hpp"
-#include "rtl_model/pipelines/JustInTimePixels.hpp"
-#include "rtl_model/pipelines/LatencyLab.hpp"
-#include "rtl_model/pipelines/SlatsPipeline.hpp"
+#include "lab/ArpOrientationPath.hpp"
+#include "lab/ConventionalPipeline.hpp"
+#include "lab/JustInTimePixels.hpp"
+#include "lab/LatencyLab.hpp"
+#include "lab/SlatsPipeline.hpp"
 #include "tracker/SyntheticMotion.hpp"
 
 using namespace arp;
-using namespace arp::pipelines;
+using namespace arp::lab;
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "rtl_model/datapath/LensVectorTable.hpp"
-#include "testbench/golden/GoldenReference.hpp"
+#include "reference/golden/GoldenReference.hpp"
 
 using namespace arp::dp;
 

@@ -5,7 +5,7 @@
 
 #include "common/InputError.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
-#include "testbench/golden/GoldenReference.hpp"
+#include "reference/golden/GoldenReference.hpp"
 
 using namespace arp::dp;
 

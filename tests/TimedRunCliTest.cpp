@@ -36,7 +36,7 @@ std::string read_all(const std::string& path) {
 TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics) {
   TempDir d;
   std::map<std::string, nlohmann::json> rep;
-  for (const std::string level : {"functional", "lt", "cycle", "rtl"}) {
+  for (const std::string level : {"functional", "lt", "cycle", "detailed"}) {
     const auto r = run_command(kArpsim + " run -q --fidelity " + level + " --frames 3 --every 0 --motion shake --peak 1000" +
                                kSmall + " --report " + d.file(level + ".json") + " --csv " + d.file(level + ".csv"));
     ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
@@ -44,7 +44,7 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
     EXPECT_EQ(rep[level]["fidelity"], level);
     EXPECT_GT(rep[level]["simulation"]["pixel_clocks_per_second"].get<double>(), 0.0);
   }
-  for (const std::string level : {"lt", "cycle", "rtl"}) {
+  for (const std::string level : {"lt", "cycle", "detailed"}) {
     ASSERT_EQ(rep[level]["frames"].size(), 3u);
     for (size_t f = 0; f < 3; ++f) {
       for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "first_sample", "last_sample"})
@@ -54,11 +54,15 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
     EXPECT_EQ(read_all(d.file(level + ".csv")), read_all(d.file("functional.csv"))) << level;
   }
   // The fast and the detailed cycle-accurate models: the same FIFO and stage statistics.
-  EXPECT_EQ(rep["cycle"]["fifos"], rep["rtl"]["fifos"]);
-  EXPECT_EQ(rep["cycle"]["pipeline"], rep["rtl"]["pipeline"]);
-  EXPECT_EQ(rep["rtl"]["fifos"].size(), 7u);
-  EXPECT_EQ(rep["rtl"]["pipeline"]["orientation_lead_cycles"], 14);
+  EXPECT_EQ(rep["cycle"]["fifos"], rep["detailed"]["fifos"]);
+  EXPECT_EQ(rep["cycle"]["pipeline"], rep["detailed"]["pipeline"]);
+  EXPECT_EQ(rep["detailed"]["fifos"].size(), 7u);
+  EXPECT_EQ(rep["detailed"]["pipeline"]["orientation_lead_cycles"], 14);
   EXPECT_FALSE(rep["lt"]["fifos_modelled"].get<bool>());
+  // The detailed level's old name still selects it.
+  const auto alias = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0" + kSmall + " --report " + d.file("alias.json"));
+  ASSERT_EQ(alias.status, 0) << alias.output;
+  EXPECT_EQ(load(d.file("alias.json"))["fidelity"], "detailed");
 }
 
 TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
@@ -114,21 +118,21 @@ TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
   const std::string args = " run -q --frames 2 --every 0 --motion rotate --rate 1000 --hz 20000" + kSmall +
                            " --stall rotate:3500:300 --stall fetch:9000:30";
   std::map<std::string, nlohmann::json> rep;
-  for (const std::string v : {"cycle", "rtl", "cycle --no-speculation"}) {
+  for (const std::string v : {"cycle", "detailed", "cycle --no-speculation"}) {
     const std::string name = v.substr(0, v.find(' ')) + std::to_string(rep.size());
     const auto r = run_command(kArpsim + args + " --fidelity " + v + " --report " + d.file(name + ".json"));
     ASSERT_EQ(r.status, 0) << v << "\n" << r.output;
     rep[v] = load(d.file(name + ".json"));
   }
-  EXPECT_GT(rep["rtl"]["underflows"].get<int>(), 0);
+  EXPECT_GT(rep["detailed"]["underflows"].get<int>(), 0);
   EXPECT_GT(rep["cycle"]["simulation"]["fallback_pixels"].get<int>(), 0);
   EXPECT_EQ(rep["cycle --no-speculation"]["simulation"]["speculated_pixels"].get<int>(), 0);
   for (const std::string v : {"cycle", "cycle --no-speculation"}) {
-    EXPECT_EQ(rep[v]["underflows"], rep["rtl"]["underflows"]) << v;
-    EXPECT_EQ(rep[v]["fifos"], rep["rtl"]["fifos"]) << v;
+    EXPECT_EQ(rep[v]["underflows"], rep["detailed"]["underflows"]) << v;
+    EXPECT_EQ(rep[v]["fifos"], rep["detailed"]["fifos"]) << v;
     for (size_t f = 0; f < 2; ++f)
       for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "underflows", "late_discarded"})
-        EXPECT_EQ(rep[v]["frames"][f][k], rep["rtl"]["frames"][f][k]) << v << " frame " << f << " " << k;
+        EXPECT_EQ(rep[v]["frames"][f][k], rep["detailed"]["frames"][f][k]) << v << " frame " << f << " " << k;
   }
   const auto bad = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity lt --stall rotate:10:5");
   EXPECT_EQ(bad.status, 2);
@@ -192,14 +196,14 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
 TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
   TempDir d;
   std::map<std::string, nlohmann::json> rep;
-  for (const std::string level : {"functional", "lt", "cycle", "rtl"}) {
+  for (const std::string level : {"functional", "lt", "cycle", "detailed"}) {
     const auto r = run_command(kArpsim + " run -q --fidelity " + level + " --scene gallery --walk gallery --frames 5" +
                                " --every 0 --error-every 0 --threshold-deg 2 --set memory.face_size=64 --report " +
                                d.file(level + ".json"));
     ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
     rep[level] = load(d.file(level + ".json"));
   }
-  for (const std::string level : {"lt", "cycle", "rtl"}) {
+  for (const std::string level : {"lt", "cycle", "detailed"}) {
     for (size_t f = 0; f < 5; ++f)
       EXPECT_EQ(rep[level]["frames"][f]["pixel_hash"], rep["functional"]["frames"][f]["pixel_hash"]) << level << " " << f;
     EXPECT_EQ(rep[level]["host"]["memories"], rep["functional"]["host"]["memories"]) << level;

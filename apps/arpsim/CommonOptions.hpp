@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "common/AtomicFile.hpp"
 #include "common/ProgressLine.hpp"
-#include "host/cubemap/CubeMapImages.hpp"
+#include "sim/ConfigFile.hpp"
+#include "sim/MemoryContents.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
-#include "rtl_model/datapath/DisplayMemoryBank.hpp"
-#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 
 namespace arp::app {
 
@@ -17,22 +17,12 @@ struct ConfigOptions {
   std::vector<std::string> sets;
   void add_to(CLI::App& cmd);
   // Embedded defaults, then the file, then --set overrides (later wins).
-  dp::ArpConfig resolve() const;
+  dp::ArpConfig resolve() const { return config::resolve(file, sets); }
+  // What names the configuration in messages.
+  std::string source() const { return file.empty() ? "configuration" : file; }
 };
 
-// What fills the display memories: a cube map from files, or the calibration pattern.
-struct CubeMapOptions {
-  std::string faces, cross, equirect, scene, position;
-  double time_s = 0.0, ipd_m = 0.064;
-  void add_to(CLI::App& cmd);
-  // Loads the chosen cube map at face size S; `source` names it for messages.
-  host::CubeMapImages load(int face_size, std::string& source) const;
-  // Fills memory 0 of every eye and swaps it in: the cube map, or the scene
-  // rendered from each eye's position (head at `head`, eyes IPD apart along its x axis).
-  void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const;
-};
-
-// Writes text to path through a temporary file and a rename.
-void write_text_atomic(const std::string& path, const std::string& text);
+// The display memory contents' options (--faces, --cross, --equirect, --scene, --position, --time, --ipd).
+void add_memory_options(CLI::App& cmd, sim::MemoryContents& m);
 
 }  // namespace arp::app

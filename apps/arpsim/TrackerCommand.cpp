@@ -106,7 +106,7 @@ int run_import(const ImportArgs& a) {
 }
 
 struct SynthArgs {
-  MotionOptions motion;
+  tracker::MotionSpec motion;
   std::string out;
   double seconds = 10.0, start = 0.0;
 };
@@ -127,7 +127,7 @@ Runner add_tracker_command(CLI::App& app) {
   CLI::App* list = cmd->add_subcommand("list", "List Oculus Rift DK1/DK2 trackers on USB");
   auto a = std::make_shared<SynthArgs>();
   CLI::App* synth = cmd->add_subcommand("synth", "Write a synthetic head-motion trace (CSV, docs/tracker.md)");
-  a->motion.add_to(*synth, true);
+  add_motion_options(*synth, a->motion, true);
   synth->add_option("--seconds", a->seconds, "Duration")->capture_default_str();
   synth->add_option("--start", a->start, "Time of the first sample, seconds")->capture_default_str();
   synth->add_option("--out,-o", a->out, "Trace file to write")->required();

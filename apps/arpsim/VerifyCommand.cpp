@@ -4,7 +4,7 @@
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
-#include "testbench/accuracy/AccuracyHarness.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
 
 namespace arp::app {
 

@@ -1,5 +1,9 @@
 #include "BitmapFont.hpp"
 
+#include <cctype>
+
+#include <algorithm>
+
 #include <array>
 #include <cstring>
 
@@ -80,6 +84,28 @@ void draw_text(const std::string& text, int x0, int y0, int scale, const std::fu
           for (int sy = 0; sy < scale; ++sy)
             for (int sx = 0; sx < scale; ++sx) plot(gx + c * scale + sx, y0 + r * scale + sy);
   }
+}
+
+void draw_text_box(RgbImage& img, const std::vector<std::string>& lines) {
+  constexpr int kScale = 2, kLine = 9 * kScale, kPad = 6;
+  std::vector<std::string> caps = lines;
+  for (auto& line : caps)
+    for (char& ch : line) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  int w = 0;
+  for (const auto& l : caps) w = std::max(w, text_width(l, kScale));
+  const int bw = std::min(img.width, w + 2 * kPad), bh = std::min(img.height, static_cast<int>(caps.size()) * kLine + 2 * kPad);
+  for (int y = 0; y < bh; ++y)
+    for (int x = 0; x < bw; ++x) {
+      uint8_t* p = img.px(x, y);
+      p[0] = p[1] = p[2] = 16;
+    }
+  for (size_t i = 0; i < caps.size(); ++i)
+    draw_text(caps[i], kPad, kPad + static_cast<int>(i) * kLine, kScale, [&](int x, int y) {
+      if (x >= 0 && y >= 0 && x < bw && y < bh) {
+        uint8_t* p = img.px(x, y);
+        p[0] = p[1] = p[2] = 255;
+      }
+    });
 }
 
 }  // namespace arp::host

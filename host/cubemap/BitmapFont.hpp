@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
+
+#include "CubeMapImages.hpp"
 
 namespace arp::host {
 
@@ -15,5 +18,8 @@ constexpr int kGlyphW = 5, kGlyphH = 7;
 // Characters without a glyph are drawn as a filled box so a missing glyph is visible.
 void draw_text(const std::string& text, int x0, int y0, int scale, const std::function<void(int, int)>& plot);
 int text_width(const std::string& text, int scale);
+
+// A dark box with white text (in the font's capitals) in the image's top-left corner.
+void draw_text_box(RgbImage& img, const std::vector<std::string>& lines);
 
 }  // namespace arp::host

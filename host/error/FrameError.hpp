@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rtl_model/functional/HmdFrame.hpp"
+#include "rtl_model/datapath/HmdFrame.hpp"
 
 namespace arp::host {
 

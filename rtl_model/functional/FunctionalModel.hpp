@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "HmdFrame.hpp"
+#include "rtl_model/datapath/HmdFrame.hpp"
 #include "LinePasses.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"

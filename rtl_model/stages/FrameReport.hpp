@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "rtl_model/functional/HmdFrame.hpp"
+#include "rtl_model/datapath/HmdFrame.hpp"
 
 namespace arp::stage {
 

@@ -23,13 +23,17 @@ std::string to_string(Fidelity f) {
     case Fidelity::Functional: return "functional";
     case Fidelity::LooselyTimed: return "lt";
     case Fidelity::Cycle: return "cycle";
-    case Fidelity::Rtl: return "rtl";
+    case Fidelity::Detailed: return "detailed";
   }
   return "?";
 }
 
 bool parse(const std::string& s, Fidelity& out) {
-  for (Fidelity f : {Fidelity::Functional, Fidelity::LooselyTimed, Fidelity::Cycle, Fidelity::Rtl})
+  if (s == "rtl") {  // the name this level had before a level backed by real RTL existed
+    out = Fidelity::Detailed;
+    return true;
+  }
+  for (Fidelity f : {Fidelity::Functional, Fidelity::LooselyTimed, Fidelity::Cycle, Fidelity::Detailed})
     if (s == to_string(f)) {
       out = f;
       return true;
@@ -42,7 +46,7 @@ const char* describe(Fidelity f) {
     case Fidelity::Functional: return "untimed functional model (bit-accurate frames, computed photon times)";
     case Fidelity::LooselyTimed: return "loosely timed, one-scanline quantum (SystemC thread)";
     case Fidelity::Cycle: return "fast cycle-accurate, one SystemC process per clock domain";
-    case Fidelity::Rtl: return "detailed cycle-accurate, one SC_MODULE per stage with clocked FIFO channels";
+    case Fidelity::Detailed: return "detailed cycle-accurate, one SC_MODULE per stage with clocked FIFO channels";
   }
   return "?";
 }
@@ -167,7 +171,7 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   std::unique_ptr<LooselyTimedModel> lt;
   RunWindow w{};
   switch (opt.fidelity) {
-    case Fidelity::Rtl:
+    case Fidelity::Detailed:
       rtl = std::make_unique<ArpPipelineTop>("arp", run_in);
       w = rtl->window();
       break;

@@ -18,8 +18,9 @@
 
 namespace arp::scm {
 
-enum class Fidelity { Functional, LooselyTimed, Cycle, Rtl };
-std::string to_string(Fidelity f);  // functional, lt, cycle, rtl
+enum class Fidelity { Functional, LooselyTimed, Cycle, Detailed };
+std::string to_string(Fidelity f);  // functional, lt, cycle, detailed
+// Also accepts rtl, the detailed level's old name.
 bool parse(const std::string& s, Fidelity& out);
 const char* describe(Fidelity f);
 
@@ -30,7 +31,7 @@ struct VcdOptions {
 };
 
 struct TimedRunOptions {
-  Fidelity fidelity = Fidelity::Rtl;
+  Fidelity fidelity = Fidelity::Detailed;
   VcdOptions vcd;
   std::function<void(double fraction, const std::string& what)> progress;
   int threads = 0;  // functional level only
@@ -38,7 +39,7 @@ struct TimedRunOptions {
 };
 
 struct TimedResult {
-  Fidelity fidelity = Fidelity::Rtl;
+  Fidelity fidelity = Fidelity::Detailed;
   std::vector<stage::FrameReport> frames;
   bool stages_measured = false, fifos_modelled = false;
   std::array<stage::StageStats, dp::kStageCount> stages{};

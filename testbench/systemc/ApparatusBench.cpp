@@ -9,11 +9,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "rtl_model/pipelines/ArchitectureSet.hpp"
-#include "testbench/apparatus/Oscilloscope.hpp"
+#include "lab/ArchitectureSet.hpp"
+#include "lab/apparatus/Oscilloscope.hpp"
 
 using namespace arp;
-using namespace arp::pipelines;
+using namespace arp::lab;
 
 TEST(ApparatusBench, EdgesOnTheOscilloscopeAgreeWithInternalTimestamps) {
   dp::ArpConfig c;

@@ -73,7 +73,7 @@ TEST(GoldenVcd, TinyFrameThroughTheDetailedModelMatchesTheReviewedWaveform) {
   const std::string dir = std::filesystem::temp_directory_path() / ("arpsim-golden-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   scm::TimedRunOptions opt;
-  opt.fidelity = scm::Fidelity::Rtl;
+  opt.fidelity = scm::Fidelity::Detailed;
   opt.vcd.path = dir + "/tiny";
   const scm::TimedResult r = scm::run_timed(in, opt);
   EXPECT_EQ(r.swaps, 1);

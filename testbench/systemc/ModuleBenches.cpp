@@ -24,7 +24,7 @@
 #include "rtl_model/systemc/LensVectorTable.hpp"
 #include "rtl_model/systemc/OrientationMatrixUnit.hpp"
 #include "rtl_model/systemc/VideoTimingGenerator.hpp"
-#include "testbench/golden/GoldenReference.hpp"
+#include "reference/golden/GoldenReference.hpp"
 
 using namespace arp;
 using namespace arp::bench;

@@ -101,7 +101,7 @@ void expect_same_as_functional(scm::Fidelity level, const dp::ArpConfig& c, int 
   }
   EXPECT_EQ(res.underflows, 0);
   EXPECT_EQ(res.issue_stalls, 0);
-  if (level == scm::Fidelity::Rtl || level == scm::Fidelity::Cycle) {
+  if (level == scm::Fidelity::Detailed || level == scm::Fidelity::Cycle) {
     // Unstalled, every stage takes exactly its configured latency.
     for (int s = 0; s + 1 < dp::kStageCount; ++s) {
       EXPECT_EQ(res.stages[static_cast<size_t>(s)].min_cycles, c.timed.stage[static_cast<size_t>(s)].latency_cycles) << s;
@@ -125,7 +125,7 @@ TEST_P(LevelsAgree, FramesPhotonTimesAndLatenciesEqualTheFunctionalModel) {
 
 INSTANTIATE_TEST_SUITE_P(
     TimedLevels, LevelsAgree,
-    ::testing::Combine(::testing::Values(scm::Fidelity::Rtl, scm::Fidelity::Cycle, scm::Fidelity::LooselyTimed),
+    ::testing::Combine(::testing::Values(scm::Fidelity::Detailed, scm::Fidelity::Cycle, scm::Fidelity::LooselyTimed),
                        ::testing::Values("default", "per_pixel_latch", "per_frame_nearest_exact", "side_by_side",
                                          "interlaced_mono", "deep_narrow")),
     [](const auto& p) { return scm::to_string(std::get<0>(p.param)) + "_" + std::get<1>(p.param); });
@@ -192,7 +192,7 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TimedLevels, HostWrites,
-                         ::testing::Values(scm::Fidelity::Rtl, scm::Fidelity::Cycle, scm::Fidelity::LooselyTimed),
+                         ::testing::Values(scm::Fidelity::Detailed, scm::Fidelity::Cycle, scm::Fidelity::LooselyTimed),
                          [](const auto& p) { return scm::to_string(p.param); });
 
 // Backpressure: the anti-aliasing filter stalls for 40 clocks in the middle of
@@ -257,7 +257,7 @@ TEST_P(Backpressure, StalledStageFillsFifosThenUnderflowsAreCounted) {
   EXPECT_EQ(got.at(1).report.underflows, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(TimedLevels, Backpressure, ::testing::Values(scm::Fidelity::Rtl, scm::Fidelity::Cycle),
+INSTANTIATE_TEST_SUITE_P(TimedLevels, Backpressure, ::testing::Values(scm::Fidelity::Detailed, scm::Fidelity::Cycle),
                          [](const auto& p) { return scm::to_string(p.param); });
 
 // Configurations the hardware cannot meet are refused before simulating.
@@ -275,7 +275,7 @@ TEST(TimedLevels, ImpossibleHardwareIsRefusedBeforeSimulation) {
     in.memories = &mem;
     in.orientation = &o;
     scm::TimedRunOptions opt;
-    opt.fidelity = scm::Fidelity::Rtl;
+    opt.fidelity = scm::Fidelity::Detailed;
     if (mem.count() == c.memory.count) {
       EXPECT_THROW(scm::run_timed(in, opt), InputError) << key;
     }

@@ -1,0 +1,106 @@
+#include "GtkwSaveFile.hpp"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "common/InputError.hpp"
+
+namespace arp {
+
+namespace {
+struct Var {
+  std::string path;  // scope.name[range]
+  std::string group;
+  std::string leaf;
+  int width;
+};
+
+// Binary for single bits, signed decimal for vectors and matrix entries,
+// decimal for counts and positions, hex for colours and memory words.
+const char* flags_for(const Var& v) {
+  if (v.width == 1) return "@28";
+  static const char* const signed_decimal[] = {"view_", "world_", "matrix_", "_q14"};
+  for (const char* d : signed_decimal)
+    if (v.leaf.find(d) != std::string::npos) return "@424";
+  static const char* const decimal[] = {"count", "cycle", "frame", "sample", "occupancy", "backlog", "underflows",
+                                        "job", "written", "line", "face", "texel_", "weight_"};
+  if (v.leaf == "x" || v.leaf == "y") return "@24";
+  for (const char* d : decimal)
+    if (v.leaf.find(d) != std::string::npos) return "@24";
+  return "@22";
+}
+
+// Clocks and scan position first, then the data path in pipeline order.
+int group_rank(const std::string& g) {
+  static const char* const order[] = {"clocks", "dut", "video_timing_generator", "tracker_interface", "lens_vector_table",
+                                      "orientation_matrix_unit", "cube_face_address_generator", "display_memory_banks",
+                                      "composition_unit", "anti_aliasing_filter", "hmd_scan_out", "fifos"};
+  for (int i = 0; i < static_cast<int>(sizeof order / sizeof *order); ++i)
+    if (g == order[i]) return i;
+  return 100;
+}
+}  // namespace
+
+std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile) {
+  std::ifstream in(vcd_path);
+  if (!in) throw InputError(vcd_path, "", "cannot read the waveform");
+  std::vector<std::string> scope;
+  std::vector<Var> vars;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::istringstream ss(line);
+    std::string tok;
+    ss >> tok;
+    if (tok == "$scope") {
+      std::string kind, name;
+      ss >> kind >> name;
+      scope.push_back(name);
+    } else if (tok == "$upscope") {
+      if (!scope.empty()) scope.pop_back();
+    } else if (tok == "$var") {
+      std::string kind, id, name, range;
+      int width = 0;
+      ss >> kind >> width >> id >> name >> range;
+      if (width <= 0) throw InputError(vcd_path, "line " + std::to_string(lineno), "malformed $var");
+      Var v;
+      std::string p;
+      for (const auto& s : scope) p += s + ".";
+      v.path = p + name + (range != "$end" ? range : "");
+      v.leaf = name;
+      v.width = width;
+      // Group: the module below the top (SystemC.arp.<module>), FIFO occupancies together, clocks apart.
+      // SystemC.arp.<module>.<signal> in a run; SystemC.<module>.<signal> in a module bench.
+      const std::string top_rel = scope.size() >= 3 ? scope[2] : (scope.size() == 2 ? scope[1] : "");
+      if (name.find("clk") != std::string::npos || name == "pixel_cycle" || name == "cycle") v.group = "clocks";
+      else if (name == "occupancy") v.group = "fifos";
+      else v.group = top_rel.empty() ? "top" : top_rel;
+      if (name == "occupancy") v.leaf = top_rel + "_occupancy";
+      vars.push_back(v);
+    } else if (tok == "$enddefinitions") {
+      break;
+    }
+  }
+  if (vars.empty()) throw InputError(vcd_path, "", "declares no signals");
+  std::map<int, std::map<std::string, std::vector<const Var*>>> groups;
+  for (const auto& v : vars) groups[group_rank(v.group)][v.group].push_back(&v);
+  std::ostringstream o;
+  o << "[*] arpsim waveform view: one group per pipeline stage, in data-flow order\n";
+  o << "[dumpfile] \"" << dumpfile << "\"\n";
+  o << "[timestart] 0\n";
+  o << "[size] 1600 900\n";
+  o << "[sst_width] 260\n";
+  o << "[signals_width] 320\n";
+  for (const auto& [rank, by_name] : groups)
+    for (const auto& [g, list] : by_name) {
+      o << "@800200\n-" << g << "\n";
+      for (const Var* v : list) o << flags_for(*v) << "\n" << v->path << "\n";
+      o << "@1000200\n-" << g << "\n";
+    }
+  return o.str();
+}
+
+}  // namespace arp

@@ -1,0 +1,14 @@
+// GTKWave save files: a readable, grouped view of a VCD written by arpsim --
+// one group per module (clocks and scan position first), 1-bit signals as
+// binary, counters and positions as decimal, colours and data as hex.
+#pragma once
+#include <string>
+
+namespace arp {
+
+// The .gtkw text for the signals declared in `vcd_path`'s header; `dumpfile`
+// is what the save file names as its waveform (as given, relative or not).
+// InputError naming the VCD when it cannot be read or declares nothing.
+std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile);
+
+}  // namespace arp

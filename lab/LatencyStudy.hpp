@@ -1,0 +1,53 @@
+// The latency laboratory as a library: the ARP beside a conventional
+// pipelined renderer (PPHIGS-like), Slats and just-in-time pixels on one
+// display, one head motion and one tracker, measured the same way -- every
+// sampled pixel's motion-to-photon latency and registration error, error over
+// time at the screen centre (Olano et al.'s figure 9), worst error against
+// rotation speed, prediction horizon and scene size (renderer overload),
+// Olano's hand figures reproduced, and the simulated pendulum apparatus with
+// its oscilloscope VCD. `arpsim latency` parses options into a LatencySpec.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rtl_model/datapath/ArpConfig.hpp"
+#include "tracker/SyntheticMotion.hpp"
+
+namespace arp::lab {
+
+// Everything a study is asked (the option names are the command line's).
+struct LatencySpec {
+  dp::ArpConfig config;
+  std::string config_source = "configuration";
+  tracker::MotionSpec motion;
+  std::string trace, out_dir = "latency", predict = "none", scene;
+  bool olano = false, no_sweeps = false, no_apparatus = false;
+  int64_t frames = 180;
+  int grid = 8;
+  double tracker_rate = 1000, tracker_latency_ms = -1, horizon_ms = 0, jit_lead_us = -1;
+  double conv_transform_ms = 8, conv_render_ms = 10, conv_copy_ms = 12, conv_rate = 2e6, triangles = 0;
+  double slats_setup_ms = 1, slats_copy_ms = 3.9, slats_rate = 12000, jit_rate = 2e6;
+  double walk_speed = 0, theta_deg = 0, point_distance = 2.0;
+  bool no_field_sync = false;
+};
+
+class LatencyStudy {
+ public:
+  // InputError naming the option for a bad value, before anything is written.
+  explicit LatencyStudy(LatencySpec spec);
+  // Steps of the progress: architectures, sweep points, apparatus, tables.
+  int64_t steps() const;
+  std::function<void(const std::string&)> on_step;
+  // Runs everything and writes into spec.out_dir; returns the markdown table.
+  std::string run();
+  // What the user should be told besides the table (plots not made, ...).
+  const std::vector<std::string>& notes() const { return notes_; }
+
+ private:
+  LatencySpec s_;
+  std::vector<std::string> notes_;
+};
+
+}  // namespace arp::lab

@@ -1,0 +1,68 @@
+#include "FrameLog.hpp"
+
+#include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
+
+namespace arp::sim {
+
+FrameLog::FrameLog(const std::string& csv_path, const std::string& report_path, const std::string& csv_header)
+    : csv_path_(csv_path), report_path_(report_path) {
+  if (!csv_path_.empty()) {
+    csv_tmp_ = temp_path_beside(csv_path_);
+    csv_.open(csv_tmp_, std::ios::binary);
+    if (!(csv_ << csv_header)) throw InputError(csv_path_, "", "cannot write the file");
+  }
+  if (!report_path_.empty()) {
+    rows_tmp_ = temp_path_beside(report_path_);
+    rows_tmp_ += ".rows";
+    rows_file_.open(rows_tmp_, std::ios::binary);
+    if (!rows_file_) throw InputError(report_path_, "", "cannot write the file");
+  }
+}
+
+FrameLog::~FrameLog() {
+  if (csv_.is_open()) {
+    csv_.close();
+    discard_temp_file(csv_tmp_);
+  }
+  if (rows_file_.is_open()) rows_file_.close();
+  if (!rows_tmp_.empty()) discard_temp_file(rows_tmp_);
+}
+
+void FrameLog::add(const nlohmann::json& row, const std::string& csv_row) {
+  ++rows_;
+  if (csv_.is_open()) csv_ << csv_row;
+  if (rows_file_.is_open()) rows_file_ << row.dump() << '\n';
+}
+
+void FrameLog::finish(const nlohmann::json& report) {
+  if (csv_.is_open()) {
+    csv_.close();
+    if (!csv_) {
+      discard_temp_file(csv_tmp_);
+      throw InputError(csv_path_, "", "cannot write the file");
+    }
+    commit_temp_file(csv_tmp_, csv_path_);
+  }
+  if (!rows_file_.is_open()) return;
+  rows_file_.close();
+  const auto tmp = temp_path_beside(report_path_);
+  std::ofstream out(tmp, std::ios::binary);
+  // The report's other keys, then "frames": one row per line, read back from the temporary file.
+  const std::string head = report.dump(2);  // "{\n  ...\n}" (or "{}")
+  out << (report.empty() ? std::string("{") : head.substr(0, head.size() - 2) + ",") << "\n  \"frames\": [";
+  std::ifstream in(rows_tmp_, std::ios::binary);
+  std::string line;
+  for (int64_t i = 0; std::getline(in, line); ++i) out << (i ? ",\n    " : "\n    ") << line;
+  out << (rows_ ? "\n  " : "") << "]\n}\n";
+  out.close();
+  discard_temp_file(rows_tmp_);
+  rows_tmp_.clear();
+  if (!out) {
+    discard_temp_file(tmp);
+    throw InputError(report_path_, "", "cannot write the file");
+  }
+  commit_temp_file(tmp, report_path_);
+}
+
+}  // namespace arp::sim

@@ -1,0 +1,103 @@
+#include "LiveLoop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "PoseConversion.hpp"
+#include "common/InputError.hpp"
+
+namespace arp::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+const LiveSpec& checked(const LiveSpec& s) {
+  if (!(s.seconds >= 0) || s.seconds > 24 * 3600) throw InputError("--seconds", "", "must be 0 (until the window closes) .. a day");
+  const int sources = (!s.trace.empty()) + s.motion.given() + (!s.live.empty());
+  if (sources > 1) throw InputError("--trace", "", "give one of --trace, --motion and --live");
+  if (!s.live.empty() && s.live != "usb") throw InputError("--live", s.live, "the live source is usb (an Oculus Rift DK1/DK2)");
+  return s;
+}
+
+}  // namespace
+
+LiveLoop::LiveLoop(const LiveSpec& spec)
+    : spec_(checked(spec)),
+      model_(spec_.config),
+      frames_(spec_.seconds > 0 ? std::max<int64_t>(1, static_cast<int64_t>(std::llround(spec_.seconds * model_.timing().refresh_hz())))
+                                : INT64_MAX),
+      stream_(dp::OrientationStream::constant(dp::Quat{})),
+      mem_(spec_.config.memory, spec_.config.timing.eyes) {
+  // The head motion, from one pose source: all of it up front (trace, synthetic) or as it arrives (usb).
+  if (!spec_.trace.empty()) {
+    source_ = tracker::trace_file_source(spec_.trace);
+  } else if (!spec_.live.empty()) {
+    std::string err;
+    if (!(source_ = tracker::usb_source(err))) throw InputError("--live usb", "", err);
+  } else {
+    tracker::MotionSpec m = spec_.motion;
+    if (!m.given()) {
+      m.motion = "shake";
+      m.peak = 100;
+    }
+    const double span = spec_.seconds > 0 ? spec_.seconds + 1.0 : 3600.0;
+    source_ = tracker::recorded_source(m.make(0.0, span), "synthetic " + m.motion);  // the motion starts with frame 0
+  }
+  source_name_ = source_->describe();
+  if (!source_->live()) {
+    source_->poll(got_, 0);
+    stream_ = dp::OrientationStream(to_orientation_samples(got_), source_name_);
+    got_.clear();
+  }
+  usb_ = source_->live() ? source_.get() : nullptr;
+  spec_.memories.fill(mem_, dp::Quat{}, memory_source_);
+  wall0_ = Clock::now();
+  usb_offset_ = usb_ ? -usb_->now_ps() : 0;
+}
+
+LiveLoop::~LiveLoop() = default;
+
+std::vector<std::string> LiveLoop::take_events() { return usb_ ? usb_->take_events() : std::vector<std::string>{}; }
+
+LiveFrame LiveLoop::next() {
+  const double period_s = 1.0 / refresh_hz();
+  const int64_t k = next_++;
+  // Frame k goes up at k periods after the start; wait for it, taking tracker data meanwhile.
+  const auto due = wall0_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(static_cast<double>(k + 1) * period_s));
+  while (Clock::now() < due) {
+    if (usb_) usb_->poll(got_, 1);
+    else std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  LiveFrame f;
+  f.index = k;
+  f.late = Clock::now() > due + std::chrono::duration<double>(period_s);
+  late_ += f.late;
+  if (usb_) {
+    append_live_poses(stream_, got_, usb_offset_, source_name_);
+    got_.clear();
+    f.disconnected = !usb_->connected();
+  }
+  RenderOptions ro;
+  ro.threads = spec_.threads;
+  ro.photon_times = true;
+  const auto r0 = Clock::now();
+  model_.render(mem_, stream_, k, frame_, ro);
+  f.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
+  f.frame = &frame_;
+  // Orientation sample -> photon over a grid of pixels (every 8th pixel and line).
+  std::vector<int64_t> lat;
+  for (int y = 0; y < frame_.height; y += 8)
+    for (int x = 0; x < frame_.width; x += 8) {
+      const size_t s = model_.latch_rule().sample(stream_, k, 0, x, y);
+      lat.push_back(frame_.photon_ps[frame_.index(0, x, y)] - stream_[s].time_ps);
+    }
+  std::sort(lat.begin(), lat.end());
+  f.latency_min_ps = lat.front();
+  f.latency_median_ps = lat[lat.size() / 2];
+  f.latency_max_ps = lat.back();
+  return f;
+}
+
+}  // namespace arp::sim

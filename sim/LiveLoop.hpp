@@ -1,0 +1,71 @@
+// The live loop: head motion from a pose source (synthetic, a trace, or a
+// tracker on USB), the functional model frame by frame at the display's rate
+// on the wall clock, and each frame's orientation-sample -> photon latency.
+// `arpsim live` presents what it computes in a window; the loop itself has
+// no window and no SDL.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "MemoryContents.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+#include "tracker/PoseSource.hpp"
+#include "tracker/SyntheticMotion.hpp"
+
+namespace arp::sim {
+
+struct LiveSpec {
+  dp::ArpConfig config;
+  MemoryContents memories;
+  tracker::MotionSpec motion;  // default: a 100 deg/s head shake
+  std::string trace, live;     // --trace FILE, --live usb
+  double seconds = 0;          // 0: until stopped
+  int threads = 0;
+};
+
+struct LiveFrame {
+  int64_t index = 0;
+  const HmdFrame* frame = nullptr;
+  double render_ms = 0;
+  int64_t latency_min_ps = 0, latency_median_ps = 0, latency_max_ps = 0;  // over a grid of pixels
+  bool late = false;          // shown more than a period after it was due
+  bool disconnected = false;  // the tracker is unplugged: its last pose is held
+};
+
+class LiveLoop {
+ public:
+  // InputError for bad options, a missing trace, or no tracker to open.
+  explicit LiveLoop(const LiveSpec& spec);
+  ~LiveLoop();
+
+  const std::string& source_name() const { return source_name_; }
+  const std::string& memory_source() const { return memory_source_; }
+  double refresh_hz() const { return model_.timing().refresh_hz(); }
+  const dp::ArpConfig& config() const { return spec_.config; }
+  // How many frames the loop shows (INT64_MAX: until the caller stops).
+  int64_t frames() const { return frames_; }
+  // The next frame: waits for its display time (taking tracker samples meanwhile), then renders it.
+  LiveFrame next();
+  // Tracker events since the last call (unplug, replug, ...).
+  std::vector<std::string> take_events();
+  int64_t late_frames() const { return late_; }
+
+ private:
+  LiveSpec spec_;
+  FunctionalModel model_;
+  int64_t frames_;
+  std::unique_ptr<tracker::PoseSource> source_;
+  tracker::PoseSource* usb_ = nullptr;
+  std::string source_name_, memory_source_;
+  dp::OrientationStream stream_;
+  dp::DisplayMemorySet mem_;
+  std::vector<tracker::PoseSample> got_;
+  HmdFrame frame_;
+  std::chrono::steady_clock::time_point wall0_;
+  int64_t usb_offset_ = 0, next_ = 0, late_ = 0;
+};
+
+}  // namespace arp::sim

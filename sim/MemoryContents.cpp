@@ -1,0 +1,62 @@
+#include "MemoryContents.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "common/InputError.hpp"
+#include "host/cubemap/CalibrationPattern.hpp"
+#include "host/cubemap/CubeMapLoader.hpp"
+#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
+#include "host/scene/Gallery.hpp"
+#include "host/scene/SceneFile.hpp"
+
+namespace arp::sim {
+
+void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const {
+  if (scene.empty()) {
+    if (!position.empty()) throw InputError("--position", "", "only with --scene");
+    host::load_into_memories(mem, 0, load(mem.format().face_size, source), host::far_depth(mem.format()));
+    return;
+  }
+  if (!std::isfinite(time_s) || std::abs(time_s) > 1e7) throw InputError("--time", "", "must be finite, within 1e7 s");
+  if (!(ipd_m >= 0) || ipd_m > 1) throw InputError("--ipd", "", "must be 0 .. 1 m");
+  const host::Scene sc = load_scene();
+  glm::dvec3 p = host::gallery_walk().front();
+  if (!position.empty()) {
+    std::stringstream ss(position);
+    char c1 = 0, c2 = 0;
+    if (!(ss >> p.x >> c1 >> p.y >> c2 >> p.z) || c1 != ',' || c2 != ',' || !ss.eof() || !std::isfinite(p.x) ||
+        !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw InputError("--position", position, "expected three finite numbers x,y,z");
+  }
+  const glm::dquat q(head.w, head.x, head.y, head.z);
+  const host::CubeFaceRenderer renderer;
+  for (int e = 0; e < mem.eyes(); ++e) {
+    dp::DisplayMemoryBank& bank = mem.bank(e, 0);
+    renderer.render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank);
+    bank.vblank();
+  }
+  source = "scene " + sc.name + " (" + std::to_string(sc.objects.size()) + " objects, " +
+           std::to_string(sc.triangles()) + " triangles)";
+}
+
+host::CubeMapImages MemoryContents::load(int S, std::string& source) const {
+  if (!faces.empty()) { source = faces; return host::load_six_faces(host::six_face_paths_in(faces), S); }
+  if (!cross.empty()) { source = cross; return host::load_cross(cross, S); }
+  if (!equirect.empty()) { source = equirect; return host::load_equirect(equirect, S); }
+  source = "calibration pattern";
+  return host::make_calibration_pattern(S);
+}
+
+host::Scene MemoryContents::load_scene() const {
+  host::Scene sc = scene == "gallery" ? host::make_gallery() : host::load_scene_file(scene);
+  for (const auto& n : sc.notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());
+  return sc;
+}
+
+}  // namespace arp::sim

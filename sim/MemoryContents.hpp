@@ -1,0 +1,30 @@
+// What fills the display memories for a run without a host simulation: a
+// cube map from files (six faces, a cross, an equirectangular panorama), a
+// scene rendered once from the head's position, or the calibration pattern.
+#pragma once
+#include <string>
+
+#include "host/cubemap/CubeMapImages.hpp"
+#include "host/scene/Scene.hpp"
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+
+namespace arp::sim {
+
+struct MemoryContents {
+  std::string faces, cross, equirect;  // at most one: a cube map from files
+  std::string scene;                   // or a scene file / "gallery"
+  std::string position;                // --scene: head position x,y,z (default: the gallery walk's start)
+  double time_s = 0.0;                 // --scene: animation time
+  double ipd_m = 0.064;                // distance between the eyes
+
+  // The cube map chosen, at face size S; `source` names it for messages.
+  host::CubeMapImages load(int face_size, std::string& source) const;
+  // Fills memory 0 of every eye and swaps it in: the cube map, or the scene
+  // rendered from each eye's position (head orientation `head`).
+  void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const;
+  // The scene named by `scene` (notes about stand-ins go to stderr).
+  host::Scene load_scene() const;
+};
+
+}  // namespace arp::sim

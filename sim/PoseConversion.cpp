@@ -1,0 +1,26 @@
+#include "sim/PoseConversion.hpp"
+
+namespace arp::sim {
+
+std::vector<dp::OrientationSample> to_orientation_samples(const std::vector<tracker::PoseSample>& poses, int64_t offset_ps) {
+  std::vector<dp::OrientationSample> s;
+  s.reserve(poses.size());
+  for (const auto& p : poses)
+    s.push_back({p.time_ps + offset_ps, dp::Quat{p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z}});
+  return s;
+}
+
+int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& poses, int64_t offset_ps,
+                          const std::string& source) {
+  std::vector<dp::OrientationSample> more;
+  int64_t last = stream[stream.size() - 1].time_ps;
+  for (const auto& s : to_orientation_samples(poses, offset_ps))
+    if (s.time_ps >= last) {
+      more.push_back(s);
+      last = s.time_ps;
+    }
+  stream.append(more, source);
+  return static_cast<int64_t>(more.size());
+}
+
+}  // namespace arp::sim

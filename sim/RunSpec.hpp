@@ -1,0 +1,59 @@
+// A run as data: everything `arpsim run` can be asked, so that the command,
+// the benches and the tests describe a run the same way and hand it to a
+// sim::Session. Option names in comments are the command line's; errors
+// about a value name the option that set it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "MemoryContents.hpp"
+#include "host/priority/RenderCost.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
+#include "tracker/SyntheticMotion.hpp"
+
+namespace arp::sim {
+
+// The host's priority rendering over a walk (--walk).
+struct HostSpec {
+  std::string walk;             // "gallery" or a walk file; empty: no host simulation
+  double walk_speed = 0;        // --speed, m/s (0: 1, or the walk file's)
+  bool baseline = false;        // --baseline: everything in memory 0, every frame
+  double threshold_deg = 0;     // --threshold-deg, theta_t (0: one display-memory texel)
+  host::RenderEngine engine;    // --engine-triangles, --engine-fill, --engine-setup
+  double region_size = 0;       // --regions, m (0: object-level)
+  double margin = 0.5;          // --margin, m
+  bool region_cubes = false;    // --region-cubes
+  bool segmentation = true;     // not --no-segmentation
+  bool warp = false;            // --warp
+  double warp_falloff = 0;      // --warp-falloff, m (0: half a region)
+};
+
+// What a run writes.
+struct OutputSpec {
+  std::string out_dir = "run";   // --out-dir: images and photon times
+  int64_t every = 1;             // --every: every Nth frame as an image (0: none)
+  bool photon_times = false;     // --photon-times
+  std::string report, csv, host_csv;
+  std::string vcd, vcd_lines, vcd_time_us;  // --vcd NAME, window in lines or microseconds
+  int64_t error_every = 10;      // --error-every (walks)
+  std::string tear_image, tear_at;
+};
+
+struct RunSpec {
+  dp::ArpConfig config;
+  std::string config_source = "configuration";  // names the configuration in errors
+  std::string fidelity = "functional";           // functional, lt, cycle, detailed (rtl)
+  MemoryContents memories;
+  tracker::MotionSpec motion;                    // --motion ...
+  std::string trace;                             // --trace FILE
+  std::string live;                              // --live usb
+  HostSpec host;
+  int64_t first_frame = 0, frames = 60;
+  std::vector<std::string> stalls;               // --stall STAGE:CLOCK:CYCLES
+  bool speculate = true;                         // not --no-speculation
+  int threads = 0;
+  OutputSpec out;
+};
+
+}  // namespace arp::sim

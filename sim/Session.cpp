@@ -1,0 +1,428 @@
+#include "Session.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "FrameImage.hpp"
+#include "common/GtkwSaveFile.hpp"
+#include "PoseConversion.hpp"
+#include "TruthProbe.hpp"
+#include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
+#include "common/Units.hpp"
+#include "host/cubemap/ImageFiles.hpp"
+#include "host/scene/Gallery.hpp"
+#include "tracker/TraceFile.hpp"
+
+namespace arp::sim {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_of(int64_t ps) { return static_cast<double>(ps) * 1e-12; }
+
+// "A:B" -> two numbers; InputError naming the option otherwise.
+std::pair<double, double> parse_window(const std::string& opt, const std::string& s) {
+  const auto colon = s.find(':');
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("");
+    size_t n1 = 0, n2 = 0;
+    const double a = std::stod(s.substr(0, colon), &n1), b = std::stod(s.substr(colon + 1), &n2);
+    if (n1 != colon || n2 != s.size() - colon - 1 || !(b > a)) throw std::invalid_argument("");
+    return {a, b};
+  } catch (const std::exception&) {
+    throw InputError(opt, s, "expected START:END with END > START");
+  }
+}
+
+// The VCD's final path (".vcd" added; a bare name goes into waveforms/), its folder made and checked writable.
+std::string vcd_path(const std::string& arg) {
+  fs::path p(arg);
+  if (!p.has_parent_path()) p = fs::path("waveforms") / p;
+  if (p.extension() != ".vcd") p += ".vcd";
+  std::error_code ec;
+  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  std::ofstream probe(p.string() + ".probe");
+  if (!probe) throw InputError(p.string(), "", "cannot write the waveform there");
+  probe.close();
+  fs::remove(p.string() + ".probe", ec);
+  return p.string();
+}
+
+void check_spec(const RunSpec& s, scm::Fidelity fid) {
+  const auto& o = s.out;
+  const auto& h = s.host;
+  if (s.frames < 1 || s.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
+  if (s.first_frame < 0 || s.first_frame > 1'000'000'000) throw InputError("--first-frame", "", "must be 0 .. 1e9");
+  if (o.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
+  if (!s.trace.empty() && s.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  if (!s.live.empty()) {
+    if (s.live != "usb") throw InputError("--live", s.live, "the live source is usb (an Oculus Rift DK1/DK2)");
+    if (!s.trace.empty() || s.motion.given() || !h.walk.empty())
+      throw InputError("--live", "", "live input replaces --trace, --motion and --walk");
+    if (fid != scm::Fidelity::Functional)
+      throw InputError("--live", "", "live input drives the functional level (the timed levels read their orientation trace ahead)");
+  }
+  if (!o.host_csv.empty() && (o.report.empty() || h.walk.empty())) throw InputError("--host-csv", "", "needs --walk and --report");
+  if (!o.vcd.empty() && fid == scm::Fidelity::Functional)
+    throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or detailed");
+  if ((!o.vcd_lines.empty() || !o.vcd_time_us.empty()) && o.vcd.empty())
+    throw InputError(o.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
+  if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
+    throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
+  if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
+  if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
+  if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
+  const auto issues = fid == scm::Fidelity::Functional ? dp::validate(s.config) : dp::validate_timed(s.config);
+  if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);
+}
+
+}  // namespace
+
+Session::Session(RunSpec spec)
+    : spec_(std::move(spec)),
+      timing_(spec_.config.timing),
+      stream_(dp::OrientationStream::constant(dp::Quat{})),
+      memories_(spec_.config.memory, spec_.config.timing.eyes) {
+  if (!scm::parse(spec_.fidelity, fidelity_))
+    throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle or detailed (rtl)");
+  check_spec(spec_, fidelity_);
+  start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
+  end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
+  build_motion();
+  build_memories();
+}
+
+Session::~Session() = default;
+
+// The head motion: a trace, synthetic motion, a walk (facing where it goes,
+// turning on top of it), or live input that grows frame by frame.
+void Session::build_motion() {
+  if (!spec_.trace.empty()) {
+    poses_ = tracker::read_trace_csv(spec_.trace);
+    motion_source_ = spec_.trace;
+  } else if (spec_.motion.given()) {
+    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
+    poses_ = spec_.motion.make(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01);
+    motion_source_ = "synthetic " + spec_.motion.motion;
+  }
+  const HostSpec& h = spec_.host;
+  if (!h.walk.empty()) {
+    if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
+    if (h.walk == "gallery") {
+      walk_ = std::make_unique<host::WalkPath>(host::gallery_walk(), h.walk_speed > 0 ? h.walk_speed : 1.0, "gallery walk");
+    } else {
+      walk_ = std::make_unique<host::WalkPath>(host::load_walk_file(h.walk));
+      if (h.walk_speed > 0) *walk_ = host::WalkPath(walk_->points(), h.walk_speed, h.walk);
+    }
+    if (poses_.empty()) {  // still head on the walk: sample it at 1 kHz
+      const double t0 = seconds_of(start_ps_) - 1.0, t1 = seconds_of(end_ps_) + 0.01;
+      for (double tt = t0; tt <= t1; tt += 1e-3) {
+        tracker::PoseSample p;
+        p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+        poses_.push_back(p);
+      }
+    }
+    for (auto& p : poses_) {
+      const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
+      const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
+      p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
+    }
+    motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
+  }
+  if (!spec_.live.empty()) {
+    std::string err;
+    live_ = tracker::usb_source(err);
+    if (!live_) throw InputError("--live usb", "", err);
+    motion_source_ = "live " + live_->describe();
+  }
+  if (!poses_.empty()) stream_ = dp::OrientationStream(to_orientation_samples(poses_), motion_source_);
+}
+
+// The display memories: a host simulating priority rendering over the walk, or a cube map / scene once.
+void Session::build_memories() {
+  const HostSpec& h = spec_.host;
+  const dp::ArpConfig& c = spec_.config;
+  if (!walk_) {
+    spec_.memories.fill(memories_, stream_[stream_.index_at(start_ps_)].q, memory_source_);
+    return;
+  }
+  scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
+  host::PriorityConfig pc;
+  pc.memories = c.memory.count;
+  pc.display_hz = timing_.refresh_hz();
+  pc.baseline = h.baseline;
+  if (!(h.threshold_deg >= 0) || h.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+  pc.threshold_rad = deg_to_rad(h.threshold_deg);
+  for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", h.engine.triangles_per_s},
+                         {"--engine-fill", h.engine.pixels_per_s}})
+    if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");
+  if (!(h.engine.object_setup_s >= 0) || !std::isfinite(h.engine.object_setup_s)) throw InputError("--engine-setup", "", "must be >= 0");
+  auto head = [this](double tt) {
+    const dp::Quat& q = stream_[stream_.index_at(static_cast<int64_t>(std::llround(tt * 1e12)))].q;
+    return glm::dquat(q.w, q.x, q.y, q.z);
+  };
+  if (h.region_size != 0) {
+    // Region priority rendering: the world in columns, large objects cut along them.
+    grid_ = std::make_unique<host::RegionGrid>(scene_->extent_min, scene_->extent_max, h.region_size, h.region_cubes, "--regions");
+    segmented_ = host::segment_scene(*scene_, *grid_, h.segmentation);
+    scene_ = std::make_unique<host::Scene>(std::move(segmented_.scene));
+    host::RegionConfig rc;
+    rc.region_size_m = h.region_size;
+    rc.margin_m = h.margin;
+    rc.memories = c.memory.count;
+    rc.threshold_rad = pc.threshold_rad;
+    regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(seconds_of(start_ps_)),
+                                                       "--margin");
+  }
+  host_ = std::make_unique<host::HostSimulation>(*scene_, pc, h.engine, *walk_, head, memories_, spec_.memories.ipd_m,
+                                                 timing_.refresh_hz());
+  if (regions_) {
+    host_->use_regions(regions_.get(), segmented_.region, segmented_.span);
+    if (!(h.warp_falloff >= 0) || h.warp_falloff > h.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
+    host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : h.region_size / 2);
+  }
+  host_->prime(seconds_of(start_ps_));
+  memory_source_ = "scene " + scene_->name + " (" + std::to_string(scene_->objects.size()) + " objects, " +
+                   std::to_string(scene_->triangles()) + " triangles), host rendering " +
+                   (h.baseline ? "everything every frame (baseline)" : "by priority");
+}
+
+// Live: before each frame, take what the device has sent until the frame's
+// end on the wall clock (the run goes at the display's pace), placed on the
+// run's timeline; an unplug holds the last pose and the run goes on.
+void Session::build_live_input(stage::TimedInputs& in) {
+  const auto wall0 = Clock::now();
+  const int64_t offset_ps = start_ps_ - live_->now_ps();  // a pose arriving as the first frame starts is placed at its start
+  auto got = std::make_shared<std::vector<tracker::PoseSample>>();
+  in.before_frame = [this, wall0, offset_ps, got](int64_t frame, double) {
+    const int64_t until_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1)) - start_ps_;
+    for (;;) {
+      const auto wall_ps = static_cast<int64_t>(std::chrono::duration<double>(Clock::now() - wall0).count() * 1e12);
+      if (wall_ps >= until_ps) break;
+      live_->poll(*got, static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)));
+    }
+    for (const auto& e : live_->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
+    live_samples_ += append_live_poses(stream_, *got, offset_ps, motion_source_);
+    got->clear();
+  };
+}
+
+// Every output is checked before anything is simulated: folders made, files writable.
+void Session::build_outputs(scm::TimedRunOptions& opt) {
+  const OutputSpec& o = spec_.out;
+  if (o.every > 0 || o.photon_times) {
+    std::error_code ec;
+    fs::create_directories(o.out_dir, ec);
+    if (ec || !fs::is_directory(o.out_dir))
+      throw InputError(o.out_dir, "", "cannot create the output folder" + (ec ? ": " + ec.message() : std::string()));
+  }
+  if (!o.host_csv.empty()) temp_path_beside(o.host_csv);  // its folder exists
+  log_ = std::make_unique<FrameLog>(o.csv, o.report, frame_csv_header());
+  if (o.vcd.empty()) return;
+  vcd_final_ = vcd_path(o.vcd);
+  vcd_tmp_base_ = temp_path_beside(vcd_final_).string();
+  opt.vcd.path = vcd_tmp_base_;
+  if (!o.vcd_lines.empty()) {
+    const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);
+    if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", o.vcd_lines, "lines must be whole numbers >= 0");
+    const int64_t base = timing_.frame_start_cycle(spec_.first_frame);
+    opt.vcd.from_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * spec_.config.timing.h_total());
+    opt.vcd.to_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * spec_.config.timing.h_total());
+  } else if (!o.vcd_time_us.empty()) {
+    const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
+    opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
+    opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
+  }
+}
+
+// --stall STAGE:CLOCK:CYCLES, CLOCK counted from the first frame's first active pixel.
+std::vector<stage::StallWindow> Session::stall_windows() const {
+  std::vector<stage::StallWindow> out;
+  for (const std::string& spec : spec_.stalls) {
+    const auto c1 = spec.find(':'), c2 = spec.find(':', c1 == std::string::npos ? 0 : c1 + 1);
+    stage::StallWindow w{dp::Stage::Lens, 0, 0};
+    bool ok = c1 != std::string::npos && c2 != std::string::npos;
+    if (ok) {
+      const std::string name = spec.substr(0, c1);
+      ok = false;
+      for (int k = 0; k + 1 < dp::kStageCount; ++k)
+        if (name == dp::stage_key(static_cast<dp::Stage>(k))) {
+          w.stage = static_cast<dp::Stage>(k);
+          ok = true;
+        }
+      try {
+        size_t n1 = 0, n2 = 0;
+        const std::string a1 = spec.substr(c1 + 1, c2 - c1 - 1), a2 = spec.substr(c2 + 1);
+        w.first_cycle = timing_.frame_start_cycle(spec_.first_frame) + std::stoll(a1, &n1);
+        w.cycles = std::stoll(a2, &n2);
+        ok = ok && n1 == a1.size() && n2 == a2.size() && w.cycles > 0 && w.cycles <= 1'000'000'000;
+      } catch (const std::exception&) {
+        ok = false;
+      }
+    }
+    if (!ok)
+      throw InputError("--stall", spec,
+                       "expected STAGE:CLOCK:CYCLES with STAGE one of lens, rotate, address, fetch, compose, filter "
+                       "and CYCLES >= 1");
+    if (fidelity_ != scm::Fidelity::Detailed && fidelity_ != scm::Fidelity::Cycle)
+      throw InputError("--stall", spec, "stalls exist only at the cycle-accurate levels (cycle, detailed)");
+    out.push_back(w);
+  }
+  return out;
+}
+
+void Session::on_scanned_out(const HmdFrame& f, const stage::FrameReport& r) {
+  const OutputSpec& o = spec_.out;
+  const std::string ph = pixel_hash(f), th = photon_hash(f);
+  const int64_t k = r.frame - spec_.first_frame;
+  if (o.every > 0 && k % o.every == 0) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%06" PRId64 ".png", r.frame);
+    host::write_rgb8((fs::path(o.out_dir) / name).string(), frame_to_image(f));
+    ++images_;
+    if (o.photon_times) {
+      std::snprintf(name, sizeof name, "photon_%06" PRId64 ".csv", r.frame);
+      std::string text = "eye,x,y,photon_ps\n";
+      for (int e = 0; e < f.eyes; ++e)
+        for (int y = 0; y < f.height; ++y)
+          for (int x = 0; x < f.width; ++x)
+            text += std::to_string(e) + "," + std::to_string(x) + "," + std::to_string(y) + "," +
+                    std::to_string(f.photon_ps[f.index(e, x, y)]) + "\n";
+      write_text_atomic((fs::path(o.out_dir) / name).string(), text);
+    }
+  }
+  const auto [lo, hi] = dp::LatchRule(spec_.config).frame_samples(stream_, r.frame);
+  nlohmann::json row = frame_row(r, lo, hi, ph, th);
+  if (probe_ && k % o.error_every == 0) {
+    nlohmann::json err;
+    probe_->measure(f, r.frame, err);
+    row["error"] = err["error"];
+  }
+  log_->add(row, frame_csv_row(r, ph, th));
+  if (on_frame) on_frame(f, r);
+}
+
+RunSummary Session::run() {
+  const OutputSpec& o = spec_.out;
+  scm::TimedRunOptions opt;
+  opt.fidelity = fidelity_;
+  opt.threads = spec_.threads;
+  opt.speculate = spec_.speculate;
+  opt.progress = on_progress;
+  build_outputs(opt);
+
+  stage::TimedInputs in;
+  in.config = spec_.config;
+  in.memories = &memories_;
+  in.orientation = &stream_;
+  in.first_frame = spec_.first_frame;
+  in.frames = spec_.frames;
+  in.stalls = stall_windows();
+  if (live_) build_live_input(in);
+  if (host_)
+    in.before_frame = [this](int64_t frame, double tt) {
+      const auto w0 = Clock::now();
+      host_->before_frame(frame, tt);
+      host_wall_s_ += std::chrono::duration<double>(Clock::now() - w0).count();
+      baseline_triangles_ += host_->full_render_triangles(tt);
+    };
+  // Error against the truth (TruthProbe): every --error-every-th frame of a walk.
+  if (host_ && o.error_every > 0) {
+    TruthProbeSetup ps;
+    ps.config = &spec_.config;
+    ps.scene = scene_.get();
+    ps.walk = walk_.get();
+    ps.host = host_.get();
+    ps.memories = &memories_;
+    ps.orientation = &stream_;
+    ps.segmented = regions_ ? &segmented_ : nullptr;
+    ps.ipd_m = spec_.memories.ipd_m;
+    ps.threads = spec_.threads;
+    ps.first_frame = spec_.first_frame;
+    ps.frames = spec_.frames;
+    ps.every = o.error_every;
+    ps.tear_image = o.tear_image;
+    ps.tear_at = o.tear_at;
+    probe_ = std::make_unique<TruthProbe>(ps);
+  }
+  std::vector<int64_t> medians;
+  int64_t worst = 0, best = INT64_MAX;
+  in.sink = [&](const HmdFrame& f, const stage::FrameReport& r) {
+    worst = std::max(worst, r.latency_max_ps);
+    best = std::min(best, r.latency_min_ps);
+    medians.push_back(r.latency_median_ps);
+    on_scanned_out(f, r);
+  };
+
+  scm::TimedResult res;
+  try {
+    res = scm::run_timed(in, opt);
+  } catch (...) {
+    if (!vcd_tmp_base_.empty()) discard_temp_file(vcd_tmp_base_ + ".vcd");
+    throw;
+  }
+  RunSummary s;
+  if (!vcd_final_.empty()) {
+    commit_temp_file(vcd_tmp_base_ + ".vcd", vcd_final_);
+    s.vcd = vcd_final_;
+    s.gtkw = fs::path(vcd_final_).replace_extension(".gtkw").string();
+    write_text_atomic(s.gtkw, gtkw_for_vcd(vcd_final_, fs::path(vcd_final_).filename().string()));
+  }
+  std::sort(medians.begin(), medians.end());
+  s.fidelity = scm::to_string(fidelity_);
+  s.motion_source = motion_source_;
+  s.memory_source = memory_source_;
+  s.first_frame = spec_.first_frame;
+  s.frames = spec_.frames;
+  s.latency_min_ps = best;
+  s.latency_median_ps = medians[medians.size() / 2];
+  s.latency_max_ps = worst;
+  s.cycle_accurate = fidelity_ == scm::Fidelity::Detailed || fidelity_ == scm::Fidelity::Cycle;
+  s.underflows = res.underflows;
+  s.late_discarded = res.late_discarded;
+  s.swaps = res.swaps;
+  s.pixel_clocks = res.end_cycle - res.first_cycle;
+  s.wall_seconds = res.wall_seconds;
+  s.images = images_;
+  s.out_dir = o.out_dir;
+  if (!poses_.empty() && poses_.back().time_ps < end_ps_) {
+    char b[160];
+    std::snprintf(b, sizeof b, "  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)",
+                  seconds_of(poses_.back().time_ps));
+    s.notes.push_back(b);
+  }
+  if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
+
+  nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
+  r["motion"] = motion_source_;
+  r["cube_map"] = memory_source_;
+  r["images"] = images_;
+  if (live_) {
+    tracker::StreamStats st;
+    live_->usb_stats(st);
+    r["live"] = {{"source", motion_source_}, {"samples", live_samples_}, {"reports", st.reports}, {"malformed", st.malformed},
+                 {"disconnects", st.disconnects}, {"reconnects", st.reconnects}, {"keep_alives", st.keep_alives},
+                 {"connected_at_end", live_->connected()}};
+  }
+  if (host_) {
+    const double px_rad = deg_to_rad(spec_.config.lens.fov_deg) / spec_.config.timing.h_active;
+    r["host"] = host_report(*host_, spec_, timing_.refresh_hz(), baseline_triangles_, host_wall_s_, regions_.get(),
+                            grid_.get(), segmented_, scene_->objects.size(), px_rad);
+    if (probe_ && probe_->measured()) r["host"]["error"] = probe_->summary();
+    if (!o.host_csv.empty()) write_text_atomic(o.host_csv, host_csv(r["host"]["memories"]));
+  }
+  log_->finish(o.report.empty() ? nlohmann::json() : r);
+  return s;
+}
+
+}  // namespace arp::sim

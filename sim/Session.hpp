@@ -1,0 +1,76 @@
+// One run, as a library: from a RunSpec it builds the head motion (trace,
+// synthetic, a walk, or a live tracker), the display memories (a cube map, or
+// a host simulating priority rendering over a walk), the probes (error
+// against the truth), checks every output can be written, then drives the
+// pipeline at the chosen fidelity frame by frame and writes the outputs.
+// `arpsim run`, the benches and the tests all run through it.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "HostReport.hpp"
+#include "RunReport.hpp"
+#include "RunSpec.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/priority/HostSimulation.hpp"
+#include "host/regions/RegionScheduler.hpp"
+#include "host/regions/Segmentation.hpp"
+#include "rtl_model/systemc/TimedRun.hpp"
+#include "tracker/PoseSource.hpp"
+
+namespace arp::sim {
+
+class TruthProbe;
+
+class Session {
+ public:
+  // Validates the spec and builds everything a run needs; InputError (naming
+  // the option, file or key) before anything is simulated or written.
+  explicit Session(RunSpec spec);
+  ~Session();
+
+  // Hooks: progress (fraction done, what), and each frame as it is scanned out.
+  std::function<void(double, const std::string&)> on_progress;
+  std::function<void(const HmdFrame&, const stage::FrameReport&)> on_frame;
+
+  // Runs the pipeline and writes the outputs; the summary for the command to print.
+  RunSummary run();
+
+  const RunSpec& spec() const { return spec_; }
+  scm::Fidelity fidelity() const { return fidelity_; }
+  const std::string& motion_source() const { return motion_source_; }
+  const std::string& memory_source() const { return memory_source_; }
+
+ private:
+  void build_motion();
+  void build_memories();
+  void build_live_input(stage::TimedInputs& in);
+  void build_outputs(scm::TimedRunOptions& opt);
+  std::vector<stage::StallWindow> stall_windows() const;
+  void on_scanned_out(const HmdFrame& f, const stage::FrameReport& r);
+
+  RunSpec spec_;
+  scm::Fidelity fidelity_ = scm::Fidelity::Functional;
+  dp::VideoTiming timing_;
+  int64_t start_ps_ = 0, end_ps_ = 0;
+  std::vector<tracker::PoseSample> poses_;
+  std::string motion_source_ = "still head", memory_source_;
+  std::unique_ptr<host::WalkPath> walk_;
+  std::unique_ptr<tracker::PoseSource> live_;
+  dp::OrientationStream stream_;
+  dp::DisplayMemorySet memories_;
+  std::unique_ptr<host::Scene> scene_;
+  std::unique_ptr<host::HostSimulation> host_;
+  std::unique_ptr<host::RegionGrid> grid_;
+  std::unique_ptr<host::RegionScheduler> regions_;
+  host::Segmented segmented_;
+  std::unique_ptr<TruthProbe> probe_;
+  std::unique_ptr<FrameLog> log_;
+  std::string vcd_final_, vcd_tmp_base_;
+  int64_t images_ = 0, live_samples_ = 0, baseline_triangles_ = 0;
+  double host_wall_s_ = 0;
+};
+
+}  // namespace arp::sim

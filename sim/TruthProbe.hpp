@@ -1,0 +1,82 @@
+// The error of a priority-rendered walk against the truth, for `arpsim run
+// --walk`: fresh memories rendered, everything, for the true eye positions at
+// the frame's middle and read through the same pipeline. Per measured frame:
+// PSNR, the largest tracked-point displacement, the share of pixels showing
+// another object (found through the pipeline's own addressing and depth
+// composition), and with regions the tear, gap and crack pixels along the
+// seams (host/error/SeamMetrics) and the magnified tear (host/error/TearImage).
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/cubemap/CubeMapImages.hpp"
+#include "host/error/TearImage.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/priority/HostSimulation.hpp"
+#include "host/regions/Segmentation.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "rtl_model/datapath/LensVectorTable.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+#include "rtl_model/functional/FunctionalModel.hpp"
+
+namespace arp::sim {
+
+struct TruthProbeSetup {
+  const dp::ArpConfig* config = nullptr;
+  const host::Scene* scene = nullptr;
+  const host::WalkPath* walk = nullptr;
+  const host::HostSimulation* host = nullptr;
+  const dp::DisplayMemorySet* memories = nullptr;
+  const dp::OrientationStream* orientation = nullptr;
+  const host::Segmented* segmented = nullptr;  // region mode with segmentation; nullptr otherwise
+  double ipd_m = 0.064;
+  int threads = 0;
+  int64_t first_frame = 0, frames = 1, every = 1;  // the frames measured: first + k * every
+  std::string tear_image, tear_at;                 // --tear-image, --tear-at FRAME:EYE:X:Y
+};
+
+class TruthProbe {
+ public:
+  // InputError for a --tear-at that this run will not measure or that falls outside the image.
+  explicit TruthProbe(const TruthProbeSetup& s);
+  ~TruthProbe();
+  // Measures frame `frame` (shown as `f`); its per-frame figures go into out["error"].
+  void measure(const HmdFrame& f, int64_t frame, nlohmann::json& out);
+  bool measured() const { return !psnrs_.empty(); }
+  // The run's summary (means and worsts) for the report.
+  nlohmann::json summary() const;
+  // Writes the magnified tear; returns the line to print. InputError if no measured frame had a seam.
+  std::string write_tear_image() const;
+
+  static constexpr int kTearWindowW = 48, kTearWindowH = 32, kTearScale = 8;
+
+ private:
+  struct TearAt {
+    int64_t frame = -1;
+    int eye = 0, x = 0, y = 0;
+  };
+  TruthProbeSetup s_;
+  TearAt tear_at_;
+  dp::ArpConfig truth_cfg_;
+  std::unique_ptr<dp::DisplayMemorySet> truth_mem_;
+  std::unique_ptr<FunctionalModel> truth_model_;
+  dp::LensVectorTable lens_;
+  dp::RotateParams rot_;
+  dp::AddressGeneratorParams addr_;
+  dp::LatchRule latch_;
+  double px_rad_;
+  std::vector<std::vector<host::FaceImage>> truth_ids_;
+  std::vector<double> psnrs_;
+  double worst_px_ = 0, worst_object_share_ = 0;
+  std::vector<int64_t> tears_, gaps_, cracks_;
+  host::TearWindow tear_best_;
+  int64_t tear_frame_ = -1;
+  host::RgbImage tear_picture_;
+};
+
+}  // namespace arp::sim
