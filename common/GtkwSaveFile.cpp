@@ -1,5 +1,8 @@
 #include "GtkwSaveFile.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -10,6 +13,8 @@
 namespace arp {
 
 namespace {
+constexpr double kWavePixels = 1000;  // [size] 1600 wide, less the tree and signal panes
+
 struct Var {
   std::string path;  // scope.name[range]
   std::string group;
@@ -43,7 +48,7 @@ int group_rank(const std::string& g) {
 }
 }  // namespace
 
-std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile) {
+std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile, int64_t view) {
   std::ifstream in(vcd_path);
   if (!in) throw InputError(vcd_path, "", "cannot read the waveform");
   std::vector<std::string> scope;
@@ -85,12 +90,29 @@ std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfil
     }
   }
   if (vars.empty()) throw InputError(vcd_path, "", "declares no signals");
+  // Where the view opens: the first timestamp after the header; with no
+  // view given, as far as the 200th timestamp (about a hundred clocks: each
+  // edge readable) or the end of the trace, whichever comes first.
+  int64_t first = -1, last = -1;
+  for (int stamps = 0; stamps < 200 && std::getline(in, line);)
+    if (!line.empty() && line[0] == '#') {
+      last = std::stoll(line.substr(1));
+      if (first < 0) first = last;
+      ++stamps;
+    }
+  if (first < 0) first = last = 0;
+  if (view <= 0) view = std::max<int64_t>(1, last - first);
+  // GTKWave shows 2^-zoom time units per pixel; the wave area is about 1000 pixels of the window below.
+  const double zoom = std::clamp(-std::log2(static_cast<double>(view) / kWavePixels), -62.0, 0.0);
   std::map<int, std::map<std::string, std::vector<const Var*>>> groups;
   for (const auto& v : vars) groups[group_rank(v.group)][v.group].push_back(&v);
   std::ostringstream o;
   o << "[*] arpsim waveform view: one group per pipeline stage, in data-flow order\n";
+  // Where the view opens (this VCD's window), then the signals (the same for every VCD of a model).
+  char z[64];
+  std::snprintf(z, sizeof z, "*%.6f -1\n", zoom);
+  o << "[timestart] " << first << "\n" << z;
   o << "[dumpfile] \"" << dumpfile << "\"\n";
-  o << "[timestart] 0\n";
   o << "[size] 1600 900\n";
   o << "[sst_width] 260\n";
   o << "[signals_width] 320\n";

@@ -376,7 +376,9 @@ RunSummary Session::run() {
     commit_temp_file(vcd_tmp_base_ + ".vcd", vcd_final_);
     s.vcd = vcd_final_;
     s.gtkw = fs::path(vcd_final_).replace_extension(".gtkw").string();
-    write_text_atomic(s.gtkw, gtkw_for_vcd(vcd_final_, fs::path(vcd_final_).filename().string()));
+    // The view opens on the traced window's first two lines.
+    const int64_t two_lines = timing_.cycles_to_ps(2 * int64_t{spec_.config.timing.h_total()});
+    write_text_atomic(s.gtkw, gtkw_for_vcd(vcd_final_, fs::path(vcd_final_).filename().string(), two_lines));
   }
   std::sort(medians.begin(), medians.end());
   s.fidelity = scm::to_string(fidelity_);

@@ -4,6 +4,7 @@
 // come with a GTKWave save file; bad timed input is refused before simulating.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -78,6 +79,25 @@ TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
   auto body = [](std::string s) { return s.substr(s.find('\n', s.find("[dumpfile]"))); };
   EXPECT_EQ(body(read_all(d.file("w/arp.gtkw"))), body(read_all(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/arp.gtkw")));
   EXPECT_NE(read_all(d.file("w/arp.gtkw")).find("SystemC.arp.video_timing_generator.h_count[31:0]"), std::string::npos);
+  // The view opens at the traced window (the VCD's first timestamp, not 0) zoomed to two lines
+  // (2^-zoom ps per pixel across 1000 pixels), where the scan moves.
+  const std::string gtkw = read_all(d.file("w/arp.gtkw"));
+  const auto ts = gtkw.find("[timestart] "), zl = gtkw.find("\n*");
+  ASSERT_NE(ts, std::string::npos);
+  ASSERT_NE(zl, std::string::npos);
+  const int64_t start = std::stoll(gtkw.substr(ts + 12)), first = std::stoll(vcd.substr(vcd.find("\n#") + 2));
+  EXPECT_EQ(start, first);
+  EXPECT_GT(start, 0);
+  const double span = std::pow(2.0, -std::stod(gtkw.substr(zl + 2))) * 1000;
+  EXPECT_NEAR(span, 2 * 800 * 1e12 / 25'175'000, 1e3);  // two 800-clock lines at 25.175 MHz
+  int changes = 0;
+  int64_t t = -1;
+  std::istringstream lines(vcd.substr(vcd.find("$enddefinitions")));
+  for (std::string l; std::getline(lines, l);) {
+    if (!l.empty() && l[0] == '#') t = std::stoll(l.substr(1));
+    else if (t >= start && t <= start + static_cast<int64_t>(span) && !l.empty() && l[0] != '$') ++changes;
+  }
+  EXPECT_GT(changes, 1000);
   // No temporary file is left behind.
   size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(d.file("w"))) ++files;
