@@ -89,28 +89,19 @@ class ParameterTable {
  public:
   template <class Ref>
   ParameterTable& integer(std::string key, Ref ref, int64_t lo, int64_t hi, std::string unit, std::string doc) {
-    Parameter<Root> p = base(std::move(key), ParamType::Integer, std::move(unit), std::move(doc));
-    p.int_min = lo;
-    p.int_max = hi;
-    p.get = [ref](const Root& r) { return ParamValue(static_cast<int64_t>(ref(r))); };
-    p.set = [ref](Root& r, const ParamValue& v) {
-      using T = std::remove_reference_t<decltype(ref(r))>;
-      ref(r) = static_cast<T>(std::get<int64_t>(v));
-      return true;
-    };
-    return add(std::move(p));
+    return add(bounded(scalar<int64_t>(std::move(key), ParamType::Integer, ref, std::move(unit), std::move(doc)), lo, hi));
   }
   template <class Ref>
   ParameterTable& real(std::string key, Ref ref, double lo, double hi, std::string unit, std::string doc) {
-    Parameter<Root> p = base(std::move(key), ParamType::Real, std::move(unit), std::move(doc));
-    p.real_min = lo;
-    p.real_max = hi;
-    p.get = [ref](const Root& r) { return ParamValue(static_cast<double>(ref(r))); };
-    p.set = [ref](Root& r, const ParamValue& v) {
-      ref(r) = std::get<double>(v);
-      return true;
-    };
-    return add(std::move(p));
+    return add(bounded(scalar<double>(std::move(key), ParamType::Real, ref, std::move(unit), std::move(doc)), lo, hi));
+  }
+  template <class Ref>
+  ParameterTable& integer_array(std::string key, Ref ref, int64_t lo, int64_t hi, std::string unit, std::string doc) {
+    return add(bounded(array<int64_t>(std::move(key), ParamType::IntegerArray, ref, std::move(unit), std::move(doc)), lo, hi));
+  }
+  template <class Ref>
+  ParameterTable& real_array(std::string key, Ref ref, double lo, double hi, std::string unit, std::string doc) {
+    return add(bounded(array<double>(std::move(key), ParamType::RealArray, ref, std::move(unit), std::move(doc)), lo, hi));
   }
   template <class E, class Ref>
   ParameterTable& choice(std::string key, Ref ref, const EnumNames<E>& names, std::string doc) {
@@ -118,43 +109,6 @@ class ParameterTable {
     for (const auto& [e, n] : names) p.choices.push_back(n);
     p.get = [ref, names](const Root& r) { return ParamValue(enum_name(names, ref(r))); };
     p.set = [ref, names](Root& r, const ParamValue& v) { return enum_parse(names, std::get<std::string>(v), ref(r)); };
-    return add(std::move(p));
-  }
-  template <class Ref>
-  ParameterTable& integer_array(std::string key, Ref ref, int64_t lo, int64_t hi, std::string unit, std::string doc) {
-    Parameter<Root> p = base(std::move(key), ParamType::IntegerArray, std::move(unit), std::move(doc));
-    p.int_min = lo;
-    p.int_max = hi;
-    p.array_size = std::tuple_size_v<std::remove_reference_t<decltype(ref(std::declval<Root&>()))>>;
-    p.get = [ref](const Root& r) {
-      std::vector<int64_t> v;
-      for (const auto& e : ref(r)) v.push_back(static_cast<int64_t>(e));
-      return ParamValue(v);
-    };
-    p.set = [ref](Root& r, const ParamValue& v) {
-      auto& a = ref(r);
-      const auto& in = std::get<std::vector<int64_t>>(v);
-      for (size_t i = 0; i < a.size(); ++i) a[i] = static_cast<std::remove_reference_t<decltype(a[i])>>(in[i]);
-      return true;
-    };
-    return add(std::move(p));
-  }
-  template <class Ref>
-  ParameterTable& real_array(std::string key, Ref ref, double lo, double hi, std::string unit, std::string doc) {
-    Parameter<Root> p = base(std::move(key), ParamType::RealArray, std::move(unit), std::move(doc));
-    p.real_min = lo;
-    p.real_max = hi;
-    p.array_size = std::tuple_size_v<std::remove_reference_t<decltype(ref(std::declval<Root&>()))>>;
-    p.get = [ref](const Root& r) {
-      const auto& a = ref(r);
-      return ParamValue(std::vector<double>(a.begin(), a.end()));
-    };
-    p.set = [ref](Root& r, const ParamValue& v) {
-      auto& a = ref(r);
-      const auto& in = std::get<std::vector<double>>(v);
-      for (size_t i = 0; i < a.size(); ++i) a[i] = in[i];
-      return true;
-    };
     return add(std::move(p));
   }
 
@@ -187,6 +141,47 @@ class ParameterTable {
   }
 
  private:
+  static Parameter<Root> bounded(Parameter<Root> p, int64_t lo, int64_t hi) {
+    p.int_min = lo;
+    p.int_max = hi;
+    return p;
+  }
+  static Parameter<Root> bounded(Parameter<Root> p, double lo, double hi) {
+    p.real_min = lo;
+    p.real_max = hi;
+    return p;
+  }
+  // A number, read and written as V (int64_t or double) whatever the field's own type.
+  template <class V, class Ref>
+  static Parameter<Root> scalar(std::string key, ParamType t, Ref ref, std::string unit, std::string doc) {
+    Parameter<Root> p = base(std::move(key), t, std::move(unit), std::move(doc));
+    p.get = [ref](const Root& r) { return ParamValue(static_cast<V>(ref(r))); };
+    p.set = [ref](Root& r, const ParamValue& v) {
+      using T = std::remove_reference_t<decltype(ref(r))>;
+      ref(r) = static_cast<T>(std::get<V>(v));
+      return true;
+    };
+    return p;
+  }
+  // A std::array of numbers, read and written as std::vector<V>.
+  template <class V, class Ref>
+  static Parameter<Root> array(std::string key, ParamType t, Ref ref, std::string unit, std::string doc) {
+    Parameter<Root> p = base(std::move(key), t, std::move(unit), std::move(doc));
+    p.array_size = std::tuple_size_v<std::remove_reference_t<decltype(ref(std::declval<Root&>()))>>;
+    p.get = [ref](const Root& r) {
+      const auto& a = ref(r);
+      std::vector<V> out;
+      for (const auto& e : a) out.push_back(static_cast<V>(e));
+      return ParamValue(out);
+    };
+    p.set = [ref](Root& r, const ParamValue& v) {
+      auto& a = ref(r);
+      const auto& in = std::get<std::vector<V>>(v);
+      for (size_t i = 0; i < a.size(); ++i) a[i] = static_cast<std::remove_reference_t<decltype(a[i])>>(in[i]);
+      return true;
+    };
+    return p;
+  }
   static Parameter<Root> base(std::string key, ParamType t, std::string unit, std::string doc) {
     if (key.find('.') == std::string::npos) throw std::logic_error("parameter key without a section: " + key);
     Parameter<Root> p;

@@ -5,18 +5,9 @@
 namespace arp::lab {
 
 dp::VideoTimingConfig ntsc_like_timing() {
-  dp::VideoTimingConfig t;
-  t.eyes = 1;
-  t.h_active = 600;
-  t.h_front_porch = 20;
-  t.h_sync = 60;
-  t.h_back_porch = 100;  // 780 clocks per line
-  t.v_active = 480;
-  t.v_front_porch = 14;
-  t.v_sync = 6;
-  t.v_back_porch = 25;   // 525 lines
+  // 780 clocks per line, 525 lines, 780 x 525 x 29.97 Hz; interlaced.
+  dp::VideoTimingConfig t = dp::VideoTimingConfig::mode(1, {600, 20, 60, 100}, {480, 14, 6, 25}, 12'272'727);
   t.fields_per_frame = 2;
-  t.pixel_clock_hz = 12'272'727;  // 780 x 525 x 29.97 Hz
   return t;
 }
 

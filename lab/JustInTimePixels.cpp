@@ -7,21 +7,9 @@
 
 namespace arp::lab {
 
-bool parse_jit_mode(const std::string& s, JitMode& out) {
-  if (s == "scanline") out = JitMode::PerScanline;
-  else if (s == "two-per-field") out = JitMode::TwoPerField;
-  else if (s == "pixel") out = JitMode::PerPixel;
-  else return false;
-  return true;
-}
-
-const char* to_string(JitMode m) {
-  switch (m) {
-    case JitMode::PerScanline: return "scanline";
-    case JitMode::TwoPerField: return "two-per-field";
-    case JitMode::PerPixel: return "pixel";
-  }
-  return "?";
+const EnumNames<JitMode>& jit_mode_names() {
+  static const EnumNames<JitMode> n{{JitMode::PerScanline, "scanline"}, {JitMode::TwoPerField, "two-per-field"}, {JitMode::PerPixel, "pixel"}};
+  return n;
 }
 
 JustInTimePixels::JustInTimePixels(const DisplayRaster& d, const JitConfig& c, const std::string& source) : d_(d), c_(c) {

@@ -11,12 +11,14 @@
 // field transforms, or a pixel; a scene that does not fit cannot be shown.
 #pragma once
 #include "DisplayArchitecture.hpp"
+#include "common/Parameter.hpp"
 
 namespace arp::lab {
 
 enum class JitMode { PerScanline, TwoPerField, PerPixel };
-bool parse_jit_mode(const std::string& s, JitMode& out);
-const char* to_string(JitMode m);
+const EnumNames<JitMode>& jit_mode_names();  // scanline, two-per-field, pixel
+inline bool parse_jit_mode(const std::string& s, JitMode& out) { return enum_parse(jit_mode_names(), s, out); }
+inline std::string to_string(JitMode m) { return enum_name(jit_mode_names(), m); }
 
 struct JitConfig {
   JitMode mode = JitMode::PerScanline;

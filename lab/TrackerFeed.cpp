@@ -8,21 +8,9 @@
 
 namespace arp::lab {
 
-bool parse_prediction(const std::string& s, Prediction& out) {
-  if (s == "none") out = Prediction::None;
-  else if (s == "velocity") out = Prediction::Velocity;
-  else if (s == "acceleration") out = Prediction::Acceleration;
-  else return false;
-  return true;
-}
-
-const char* to_string(Prediction p) {
-  switch (p) {
-    case Prediction::None: return "none";
-    case Prediction::Velocity: return "velocity";
-    case Prediction::Acceleration: return "acceleration";
-  }
-  return "?";
+const EnumNames<Prediction>& prediction_names() {
+  static const EnumNames<Prediction> n{{Prediction::None, "none"}, {Prediction::Velocity, "velocity"}, {Prediction::Acceleration, "acceleration"}};
+  return n;
 }
 
 TrackerFeed::TrackerFeed(std::vector<tracker::PoseSample> truth, const TrackerModel& model, const std::string& source)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tracker/PoseSample.hpp"
+#include "common/Parameter.hpp"
 
 namespace arp::lab {
 
@@ -22,8 +23,9 @@ struct TrackerModel {
 };
 
 enum class Prediction { None, Velocity, Acceleration };
-bool parse_prediction(const std::string& s, Prediction& out);
-const char* to_string(Prediction p);
+const EnumNames<Prediction>& prediction_names();  // none, velocity, acceleration
+inline bool parse_prediction(const std::string& s, Prediction& out) { return enum_parse(prediction_names(), s, out); }
+inline std::string to_string(Prediction p) { return enum_name(prediction_names(), p); }
 
 class TrackerFeed {
  public:

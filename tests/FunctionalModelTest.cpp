@@ -82,15 +82,10 @@ OrientationStream fast_turn(const VideoTiming& t, int64_t frame) {
 }
 
 ArpConfig small(ArpConfig c) {
-  c.timing.h_active = 160;
-  c.timing.v_active = 120;
-  c.timing.h_front_porch = 8;
-  c.timing.h_sync = 16;
-  c.timing.h_back_porch = 16;
-  c.timing.v_front_porch = 2;
-  c.timing.v_sync = 2;
-  c.timing.v_back_porch = 6;
-  c.timing.pixel_clock_hz = 1'400'000;
+  const auto t = c.timing;
+  c.timing = VideoTimingConfig::mode(t.eyes, {160, 8, 16, 16}, {120, 2, 2, 6}, 1'400'000);
+  c.timing.eye_scan = t.eye_scan;
+  c.timing.fields_per_frame = t.fields_per_frame;
   return c;
 }
 

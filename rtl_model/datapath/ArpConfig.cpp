@@ -12,10 +12,7 @@ const EnumNames<EyeScan>& eye_scan_names() {
   return n;
 }
 const EnumNames<LatchPolicy>& latch_policy_names() {
-  static const EnumNames<LatchPolicy> n{{LatchPolicy::PerFrame, "frame"},
-                                        {LatchPolicy::PerField, "field"},
-                                        {LatchPolicy::PerScanline, "scanline"},
-                                        {LatchPolicy::PerPixel, "pixel"}};
+  static const EnumNames<LatchPolicy> n{{LatchPolicy::PerFrame, "frame"}, {LatchPolicy::PerField, "field"}, {LatchPolicy::PerScanline, "scanline"}, {LatchPolicy::PerPixel, "pixel"}};
   return n;
 }
 const EnumNames<DividerKind>& divider_names() {

@@ -40,6 +40,15 @@ struct VideoTimingConfig {
   int64_t pixel_clock_hz = 25'175'000;
   int fields_per_frame = 1;       // 1 progressive, 2 interlaced (odd lines in field 1)
   int h_total() const { return (eye_scan == EyeScan::SideBySide ? eyes : 1) * h_active + h_front_porch + h_sync + h_back_porch; }
+  // A mode from its numbers: active, front porch, sync, back porch for each direction, and the clock.
+  static VideoTimingConfig mode(int eyes, std::array<int, 4> h, std::array<int, 4> v, int64_t pixel_clock_hz) {
+    VideoTimingConfig c;
+    c.eyes = eyes;
+    c.h_active = h[0], c.h_front_porch = h[1], c.h_sync = h[2], c.h_back_porch = h[3];
+    c.v_active = v[0], c.v_front_porch = v[1], c.v_sync = v[2], c.v_back_porch = v[3];
+    c.pixel_clock_hz = pixel_clock_hz;
+    return c;
+  }
   int v_total() const { return v_active + v_front_porch + v_sync + v_back_porch; }
 };
 

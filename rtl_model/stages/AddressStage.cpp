@@ -3,7 +3,7 @@
 namespace arp::stage {
 
 AddressStage::AddressStage(const StageContext& ctx)
-    : RegisteredStage(ctx, kId),
+    : RegisteredStage(ctx),
       addr_(ctx.config().widths, ctx.config().memory.face_size),
       memo_(dp::tabulate_aligned_reciprocal(addr_, ctx.config().widths)),
       memo_ptr_(memo_.empty() ? nullptr : memo_.data()) {}

@@ -3,26 +3,23 @@
 // divider), face coordinates and the texel address with its sub-texel bits;
 // timed.address_latency clocks.
 #pragma once
+#include <array>
+
 #include <vector>
 
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
 namespace arp::stage {
 
-class AddressStage : public RegisteredStage<RotatedToken, AddressToken> {
+class AddressStage : public RegisteredStage<AddressStage, RotatedToken, AddressToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Address;
+  static constexpr const StageInfo& kInfo = kAddressInfo;
   explicit AddressStage(const StageContext& ctx);
 
-  template <class InFifo, class OutFifo>
-  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
-    tick_with(cycle, in, out, [this](const RotatedToken& t, AddressToken& o) { compute(t, o); });
-  }
   void compute(const RotatedToken& in, AddressToken& t) const {
-    t.slot = in.slot;
-    t.sample = in.sample;
-    for (int k = 0; k < in.slot.eye_count; ++k) t.address[k] = dp::generate_address(in.world[k], addr_, memo_ptr_);
+    for_each_eye(in, t, [&](int k) { t.address[k] = dp::generate_address(in.world[k], addr_, memo_ptr_); });
   }
 
  private:

@@ -2,32 +2,29 @@
 // compare; ties to the lower memory; all empty shows the background);
 // timed.compose_latency clocks.
 #pragma once
+#include <array>
+
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/CompositionUnit.hpp"
 
 namespace arp::stage {
 
-class CompositionStage : public RegisteredStage<FetchToken, ComposedToken> {
+class CompositionStage : public RegisteredStage<CompositionStage, FetchToken, ComposedToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Compose;
+  static constexpr const StageInfo& kInfo = kCompositionInfo;
   explicit CompositionStage(const StageContext& ctx)
-      : RegisteredStage(ctx, kId),
+      : RegisteredStage(ctx),
         comp_(dp::MemoryFormat(ctx.config().memory), ctx.config().memory.background),
         memories_(ctx.config().memory.count),
         taps_(ctx.config().pipeline.aa == dp::AaMode::Bilinear ? 4 : 1) {}
 
-  template <class InFifo, class OutFifo>
-  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
-    tick_with(cycle, in, out, [this](const FetchToken& t, ComposedToken& o) { compute(t, o); });
-  }
   void compute(const FetchToken& in, ComposedToken& t) const {
-    t.slot = in.slot;
-    t.sample = in.sample;
-    for (int k = 0; k < in.slot.eye_count; ++k) {
+    for_each_eye(in, t, [&](int k) {
       t.wx[k] = in.wx[k];
       t.wy[k] = in.wy[k];
       for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], memories_, comp_).color;
-    }
+    });
   }
 
  private:

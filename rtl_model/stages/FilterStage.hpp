@@ -1,31 +1,28 @@
 // Anti-aliasing filter: the four composited taps blended with the sub-texel
 // weights (rounded half up), or the nearest tap when off; timed.filter_latency clocks.
 #pragma once
+#include <array>
+
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 
 namespace arp::stage {
 
-class FilterStage : public RegisteredStage<ComposedToken, ColorToken> {
+class FilterStage : public RegisteredStage<FilterStage, ComposedToken, ColorToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Filter;
+  static constexpr const StageInfo& kInfo = kFilterInfo;
   explicit FilterStage(const StageContext& ctx)
-      : RegisteredStage(ctx, kId),
+      : RegisteredStage(ctx),
         layout_(dp::MemoryFormat(ctx.config().memory)),
         texel_frac_(ctx.config().widths.texel_frac),
         bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear) {}
 
-  template <class InFifo, class OutFifo>
-  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
-    tick_with(cycle, in, out, [this](const ComposedToken& t, ColorToken& o) { compute(t, o); });
-  }
   void compute(const ComposedToken& in, ColorToken& t) const {
-    t.slot = in.slot;
-    t.sample = in.sample;
-    for (int k = 0; k < in.slot.eye_count; ++k) {
+    for_each_eye(in, t, [&](int k) {
       const uint32_t* c = in.tap_color[k];
       t.color[k] = bilinear_ ? dp::bilinear_blend(c[0], c[1], c[2], c[3], in.wx[k], in.wy[k], texel_frac_, layout_) : c[0];
-    }
+    });
   }
 
  private:

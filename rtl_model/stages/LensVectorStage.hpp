@@ -1,21 +1,20 @@
 // Lens vector table: the ROM of head-frame viewing directions (signed
 // Q1.vec_frac), read for each issued pixel; timed.lens_latency clocks.
 #pragma once
+#include <array>
+
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/LensVectorTable.hpp"
 
 namespace arp::stage {
 
-class LensVectorStage : public RegisteredStage<PixelSlot, LensToken> {
+class LensVectorStage : public RegisteredStage<LensVectorStage, PixelSlot, LensToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Lens;
+  static constexpr const StageInfo& kInfo = kLensVectorInfo;
   explicit LensVectorStage(const StageContext& ctx)
-      : RegisteredStage(ctx, kId), table_(ctx.config().lens, ctx.config().timing, ctx.config().widths.vec_frac) {}
+      : RegisteredStage(ctx), table_(ctx.config().lens, ctx.config().timing, ctx.config().widths.vec_frac) {}
 
-  template <class InFifo, class OutFifo>
-  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
-    tick_with(cycle, in, out, [this](const PixelSlot& s, LensToken& t) { compute(s, t); });
-  }
   void compute(const PixelSlot& s, LensToken& t) const {
     t.slot = s;
     for (int k = 0; k < s.eye_count; ++k) t.view[k] = table_.at(s.eye_first + k, s.x, s.y);

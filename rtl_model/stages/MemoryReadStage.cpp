@@ -41,7 +41,7 @@ void BufferSwapper::tick(int64_t cycle) {
 }
 
 MemoryReadStage::MemoryReadStage(const StageContext& ctx)
-    : RegisteredStage(ctx, kId),
+    : RegisteredStage(ctx),
       mem_(*ctx.in.memories),
       swapper_(ctx.config(), mem_, nullptr, ctx.in.first_frame + ctx.in.frames, ctx.in.before_frame),
       memories_(ctx.config().memory.count),

@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <array>
 
 #include "HostWritePort.hpp"
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 
 namespace arp::stage {
@@ -45,17 +47,13 @@ class BufferSwapper {
   int64_t next_swap_ = std::numeric_limits<int64_t>::min(), last_cycle_ = std::numeric_limits<int64_t>::max();
 };
 
-class MemoryReadStage : public RegisteredStage<AddressToken, FetchToken> {
+class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, FetchToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Fetch;
+  static constexpr const StageInfo& kInfo = kMemoryReadInfo;
   explicit MemoryReadStage(const StageContext& ctx);
   // The write port whose commits this port's swaps take (the same module's).
   void connect(const HostWritePort* host) { swapper_.connect(host); }
 
-  template <class InFifo, class OutFifo>
-  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
-    tick_with(cycle, in, out, [this](const AddressToken& t, FetchToken& o) { compute(t, o); });
-  }
   // The swap happens first, in the same clock.
   template <class InFifo, class OutFifo, class Fn>
   void tick_with(int64_t cycle, InFifo& in, OutFifo& out, Fn&& compute) {
@@ -64,6 +62,11 @@ class MemoryReadStage : public RegisteredStage<AddressToken, FetchToken> {
   }
   void compute(const AddressToken& in, FetchToken& t) const;
 
+  template <class Fn>
+  void for_each_own_probe(Fn&& fn) const {
+    fn("front_select", swapper_.front_select);
+    fn("swap_strobe", swapper_.swap_strobe);
+  }
   const BufferSwapper& swapper() const { return swapper_; }
   BufferSwapper& swapper() { return swapper_; }
   const dp::DisplayMemorySet& memories() const { return mem_; }

@@ -8,16 +8,19 @@
 // sample written exactly at a sampling edge is caught: the read is "the last
 // sample at or before t", independent of process order.
 #pragma once
+#include <string>
+
 #include "RegisteredStage.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 
 namespace arp::stage {
 
-class OrientationStage : public RegisteredStage<LensToken, RotatedToken> {
+class OrientationStage : public RegisteredStage<OrientationStage, LensToken, RotatedToken> {
  public:
-  static constexpr dp::Stage kId = dp::Stage::Rotate;
+  static constexpr const StageInfo& kInfo = kOrientationInfo;
   explicit OrientationStage(const StageContext& ctx)
-      : RegisteredStage(ctx, kId),
+      : RegisteredStage(ctx),
         stream_(*ctx.in.orientation),
         timing_(ctx.config().timing),
         rot_(ctx.config().widths),
@@ -48,11 +51,17 @@ class OrientationStage : public RegisteredStage<LensToken, RotatedToken> {
   }
   void rotate(const LensToken& in, const dp::Mat3q& m, uint32_t s, RotatedToken& t) const {
     t.slot = in.slot;
-    t.sample = s;
+    t.sample = s;  // the register's, not the input's
     for (int k = 0; k < in.slot.eye_count; ++k) t.world[k] = dp::rotate(m, in.view[k], rot_);
   }
   dp::Mat3q matrix_of(size_t sample_index) const { return dp::quantise_rotation(stream_[sample_index].q, mat_frac_); }
   const dp::OrientationStream& stream() const { return stream_; }
+  // Waveform: the matrix register and the tracker sample it holds.
+  template <class Fn>
+  void for_each_own_probe(Fn&& fn) const {
+    fn("matrix_sample", sample);
+    for (int i = 0; i < 9; ++i) fn("matrix_" + std::to_string(i / 3) + std::to_string(i % 3), matrix.m[i]);
+  }
 
   // Traced: the matrix register and which tracker sample it holds.
   dp::Mat3q matrix{};

@@ -67,6 +67,15 @@ struct ColorToken {
   uint32_t color[kMaxEyes];  // memory colour code
 };
 
+// A stage's output token: the pixel's slot and tracker sample passed on, then
+// fn(k) for each eye the slot carries (both eyes of a lock-step stereo slot).
+template <class In, class Out, class Fn>
+inline void for_each_eye(const In& in, Out& out, Fn&& fn) {
+  out.slot = in.slot;
+  out.sample = in.sample;
+  for (int k = 0; k < in.slot.eye_count; ++k) fn(k);
+}
+
 // Copying a token into a FIFO: whole, except the large fetch token, of which
 // only the words in use are copied (the rest is never read).
 template <class T>

@@ -1,9 +1,11 @@
 // What every stage between two FIFOs has: its register stages (StagePipe:
 // `latency` clocks from taking a pixel to the next stage seeing it, with
-// backpressure), its injected stalls and its statistics. A stage derives from
-// this and adds its arithmetic, `compute(in, out)`, and its own state; its
-// tick() is tick_with() its own compute (the fast level may pass another).
+// backpressure), its injected stalls, its statistics and its waveform
+// probes. A stage derives from this (CRTP) and adds its arithmetic,
+// `compute(in, out)`, its names (kInfo: StageInfo) and its own state. tick()
+// is tick_with() the stage's own compute; the fast level may pass another.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -12,7 +14,7 @@
 
 namespace arp::stage {
 
-template <class In, class Out>
+template <class Derived, class In, class Out>
 class RegisteredStage {
  public:
   using Input = In;
@@ -21,27 +23,46 @@ class RegisteredStage {
   int latency() const { return pipe_.latency(); }
   bool idle() const { return pipe_.occupancy() == 0; }
   StageStats stats() const { return pipe_.stats(); }
-  // Waveforms: the handshake and the last pixel's data (see probe() in PixelTokens.hpp).
-  const StagePipe<Out>& registers() const { return pipe_; }
   void set_probing(bool on) { pipe_.probe_data = on; }
+  // Its place in a pipeline's schedule: a configured stage's latency and id.
+  static dp::ScheduledStage scheduled(const dp::ArpConfig& c) {
+    return {c.timed.stage[static_cast<size_t>(Derived::kInfo.id)].latency_cycles, Derived::kInfo.id};
+  }
 
-  // One clock with a given arithmetic (the stage's own, or a fast-level wrapper's).
+  template <class InFifo, class OutFifo>
+  void tick(int64_t cycle, InFifo& in, OutFifo& out) {
+    derived().tick_with(cycle, in, out, [this](const In& t, Out& o) { derived().compute(t, o); });
+  }
+  // One clock with a given arithmetic.
   template <class InFifo, class OutFifo, class Fn>
   void tick_with(int64_t cycle, InFifo& in, OutFifo& out, Fn&& compute) {
     pipe_.tick(cycle, in, out, compute, stalled(cycle));
   }
 
+  // The waveform: fn(name, value) for the handshake, the three data probes, then the stage's own.
+  template <class Fn>
+  void for_each_probe(Fn&& fn) const {
+    fn("ready_in", pipe_.ready_in);
+    fn("valid_out", pipe_.valid_out);
+    for (size_t i = 0; i < 3; ++i) fn(Derived::kInfo.probes[i], pipe_.data_out[i]);
+    derived().for_each_own_probe(fn);
+  }
+  template <class Fn>
+  void for_each_own_probe(Fn&&) const {}
+
  protected:
   // A configured stage: its latency and stalls from the context.
-  RegisteredStage(const StageContext& ctx, dp::Stage id)
-      : pipe_(ctx.config().timed.stage[static_cast<size_t>(id)].latency_cycles) {
+  explicit RegisteredStage(const StageContext& ctx)
+      : pipe_(ctx.config().timed.stage[static_cast<size_t>(Derived::kInfo.id)].latency_cycles) {
     for (const auto& w : ctx.in.stalls)
-      if (w.stage == id) stalls_.push_back(w);
+      if (w.stage == Derived::kInfo.stage()) stalls_.push_back(w);
   }
   // A stage the configuration does not know (e.g. an inserted register).
   explicit RegisteredStage(int latency) : pipe_(latency) {}
 
  private:
+  Derived& derived() { return static_cast<Derived&>(*this); }
+  const Derived& derived() const { return static_cast<const Derived&>(*this); }
   bool stalled(int64_t c) const {
     for (const auto& w : stalls_)
       if (c >= w.first_cycle && c < w.first_cycle + w.cycles) return true;

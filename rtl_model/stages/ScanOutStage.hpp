@@ -13,6 +13,7 @@
 #include "FrameReport.hpp"
 #include "ScanTiming.hpp"
 #include "StageContext.hpp"
+#include "StageInfo.hpp"
 #include "rtl_model/datapath/HmdScanOut.hpp"
 
 namespace arp::stage {
@@ -29,7 +30,11 @@ class PrerenderedFrames {
 class ScanOutStage {
  public:
   using Input = ColorToken;
-  static constexpr dp::Stage kId = dp::Stage::ScanOut;
+  using Output = void;
+  static constexpr const StageInfo& kInfo = kScanOutInfo;
+  static dp::ScheduledStage scheduled(const dp::ArpConfig& c) {
+    return {c.timed.stage[static_cast<size_t>(kInfo.id)].latency_cycles, kInfo.id};
+  }
   explicit ScanOutStage(const StageContext& ctx);
 
   int latency() const { return latency_; }
@@ -73,6 +78,13 @@ class ScanOutStage {
   // Memory colour code -> the panel's.
   uint32_t to_display(uint32_t color) const { return panel_.to_display(color); }
 
+  void set_probing(bool) {}  // its probes are always current
+  template <class Fn>
+  void for_each_probe(Fn&& fn) const {
+    fn("display_valid", display_valid);
+    fn("display_rgb", display_rgb);
+    fn("underflows", underflow_count);
+  }
   // Traced: the pixel on the panel this cycle (first eye) and the running underflow count.
   bool display_valid = false;
   uint32_t display_rgb = 0;

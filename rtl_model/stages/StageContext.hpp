@@ -4,6 +4,7 @@
 // memories it reads or writes, the tracker stream its register samples --
 // and owns all of its state; no stage reaches into another.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -37,6 +38,19 @@ struct TimedInputs {
   // rendering it, at the timed levels at the start and then in the vertical
   // blank before it (the buffer-swap clock), when no pixel is in flight.
   std::function<void(int64_t, double)> before_frame;
+};
+
+// What a stage is called: its configuration id (-1: a stage the
+// configuration does not list), its block (its module's instance name), what
+// its input and output carry (its ports' and FIFOs' names; nullptr: none) and
+// what its three data probes show in a waveform.
+struct StageInfo {
+  int id;
+  const char* block;
+  const char* input;
+  const char* output;
+  std::array<const char*, 3> probes;
+  constexpr dp::Stage stage() const { return static_cast<dp::Stage>(id); }
 };
 
 struct StageContext {

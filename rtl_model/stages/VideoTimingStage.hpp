@@ -13,12 +13,15 @@
 
 #include "ScanTiming.hpp"
 #include "StageContext.hpp"
+#include "StageInfo.hpp"
 
 namespace arp::stage {
 
 class VideoTimingStage {
  public:
+  using Input = void;
   using Output = PixelSlot;
+  static constexpr const StageInfo& kInfo = kVideoTimingInfo;
   explicit VideoTimingStage(const StageContext& ctx);
 
   const ScanTiming& scan() const { return scan_; }
@@ -60,6 +63,19 @@ class VideoTimingStage {
   int64_t issue_stalls() const { return issue_stalls_; }
   // The panel's scan position is only computed for waveforms.
   bool track_position = false;
+  void set_probing(bool on) { track_position = on; }
+  template <class Fn>
+  void for_each_probe(Fn&& fn) const {
+    fn("frame", frame_count);
+    fn("v_count", v_count);
+    fn("h_count", h_count);
+    fn("display_enable", display_enable);
+    fn("hsync", hsync);
+    fn("vsync", vsync);
+    fn("vblank", vblank);
+    fn("valid_out", issued);
+    fn("issue_backlog", backlog);
+  }
   // Traced: the panel's scan position now, and the issue handshake.
   int32_t h_count = 0, v_count = 0;
   int64_t frame_count = 0;

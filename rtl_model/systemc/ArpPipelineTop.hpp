@@ -46,10 +46,11 @@ struct RunWindow {
 RunWindow run_window(const stage::VideoTimingStage& timing, const dp::ArpConfig& c);
 
 namespace detail {
+// A stage of the configuration's list, with statistics.
 template <class S, class = void>
-struct configured_stage : std::false_type {};  // a stage of the configuration's list, with statistics
+struct configured_stage : std::false_type {};
 template <class S>
-struct configured_stage<S, std::void_t<decltype(S::kId), decltype(std::declval<const S&>().stats())>> : std::true_type {};
+struct configured_stage<S, std::void_t<decltype(std::declval<const S&>().stats())>> : std::bool_constant<(S::kInfo.id >= 0)> {};
 }  // namespace detail
 
 template <class List>
@@ -111,7 +112,7 @@ class DetailedPipeline : public sc_core::sc_module {
     std::array<stage::StageStats, dp::kStageCount> s{};
     chain_.for_each_module([&](const auto& m) {
       using S = typename std::decay_t<decltype(m)>::Stage;
-      if constexpr (detail::configured_stage<S>::value) s[static_cast<size_t>(S::kId)] = m.stage().stats();
+      if constexpr (detail::configured_stage<S>::value) s[static_cast<size_t>(S::kInfo.id)] = m.stage().stats();
     });
     auto& so = s[static_cast<size_t>(dp::Stage::ScanOut)];
     so.latency_cycles = scan_out().stage().latency();

@@ -11,20 +11,17 @@ namespace arp::scm {
 
 class DisplayMemoryBanks : public StageModule<stage::MemoryReadStage> {
  public:
-  static constexpr const char* kInput = "cube_addresses", *kOutput = "texel_words";
-  static constexpr const char* kInstance = "display_memory_banks";
   sc_core::sc_port<ClockIf> host_clk;
-  sc_core::sc_port<FifoReadIf<stage::AddressToken>>& cube_addresses_in = input;
-  sc_core::sc_port<FifoWriteIf<stage::FetchToken>>& texel_words_out = output;
 
   SC_HAS_PROCESS(DisplayMemoryBanks);
   DisplayMemoryBanks(sc_core::sc_module_name name, const stage::StageContext& ctx);
 
   const stage::HostWritePort& host_port() const { return host_; }
+  // The read port's waveform, then the write port's.
+  void trace(sc_core::sc_trace_file* tf);
 
  private:
   void on_host_clock() { host_.tick(host_clk->cycle()); }
-  void trace_more(sc_core::sc_trace_file* tf, const std::string& n) const override;
   stage::HostWritePort host_;
 };
 

@@ -97,32 +97,29 @@ void FastCycleModel::host_domain() {
     next_trigger(sim_time(dp::clock_cycle_to_ps(host_cycle_, host_hz_), w_.base_ps) - now);
 }
 
+// The same signals as the detailed model's modules (each stage's probes under its module's name).
 void FastCycleModel::trace(sc_trace_file* tf) {
   tracing_ = true;
   const std::string n = name();
   sc_trace(tf, cycle_, n + ".pixel_cycle");
-  stage::VideoTimingStage& s = std::get<0>(stages_);
-  s.track_position = true;
-  sc_trace(tf, s.frame_count, n + ".video_timing_generator.frame");
-  sc_trace(tf, s.v_count, n + ".video_timing_generator.v_count");
-  sc_trace(tf, s.h_count, n + ".video_timing_generator.h_count");
-  sc_trace(tf, s.display_enable, n + ".video_timing_generator.display_enable");
-  sc_trace(tf, s.vblank, n + ".video_timing_generator.vblank");
-  sc_trace(tf, s.issued, n + ".video_timing_generator.valid_out");
-  tracker.trace(tf);
-  sc_trace(tf, std::get<stage::OrientationStage>(stages_).sample, n + ".orientation_matrix_unit.matrix_sample");
-  sc_trace(tf, memories().swapper().front_select, n + ".display_memory_banks.front_select");
+  std::apply(
+      [&](auto&... st) {
+        auto one = [&](auto& s) {
+          s.set_probing(true);
+          const std::string m = n + "." + std::decay_t<decltype(s)>::kInfo.block + ".";
+          s.for_each_probe([&](const std::string& probe, const auto& value) { sc_trace(tf, value, m + probe); });
+          if constexpr (std::is_same_v<std::decay_t<decltype(s)>, stage::VideoTimingStage>) tracker.trace(tf);
+        };
+        (one(st), ...);
+      },
+      stages_);
   sc_trace(tf, host_.busy, n + ".display_memory_banks.host_busy");
-  const stage::ScanOutStage& so = scan_out();
-  sc_trace(tf, so.display_valid, n + ".hmd_scan_out.display_valid");
-  sc_trace(tf, so.display_rgb, n + ".hmd_scan_out.display_rgb");
-  sc_trace(tf, so.underflow_count, n + ".hmd_scan_out.underflows");
   std::apply([&](const auto&... f) { (sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"), ...); }, fifos_);
 }
 
 void FastCycleModel::stop_tracing() {
   tracing_ = false;
-  std::get<0>(stages_).track_position = false;
+  std::apply([](auto&... s) { (s.set_probing(false), ...); }, stages_);
 }
 
 std::vector<std::pair<std::string, stage::FifoStats>> FastCycleModel::fifo_stats(int64_t end_cycle) const {
@@ -137,7 +134,7 @@ std::array<stage::StageStats, dp::kStageCount> FastCycleModel::stage_stats() con
       [&](const auto&... st) {
         auto one = [&](const auto& x) {
           if constexpr (detail::configured_stage<std::decay_t<decltype(x)>>::value)
-            s[static_cast<size_t>(std::decay_t<decltype(x)>::kId)] = x.stats();
+            s[static_cast<size_t>(std::decay_t<decltype(x)>::kInfo.id)] = x.stats();
         };
         (one(st), ...);
       },

@@ -1,16 +1,15 @@
-// What every pipeline stage module between two FIFOs has in common: a port
-// to the clock, a port to the FIFO it reads and one to the FIFO it writes
-// (SystemC names for what they carry), the stage object it owns (its
-// registers, state and arithmetic: rtl_model/stages), one process on the
-// rising clock edge running the stage's tick, and the waveform of its
-// handshake and data. Each stage (LensVectorTable, OrientationMatrixUnit,
-// ...) is its own module deriving from this, with its ports under their own
-// names; any one can be instantiated alone (testbench/systemc/ModuleBenches).
+// A pipeline stage as a SystemC module: a port to the clock, a port to the
+// FIFO it reads and one to the FIFO it writes (named for what they carry:
+// <input>_in, <output>_out from its StageInfo; the first stage has no input, the last no
+// output), the stage object it owns (its registers, state and arithmetic:
+// rtl_model/stages), one process on the rising clock edge running the stage's
+// tick, and its waveform (the stage's probes). Any stage module can be
+// instantiated alone (testbench/systemc/ModuleBenches).
 #pragma once
 #include <systemc>
 
-#include <array>
 #include <string>
+#include <type_traits>
 
 #include "ClockGenerator.hpp"
 #include "FifoChannel.hpp"
@@ -18,65 +17,68 @@
 
 namespace arp::scm {
 
+namespace detail {
+struct NoPort {  // where a stage has no input (or no output)
+  explicit NoPort(const char*) {}
+};
+template <class T>
+using InPort = std::conditional_t<std::is_void_v<T>, NoPort, sc_core::sc_port<FifoReadIf<T>>>;
+template <class T>
+using OutPort = std::conditional_t<std::is_void_v<T>, NoPort, sc_core::sc_port<FifoWriteIf<T>>>;
+inline std::string port_name(const char* carries, const char* suffix) { return carries ? carries + std::string(suffix) : "none"; }
+}  // namespace detail
+
 template <class S>
 class StageModule : public sc_core::sc_module {
  public:
   using Stage = S;
   using Input = typename S::Input;
   using Output = typename S::Output;
+  static constexpr const char* kInstance = S::kInfo.block;
+  static constexpr const char* kOutput = S::kInfo.output;
 
   sc_core::sc_port<ClockIf> clk;
-  sc_core::sc_port<FifoReadIf<Input>> input;
-  sc_core::sc_port<FifoWriteIf<Output>> output;
+  detail::InPort<Input> input;
+  detail::OutPort<Output> output;
 
-  S& stage() { return stage_; }
-  const S& stage() const { return stage_; }
-  // Its place in the pipeline's schedule (a configured stage: its latency from the configuration).
-  static dp::ScheduledStage scheduled(const dp::ArpConfig& c) {
-    return {c.timed.stage[static_cast<size_t>(S::kId)].latency_cycles, static_cast<int>(S::kId)};
-  }
-
-  // Handshake (ready_in, valid_out) and the three data probes, then the stage's own signals.
-  void trace(sc_core::sc_trace_file* tf) {
-    stage_.set_probing(true);
-    const std::string n = name();
-    const auto& r = stage_.registers();
-    sc_trace(tf, r.ready_in, n + ".ready_in");
-    sc_trace(tf, r.valid_out, n + ".valid_out");
-    for (size_t i = 0; i < 3; ++i) sc_trace(tf, r.data_out[i], n + "." + probes_[i]);
-    trace_more(tf, n);
-  }
-  void stop_trace() { stage_.set_probing(false); }
-
- protected:
   SC_HAS_PROCESS(StageModule);
-  // Ports named for what they carry: "<carries_in>_in", "<carries_out>_out";
-  // probes: what the waveform's data_out[0..2] hold.
-  StageModule(sc_core::sc_module_name name, const stage::StageContext& ctx, const char* carries_in, const char* carries_out,
-              const std::array<const char*, 3>& probes)
+  StageModule(sc_core::sc_module_name name, const stage::StageContext& ctx)
       : sc_core::sc_module(name),
         clk("clk"),
-        input((std::string(carries_in) + "_in").c_str()),
-        output((std::string(carries_out) + "_out").c_str()),
-        stage_(ctx),
-        probes_(probes) {
+        input(detail::port_name(S::kInfo.input, "_in").c_str()),
+        output(detail::port_name(S::kInfo.output, "_out").c_str()),
+        stage_(ctx) {
     SC_METHOD(on_clock);
     sensitive << clk;
     dont_initialize();
   }
-  virtual void trace_more(sc_core::sc_trace_file*, const std::string&) const {}
 
+  S& stage() { return stage_; }
+  const S& stage() const { return stage_; }
+  static dp::ScheduledStage scheduled(const dp::ArpConfig& c) { return S::scheduled(c); }
+
+  void trace(sc_core::sc_trace_file* tf) {
+    stage_.set_probing(true);
+    const std::string n = name();
+    stage_.for_each_probe([&](const std::string& probe, const auto& value) { sc_trace(tf, value, n + "." + probe); });
+  }
+  void stop_trace() { stage_.set_probing(false); }
+
+ protected:
   S stage_;
 
  private:
-  void on_clock() { stage_.tick(clk->cycle(), *in_, *out_); }
-  void end_of_elaboration() override {
-    in_ = input.operator->();
-    out_ = output.operator->();
+  void on_clock() {
+    if constexpr (std::is_void_v<Input>) stage_.tick(clk->cycle(), *out_);
+    else if constexpr (std::is_void_v<Output>) stage_.tick(clk->cycle(), *in_);
+    else stage_.tick(clk->cycle(), *in_, *out_);
   }
-  std::array<const char*, 3> probes_;
-  FifoReadIf<Input>* in_ = nullptr;
-  FifoWriteIf<Output>* out_ = nullptr;
+  void end_of_elaboration() override {
+    if constexpr (!std::is_void_v<Input>) in_ = input.operator->();
+    if constexpr (!std::is_void_v<Output>) out_ = output.operator->();
+  }
+  std::conditional_t<std::is_void_v<Input>, void*, FifoReadIf<Input>*> in_ = nullptr;
+  std::conditional_t<std::is_void_v<Output>, void*, FifoWriteIf<Output>*> out_ = nullptr;
 };
 
 }  // namespace arp::scm

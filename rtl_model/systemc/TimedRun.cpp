@@ -18,14 +18,9 @@ namespace arp::scm {
 
 using namespace sc_core;
 
-std::string to_string(Fidelity f) {
-  switch (f) {
-    case Fidelity::Functional: return "functional";
-    case Fidelity::LooselyTimed: return "lt";
-    case Fidelity::Cycle: return "cycle";
-    case Fidelity::Detailed: return "detailed";
-  }
-  return "?";
+const EnumNames<Fidelity>& fidelity_names() {
+  static const EnumNames<Fidelity> n{{Fidelity::Functional, "functional"}, {Fidelity::LooselyTimed, "lt"}, {Fidelity::Cycle, "cycle"}, {Fidelity::Detailed, "detailed"}};
+  return n;
 }
 
 bool parse(const std::string& s, Fidelity& out) {
@@ -33,12 +28,7 @@ bool parse(const std::string& s, Fidelity& out) {
     out = Fidelity::Detailed;
     return true;
   }
-  for (Fidelity f : {Fidelity::Functional, Fidelity::LooselyTimed, Fidelity::Cycle, Fidelity::Detailed})
-    if (s == to_string(f)) {
-      out = f;
-      return true;
-    }
-  return false;
+  return enum_parse(fidelity_names(), s, out);
 }
 
 const char* describe(Fidelity f) {

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/Parameter.hpp"
 #include "rtl_model/stages/ClockedFifo.hpp"
 #include "rtl_model/stages/StageContext.hpp"
 #include "rtl_model/stages/StagePipe.hpp"
@@ -19,7 +20,8 @@
 namespace arp::scm {
 
 enum class Fidelity { Functional, LooselyTimed, Cycle, Detailed };
-std::string to_string(Fidelity f);  // functional, lt, cycle, detailed
+const EnumNames<Fidelity>& fidelity_names();  // functional, lt, cycle, detailed
+inline std::string to_string(Fidelity f) { return enum_name(fidelity_names(), f); }
 // Also accepts rtl, the detailed level's old name.
 bool parse(const std::string& s, Fidelity& out);
 const char* describe(Fidelity f);

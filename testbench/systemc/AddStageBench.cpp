@@ -39,12 +39,7 @@ TEST(AddStage, ARegisterSliceAddsOneClockAndChangesNoPixel) {
   for (int64_t n = t.frame_start_cycle(0); n < t.frame_start_cycle(4); ++n) samples.push_back({t.cycles_to_ps(n), q});
   const dp::OrientationStream stream(samples, "a sample every clock");
 
-  stage::TimedInputs in;
-  in.config = c;
-  in.memories = &mem;
-  in.orientation = &stream;
-  in.first_frame = 1;
-  in.frames = 2;
+  stage::TimedInputs in = bench::inputs(c, mem, stream, 1, 2);
   stage::TimedInputs ref_in = in;
   ref_in.memories = &ref_mem;
   const auto want = bench::functional_frames(ref_in);

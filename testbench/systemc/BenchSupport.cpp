@@ -7,15 +7,7 @@ namespace arp::bench {
 
 dp::ArpConfig small_config() {
   dp::ArpConfig c;
-  c.timing.h_active = 160;
-  c.timing.v_active = 120;
-  c.timing.h_front_porch = 8;
-  c.timing.h_sync = 16;
-  c.timing.h_back_porch = 16;
-  c.timing.v_front_porch = 2;
-  c.timing.v_sync = 2;
-  c.timing.v_back_porch = 6;
-  c.timing.pixel_clock_hz = 1'400'000;
+  c.timing = dp::VideoTimingConfig::mode(2, {160, 8, 16, 16}, {120, 2, 2, 6}, 1'400'000);
   c.memory.face_size = 64;
   c.pipeline.photon_delay_ps = 2'000'000;
   return c;
@@ -55,6 +47,17 @@ dp::OrientationStream fast_turn(const dp::ArpConfig& c, int64_t first_frame, int
   for (int64_t ps = t0; ps <= t1; ps += 1'000'000'000, ++i)
     s.push_back({ps, dp::from_yaw_pitch_roll_deg(-20.0 + 1.0 * i, 10.0 - 0.3 * i, 5.0 + 0.2 * i)});
   return dp::OrientationStream(s, "fast turn");
+}
+
+stage::TimedInputs inputs(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const dp::OrientationStream& o,
+                          int64_t first_frame, int64_t frames) {
+  stage::TimedInputs in;
+  in.config = c;
+  in.memories = &mem;
+  in.orientation = &o;
+  in.first_frame = first_frame;
+  in.frames = frames;
+  return in;
 }
 
 std::map<int64_t, CollectedFrame> run_level(scm::Fidelity f, stage::TimedInputs in, scm::TimedResult* result) {

@@ -23,6 +23,10 @@ void fill_memories(dp::DisplayMemorySet& mem);
 // from one frame before `first_frame` to after `last_frame`.
 dp::OrientationStream fast_turn(const dp::ArpConfig& c, int64_t first_frame, int64_t last_frame);
 
+// A run's inputs: frames [first_frame, first_frame + frames) of these memories and this motion.
+stage::TimedInputs inputs(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const dp::OrientationStream& o,
+                          int64_t first_frame, int64_t frames);
+
 struct CollectedFrame {
   HmdFrame frame;
   stage::FrameReport report;

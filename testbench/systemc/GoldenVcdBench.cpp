@@ -19,15 +19,7 @@ namespace {
 
 dp::ArpConfig tiny() {
   dp::ArpConfig c;
-  c.timing.eyes = 1;
-  c.timing.h_active = 8;
-  c.timing.v_active = 4;
-  c.timing.h_front_porch = 2;
-  c.timing.h_sync = 2;
-  c.timing.h_back_porch = 2;
-  c.timing.v_front_porch = 1;
-  c.timing.v_sync = 1;
-  c.timing.v_back_porch = 1;
+  c.timing = dp::VideoTimingConfig::mode(1, {8, 2, 2, 2}, {4, 1, 1, 1}, c.timing.pixel_clock_hz);
   c.memory.count = 1;
   c.memory.face_size = 4;
   c.pipeline.aa = dp::AaMode::Off;
@@ -63,12 +55,7 @@ TEST(GoldenVcd, TinyFrameThroughTheDetailedModelMatchesTheReviewedWaveform) {
   job.eye = 0;
   job.memory = 0;
   for (uint16_t i = 0; i < 4; ++i) job.texels.push_back({5, i, i, 0xff0000u, 3});
-  stage::TimedInputs in;
-  in.config = c;
-  in.memories = &mem;
-  in.orientation = &o;
-  in.first_frame = 1;
-  in.frames = 1;
+  stage::TimedInputs in = bench::inputs(c, mem, o, 1, 1);
   in.host_jobs = {job};
   const std::string dir = std::filesystem::temp_directory_path() / ("arpsim-golden-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

@@ -472,7 +472,7 @@ TEST(ModuleBench, VideoTimingGenerator) {
   scm::FifoChannel<stage::PixelSlot> out_fifo("requests", w.c.timed.fifo_depth);
   scm::VideoTimingGenerator dut("dut", w.context());
   dut.clk(gen);
-  dut.pixel_requests_out(out_fifo);
+  dut.output(out_fifo);
   ResponseMonitor<stage::PixelSlot> mon("monitor", SIZE_MAX, 7);
   mon.clk(gen);
   mon.response_in(out_fifo);
@@ -537,7 +537,7 @@ TEST(ModuleBench, HmdScanOut) {
   scm::FifoChannel<stage::ColorToken> in_fifo("colors", w.c.timed.fifo_depth);
   scm::HmdScanOut dut("dut", w.context());
   dut.clk(gen);
-  dut.pixel_colors_in(in_fifo);
+  dut.input(in_fifo);
   // A driver writing each token at its due clock.
   struct TimedDriver : sc_module {
     sc_port<scm::ClockIf> clk;

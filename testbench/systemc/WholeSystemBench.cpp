@@ -78,12 +78,7 @@ void expect_same_as_functional(scm::Fidelity level, const dp::ArpConfig& c, int 
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const dp::OrientationStream o = fast_turn(c, 1, frames);
-  stage::TimedInputs in;
-  in.config = c;
-  in.orientation = &o;
-  in.first_frame = 1;
-  in.frames = frames;
-  in.memories = &mem_ref;
+  stage::TimedInputs in = inputs(c, mem_ref, o, 1, frames);
   const auto want = functional_frames(in);
   in.memories = &mem_timed;
   scm::TimedResult res;
@@ -143,11 +138,7 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(0, 0, 0));
-  stage::TimedInputs in;
-  in.config = c;
-  in.orientation = &still;
-  in.first_frame = 0;
-  in.frames = 4;
+  stage::TimedInputs in = inputs(c, mem_ref, still, 0, 4);
   // Job 0: memory 1 of eye 0, a near red square over the -Z face, started mid-frame 0.
   // Job 1: the same memory again (waits for job 0's swap), cleared: the square goes away.
   stage::HostWriteJob j0;
@@ -208,12 +199,7 @@ TEST_P(Backpressure, StalledStageFillsFifosThenUnderflowsAreCounted) {
   fill_memories(mem_timed);
   fill_memories(mem_ref);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(10, 5, 0));
-  stage::TimedInputs in;
-  in.config = c;
-  in.orientation = &still;
-  in.first_frame = 0;
-  in.frames = 2;
-  in.memories = &mem_ref;
+  stage::TimedInputs in = inputs(c, mem_ref, still, 0, 2);
   const auto want = functional_frames(in);
   in.memories = &mem_timed;
   const int64_t stall_at = t.pixel_cycle(0, 0, 40, 30);
@@ -270,10 +256,7 @@ TEST(TimedLevels, ImpossibleHardwareIsRefusedBeforeSimulation) {
     }
     dp::DisplayMemorySet mem(c.memory.count <= 16 && c.memory.count >= 1 ? c.memory : dp::MemoryConfig{}, c.timing.eyes);
     const auto o = dp::OrientationStream::constant(dp::Quat{});
-    stage::TimedInputs in;
-    in.config = c;
-    in.memories = &mem;
-    in.orientation = &o;
+    stage::TimedInputs in = inputs(c, mem, o, 0, 1);
     scm::TimedRunOptions opt;
     opt.fidelity = scm::Fidelity::Detailed;
     if (mem.count() == c.memory.count) {
