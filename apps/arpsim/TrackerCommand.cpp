@@ -1,7 +1,6 @@
-// arpsim tracker: head-tracker input. `list` finds Oculus Rift DK1/DK2
-// trackers on USB; `record` streams one to a trace file; `synth` writes a
-// synthetic head-motion trace (CSV).
-#include <chrono>
+// arpsim tracker: head-tracker input. `list` finds Oculus Rift DK1/DK2 trackers on USB;
+// `record` streams one to a trace file; `import` converts a dataset; `synth` writes a synthetic trace.
+#include <atomic>
 #include <cinttypes>
 #include <csignal>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include "tracker/TraceFile.hpp"
 #include "tracker/DatasetImport.hpp"
 #include "tracker/PoseSource.hpp"
+#include "tracker/Recorder.hpp"
 #include "tracker/UsbTrackers.hpp"
 
 namespace arp::app {
@@ -36,8 +36,8 @@ int run_list() {
   return 0;
 }
 
-volatile std::sig_atomic_t g_stop = 0;
-void on_interrupt(int) { g_stop = 1; }
+std::atomic<bool> g_stop{false};
+void on_interrupt(int) { g_stop = true; }
 
 struct RecordArgs {
   std::string out;
@@ -59,20 +59,14 @@ int run_record(const RecordArgs& a) {
   std::printf("arpsim tracker record: %s, %.1f s -> %s (Ctrl-C stops early and keeps what was recorded)\n",
               source->describe().c_str(), a.seconds, a.out.c_str());
   std::signal(SIGINT, on_interrupt);
-  std::vector<tracker::PoseSample> poses;
-  const auto t0 = std::chrono::steady_clock::now();
-  double last_line = -1;
-  for (;;) {
-    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (el >= a.seconds || g_stop) break;
-    source->poll(poses, 10);
-    for (const auto& e : source->take_events()) std::fprintf(stderr, "%s  %s\n", a.quiet ? "" : "\n", e.c_str());
-    if (!a.quiet && el - last_line >= 0.25) {
-      last_line = el;
-      std::fprintf(stderr, "\r  %6.2f / %.2f s  %8zu samples  %s  ETA %.1f s   ", el, a.seconds, poses.size(),
-                   source->connected() ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
-    }
-  }
+  tracker::RecordHooks hooks;
+  hooks.event = [&a](const std::string& e) { std::fprintf(stderr, "%s  %s\n", a.quiet ? "" : "\n", e.c_str()); };
+  if (!a.quiet)
+    hooks.progress = [&a](double el, size_t n, bool connected) {
+      std::fprintf(stderr, "\r  %6.2f / %.2f s  %8zu samples  %s  ETA %.1f s   ", el, a.seconds, n,
+                   connected ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
+    };
+  const std::vector<tracker::PoseSample> poses = tracker::record_for(*source, a.seconds, g_stop, hooks);
   std::signal(SIGINT, SIG_DFL);
   if (!a.quiet) std::fprintf(stderr, "\n");
   if (poses.empty()) {
