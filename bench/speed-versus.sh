@@ -9,7 +9,7 @@ set -euo pipefail
 A=$1 B=$2
 FRAMES=${FRAMES:-8}
 RUNS=${RUNS:-5}
-LEVELS=${LEVELS:-functional lt cycle rtl}
+LEVELS=${LEVELS:-functional lt cycle rtl}  # rtl: the name both builds know for the detailed level
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 one() {  # binary level -> pixel clocks/s

@@ -31,7 +31,7 @@ fingerprint() { grep -o '"p[a-z]*_hash": "[0-9a-f]*"' "$tmp/last.json" | tr '\n'
 echo "level,vcd,frames,pixel_clocks_per_s" > "$tmp/out.csv"
 printf "%-11s %-4s %-7s %s\n" level vcd frames "M pixel clocks/s"
 ref=""
-for level in functional lt cycle rtl; do
+for level in functional lt cycle detailed; do
   s=$(speed "$level" "$FRAMES")
   fp=$(fingerprint)
   [ -z "$ref" ] && ref=$fp
@@ -40,7 +40,7 @@ for level in functional lt cycle rtl; do
   echo "$level,off,$FRAMES,$s" >> "$tmp/out.csv"
   [ "$fp" = "$ref" ] || exit 1
 done
-for level in lt cycle rtl; do
+for level in lt cycle detailed; do
   s=$(speed "$level" "$VCD_FRAMES" --vcd "$tmp/w.vcd")
   printf "%-11s %-4s %-7s %8.2f   (VCD %s MB)\n" "$level" on "$VCD_FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" \
     "$(( $(stat -c %s "$tmp/w.vcd") / 1000000 ))"

@@ -12,6 +12,10 @@
 
 #include "PixelTokens.hpp"
 
+// The FIFO operations run several times per pixel clock: always inline (the
+// fast level ticks every stage in one function, past the inliner's budget).
+#define ARP_FIFO_OP __attribute__((always_inline)) inline
+
 namespace arp::stage {
 
 struct FifoStats {
@@ -34,8 +38,8 @@ class ClockedFifo {
   const int& occupancy_ref() const { return count_; }  // for waveform tracing
 
   // Producer side: ready = not full at the start of the cycle.
-  bool can_write() const { return count_ < depth_ && !write_pending_; }
-  void write(const T& v, int64_t cycle) {
+  ARP_FIFO_OP bool can_write() const { return count_ < depth_ && !write_pending_; }
+  ARP_FIFO_OP void write(const T& v, int64_t cycle) {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
     copy_token(buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()], v);
     write_pending_ = true;
@@ -43,7 +47,7 @@ class ClockedFifo {
   }
   // Write in place: the slot the next write would fill (fill it, then nothing
   // else) -- a stage with one register can compute straight into its output.
-  T& emplace(int64_t cycle) {
+  ARP_FIFO_OP T& emplace(int64_t cycle) {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
     write_pending_ = true;
     cycle_ = cycle;
@@ -52,16 +56,16 @@ class ClockedFifo {
   void note_blocked() { ++blocked_; }
 
   // Consumer side: valid = not empty at the start of the cycle.
-  bool can_read() const { return count_ > 0 && !read_pending_; }
-  const T& front() const { return buf_[head_]; }
-  void read(int64_t cycle) {
+  ARP_FIFO_OP bool can_read() const { return count_ > 0 && !read_pending_; }
+  ARP_FIFO_OP const T& front() const { return buf_[head_]; }
+  ARP_FIFO_OP void read(int64_t cycle) {
     if (!can_read()) throw std::logic_error(name_ + ": read while not valid (empty)");
     read_pending_ = true;
     cycle_ = cycle;
   }
 
   // The clock edge ending cycle `cycle_`: applies this cycle's read and write.
-  void update() {
+  ARP_FIFO_OP void update() {
     if (!read_pending_ && !write_pending_) return;
     account(cycle_ + 1);
     if (read_pending_) {

@@ -45,7 +45,8 @@ class FrameSpeculation : public stage::PrerenderedFrames {
   void tick(stage::MemoryReadStage& s, int64_t c, I& in, O& out) {
     s.tick_with(c, in, out, [this](const stage::AddressToken& t, stage::FetchToken& o) { fetch(t, o); });
   }
-  // Address, composition, filter: an on-schedule pixel passes with its slot and sample.
+  // Address, composition, filter: an on-schedule pixel passes with its slot
+  // and sample; the rest are computed out of the hot loop.
   template <class S, class I, class O>
   void tick(S& s, int64_t c, I& in, O& out) {
     s.tick_with(c, in, out, [&s](const auto& t, auto& o) {
@@ -53,7 +54,7 @@ class FrameSpeculation : public stage::PrerenderedFrames {
         o.slot = t.slot;
         o.sample = t.sample;
       } else {
-        s.compute(t, o);
+        off_schedule(s, t, o);
       }
     });
   }
@@ -65,6 +66,10 @@ class FrameSpeculation : public stage::PrerenderedFrames {
   int64_t speculated = 0, fallbacks = 0;  // pixels each way (statistics)
 
  private:
+  template <class S, class In, class Out>
+  __attribute__((noinline)) static void off_schedule(const S& s, const In& t, Out& o) {
+    s.compute(t, o);
+  }
   // Rendered on first use, with the front buffers of that moment (`generation`: the buffers' generation then).
   const HmdFrame& render(int64_t f, int64_t generation);
   int64_t generation_at_render(int64_t f) const;
