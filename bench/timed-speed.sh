@@ -27,7 +27,7 @@ speed() {  # level frames extra-args... -> best pixel clocks/s; leaves the repor
   done
   echo "$best"
 }
-fingerprint() { grep -o '"p[a-z]*_hash": "[0-9a-f]*"' "$tmp/last.json" | tr '\n' ' '; }
+fingerprint() { grep -o '"p[a-z]*_hash": *"[0-9a-f]*"' "$tmp/last.json" | tr '\n' ' '; }
 echo "level,vcd,frames,pixel_clocks_per_s" > "$tmp/out.csv"
 printf "%-11s %-4s %-7s %s\n" level vcd frames "M pixel clocks/s"
 ref=""
