@@ -4,7 +4,7 @@
 # machine a neighbour only ever slows a run down, and interleaving gives both
 # the same neighbours. Prints the simulated pixel clocks per second of each
 # and the ratio B / A (what bench/timed-speed.sh measures for one build).
-# Usage: bench/speed-versus.sh ARPSIM_A ARPSIM_B   (env: FRAMES, RUNS, LEVELS)
+# Usage: bench/speed-versus.sh ARPSIM_A ARPSIM_B   (env: FRAMES, RUNS, LEVELS, VCD=1: with a waveform of the whole run)
 set -euo pipefail
 A=$1 B=$2
 FRAMES=${FRAMES:-8}
@@ -13,7 +13,9 @@ LEVELS=${LEVELS:-functional lt cycle rtl}  # rtl: the name both builds know for 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 one() {  # binary level -> pixel clocks/s
-  "$1" run -q --fidelity "$2" --frames "$FRAMES" --every 0 --motion rotate --rate 200 --report "$tmp/r.json" >/dev/null
+  local vcd=()
+  [ "${VCD:-0}" = 1 ] && vcd=(--vcd "$tmp/w.vcd")
+  "$1" run -q --fidelity "$2" --frames "$FRAMES" --every 0 --motion rotate --rate 200 --report "$tmp/r.json" "${vcd[@]}" >/dev/null
   sed -n 's/.*"pixel_clocks_per_second": \([0-9.e+-]*\).*/\1/p' "$tmp/r.json"
 }
 printf "%-11s %14s %14s %8s\n" level "A M clocks/s" "B M clocks/s" "B / A"
