@@ -79,11 +79,14 @@ json parse_strict_json(const std::string& text, const std::string& source) {
   try {
     return json::parse(text, cb);
   } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const auto pos = what.find("parse error");
+    const std::string what = e.what();
+    // nlohmann's text repeats the place ("parse error at line 1, column 14: ..."); the reason alone follows ours.
+    const auto at = what.find("parse error");
+    const auto colon = at == std::string::npos ? std::string::npos : what.find(": ", at);
+    const std::string reason = colon != std::string::npos ? what.substr(colon + 2) : at != std::string::npos ? what.substr(at) : what;
     if (what.find("number overflow") != std::string::npos)
       throw InputError(source, position(text, e.byte), "a number too large for a double (beyond 1.8e308)");
-    throw InputError(source, position(text, e.byte), "JSON syntax error: " + quoted(pos == std::string::npos ? what : what.substr(pos)));
+    throw InputError(source, position(text, e.byte), "JSON syntax error: " + quoted(reason));
   } catch (const json::out_of_range& e) {
     // nlohmann reports a number too large for a double this way: find the literal for its place.
     if (problem.empty()) {

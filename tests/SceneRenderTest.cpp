@@ -248,7 +248,7 @@ TEST(Scenes, SceneFilesLoadAndBadOnesSayWhereAndWhy) {
   fails(R"({"objects": [{"box": [1,1,1], "spin": {"axis": [0,0,0]}}]})", "spin.axis");
   fails(R"({"objects": 3})", "objects");
   fails(R"({"objects": [], "extent": {"min": [1,1,1], "max": [0,0,0]}})", "extent");
-  fails("{\"objects\": [", "byte");
+  fails("{\"objects\": [", "line 1, column 14: JSON syntax error: syntax error while parsing value");
   fails(R"({"objects": [{"cylinder": [1,1,0], "texture": "t.png"}]})", "texture coordinates");
   fails(R"({"objects": [{"quad": [1,1,0], "texture": "missing.png"}]})", "missing.png");
   // An empty scene is a scene.

@@ -1,6 +1,9 @@
 #include "ImageFiles.hpp"
 
 #include <OpenImageIO/imageio.h>
+#include <sys/stat.h>
+
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -12,19 +15,37 @@ namespace arp::host {
 namespace fs = std::filesystem;
 
 RgbImage read_rgb8(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, "", "file does not exist");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(path, "", "file does not exist");
+  if (!S_ISREG(st.st_mode)) throw InputError(path, "", "an image must be a regular file");
   auto in = OIIO::ImageInput::open(path);
-  if (!in) throw InputError(path, "", "cannot read as an image: " + OIIO::geterror());
+  if (!in) throw InputError(path, "", "cannot read as an image: " + quoted(OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError(path, "header", "image has no pixels");
-  if (static_cast<int64_t>(spec.width) * spec.height > (int64_t{1} << 28))
-    throw InputError(path, "header", "image larger than 2^28 pixels");
+  // What reading it would take, before anything is allocated: the header decides, not the file's size.
+  const uint64_t pixels = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
+  const uint64_t bytes = pixels * static_cast<uint64_t>(spec.nchannels) * (spec.format.is_floating_point() ? 4 : 1);
+  if (pixels > kMaxImagePixels || bytes > kMaxImageBytes)
+    throw InputError(path, "header",
+                     std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) +
+                         " channels would take " + std::to_string(bytes >> 20) + " MB; images are limited to " +
+                         std::to_string(kMaxImageBytes >> 20) + " MB and 2^28 pixels");
   const int nc = spec.nchannels;
-  std::vector<uint8_t> raw(static_cast<size_t>(spec.width) * spec.height * static_cast<size_t>(nc));
+  if (spec.format.is_floating_point()) {
+    // High dynamic range faces: every value must be a number.
+    std::vector<float> f(pixels * static_cast<size_t>(nc));
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, f.data()))
+      throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(in->geterror()));
+    for (size_t i = 0; i < f.size(); ++i)
+      if (!std::isfinite(f[i]))
+        throw InputError(path, "pixel (" + std::to_string(i / static_cast<size_t>(nc) % static_cast<size_t>(spec.width)) + ", " +
+                                   std::to_string(i / static_cast<size_t>(nc) / static_cast<size_t>(spec.width)) + ")",
+                         "is not a finite number (NaN or infinity)");
+  }
+  std::vector<uint8_t> raw(static_cast<size_t>(pixels) * static_cast<size_t>(nc));
   if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, raw.data()))
-    throw InputError(path, "pixels", "corrupt or truncated image data: " + in->geterror());
+    throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(in->geterror()));
   in->close();
   RgbImage img(spec.width, spec.height);
   for (size_t i = 0; i < static_cast<size_t>(spec.width) * spec.height; ++i)

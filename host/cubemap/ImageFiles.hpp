@@ -2,14 +2,22 @@
 // writing atomically (a temporary file in the same folder, then a rename), so
 // a failed run never leaves a half-written image.
 #pragma once
+#include <cstdint>
 #include <string>
 
 #include "CubeMapImages.hpp"
 
 namespace arp::host {
 
+// What one input image may take: its pixels, and the bytes reading them needs
+// (width x height x channels, 4 bytes a value for floating-point images),
+// checked against its header before anything is allocated.
+constexpr uint64_t kMaxImagePixels = uint64_t{1} << 28;
+constexpr uint64_t kMaxImageBytes = uint64_t{1} << 30;
+
 // Any channel count: 1 (grey) is replicated, alpha and extra channels dropped.
-// InputError naming the file on a missing, unreadable or corrupt image.
+// InputError naming the file on a missing, non-regular, too large, unreadable
+// or corrupt image, or a floating-point one holding NaN or infinity.
 RgbImage read_rgb8(const std::string& path);
 
 // Format from the extension (.png, .exr, .tif, ...). InputError naming the file on failure.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/InputError.hpp"
+#include "common/StrictJson.hpp"
 
 namespace arp::host {
 
@@ -56,16 +57,10 @@ glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, in
 }
 
 WalkPath load_walk_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open the walk file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(ss.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, "byte " + std::to_string(e.byte), "not valid JSON");
-  }
+  return walk_from_json(parse_strict_json(read_input_file(path, 16 << 20, "walk file"), path), path);
+}
+
+WalkPath walk_from_json(const nlohmann::json& j, const std::string& path) {
   if (!j.is_object()) throw InputError(path, "", "must be an object with speed and points");
   for (auto it = j.begin(); it != j.end(); ++it)
     if (it.key() != "speed" && it.key() != "points") throw InputError(path, it.key(), "unknown key");

@@ -4,6 +4,7 @@
 #pragma once
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -34,5 +35,7 @@ glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, in
 
 // A path file: {"speed": 1.0, "points": [[x,y,z], ...]} (metres, m/s).
 WalkPath load_walk_file(const std::string& path);
+// The same from parsed JSON ({"speed": m/s, "points": [[x, y, z], ...]}); `path` names it in errors.
+WalkPath walk_from_json(const nlohmann::json& j, const std::string& path);
 
 }  // namespace arp::host

@@ -11,6 +11,7 @@
 #include "host/cubemap/ImageFiles.hpp"
 #include "Primitives.hpp"
 #include "common/InputError.hpp"
+#include "common/StrictJson.hpp"
 
 namespace arp::host {
 
@@ -170,16 +171,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
 }
 
 Scene load_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw InputError(path, "byte " + std::to_string(e.byte), "not valid JSON");
-  }
+  const json j = parse_strict_json(read_input_file(path, 64 << 20, "scene file"), path);
   return scene_from_json(j, path, std::filesystem::path(path).parent_path().string());
 }
 
