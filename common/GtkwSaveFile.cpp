@@ -3,17 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <charconv>
 #include <map>
 #include <sstream>
 #include <vector>
 
 #include "common/InputError.hpp"
+#include "common/InputFile.hpp"
 
 namespace arp {
 
 namespace {
 constexpr double kWavePixels = 1000;  // [size] 1600 wide, less the tree and signal panes
+constexpr size_t kMaxScopeDepth = 256, kMaxVars = 1'000'000;  // far beyond any model's
 
 struct Var {
   std::string path;  // scope.name[range]
@@ -49,20 +51,24 @@ int group_rank(const std::string& g) {
 }  // namespace
 
 std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile, int64_t view) {
-  std::ifstream in(vcd_path);
-  if (!in) throw InputError(vcd_path, "", "cannot read the waveform");
+  const auto in = open_input_stream(vcd_path, "waveform");
+  return gtkw_for_vcd(*in, vcd_path, dumpfile, view);
+}
+
+std::string gtkw_for_vcd(std::istream& in, const std::string& vcd_path, const std::string& dumpfile, int64_t view) {
+  LineReader lines(in, vcd_path);
   std::vector<std::string> scope;
   std::vector<Var> vars;
   std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
+  while (lines.next(line)) {
     std::istringstream ss(line);
     std::string tok;
     ss >> tok;
     if (tok == "$scope") {
       std::string kind, name;
       ss >> kind >> name;
+      if (scope.size() == kMaxScopeDepth)
+        throw InputError(vcd_path, lines.where(), "scopes nested deeper than " + std::to_string(kMaxScopeDepth));
       scope.push_back(name);
     } else if (tok == "$upscope") {
       if (!scope.empty()) scope.pop_back();
@@ -70,7 +76,8 @@ std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfil
       std::string kind, id, name, range;
       int width = 0;
       ss >> kind >> width >> id >> name >> range;
-      if (width <= 0) throw InputError(vcd_path, "line " + std::to_string(lineno), "malformed $var");
+      if (width <= 0 || id.empty() || name.empty()) throw InputError(vcd_path, lines.where(), "malformed $var");
+      if (vars.size() == kMaxVars) throw InputError(vcd_path, lines.where(), "more than " + std::to_string(kMaxVars) + " signals");
       Var v;
       std::string p;
       for (const auto& s : scope) p += s + ".";
@@ -94,9 +101,13 @@ std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfil
   // view given, as far as the 200th timestamp (about a hundred clocks: each
   // edge readable) or the end of the trace, whichever comes first.
   int64_t first = -1, last = -1;
-  for (int stamps = 0; stamps < 200 && std::getline(in, line);)
+  for (int stamps = 0; stamps < 200 && lines.next(line);)
     if (!line.empty() && line[0] == '#') {
-      last = std::stoll(line.substr(1));
+      int64_t t = 0;
+      const auto [end, ec] = std::from_chars(line.data() + 1, line.data() + line.size(), t);
+      if (ec != std::errc() || end != line.data() + line.size() || t < 0 || t < last)
+        throw InputError(vcd_path, lines.where(), "'" + quoted(line) + "' is not a timestamp (#N, N >= 0, never decreasing)");
+      last = t;
       if (first < 0) first = last;
       ++stamps;
     }

@@ -3,6 +3,7 @@
 // binary, counters and positions as decimal, colours and data as hex.
 #pragma once
 #include <cstdint>
+#include <istream>
 #include <string>
 
 namespace arp {
@@ -15,5 +16,7 @@ namespace arp {
 // window traced late in a run opens where something moves. InputError naming
 // the VCD when it cannot be read or declares nothing.
 std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile, int64_t view = 0);
+// The same from a stream (`vcd_path` names it in messages); reads only the header and the first 200 timestamps.
+std::string gtkw_for_vcd(std::istream& vcd, const std::string& vcd_path, const std::string& dumpfile, int64_t view = 0);
 
 }  // namespace arp

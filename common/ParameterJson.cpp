@@ -12,7 +12,7 @@ bool integer_of(const json& v, int64_t& out, std::string& why) {
   if (v.is_number_unsigned()) {
     const auto u = v.get<uint64_t>();
     if (u > static_cast<uint64_t>(std::numeric_limits<int64_t>::max())) {
-      why = "is " + std::to_string(u) + ", out of range";
+      why = "is " + std::to_string(u) + ", beyond any integer setting";  // set_parameter adds the declared range
       return false;
     }
     out = static_cast<int64_t>(u);

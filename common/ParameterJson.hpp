@@ -42,6 +42,7 @@ void set_parameter(const Parameter<Root>& p, const nlohmann::json& v, const std:
   std::string why;
   if (!param_json::to_value(p.type, p.array_size, v, value, why)) {
     if (p.type == ParamType::Choice) why = "must be one of " + p.range_text() + ", got " + brief(v);
+    else if (why.find(" beyond any integer setting") != std::string::npos) why += "; must be in " + p.range_text();
     throw InputError(source, p.key, why);
   }
   const std::string bad = p.range_error(value);

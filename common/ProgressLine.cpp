@@ -16,7 +16,13 @@ void ProgressLine::update(double fraction, const std::string& detail) {
   const double eta = fraction > 0 ? s * (1.0 - fraction) / fraction : 0.0;
   std::fprintf(stderr, "\r%s: %-12s %5.1f%%  elapsed %6.1f s  ETA %6.1f s ", prefix_.c_str(), detail.c_str(),
                100.0 * fraction, s, eta);
+  open_ = !done;
   if (done) std::fprintf(stderr, "\n");
+}
+
+void ProgressLine::finish() {
+  if (open_) std::fprintf(stderr, "\n");
+  open_ = false;
 }
 
 void ProgressLine::step(const std::string& detail) {

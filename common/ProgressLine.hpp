@@ -15,6 +15,8 @@ class ProgressLine {
   void update(double fraction, const std::string& detail);
   // One of `total_steps` done.
   void step(const std::string& detail);
+  // Ends a line left unfinished (a run stopped before completion); nothing if none is open.
+  void finish();
 
  private:
   std::string prefix_;
@@ -22,6 +24,7 @@ class ProgressLine {
   int64_t total_, done_ = 0;
   std::chrono::steady_clock::time_point start_;
   double last_ = -1.0;
+  bool open_ = false;  // a line drawn and not yet ended
 };
 
 }  // namespace arp

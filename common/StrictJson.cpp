@@ -1,10 +1,6 @@
 #include "StrictJson.hpp"
 
-#include <sys/stat.h>
-
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <vector>
 
 #include "InputError.hpp"
@@ -38,6 +34,9 @@ std::string brief(const json& v) {
 }
 
 json parse_strict_json(const std::string& text, const std::string& source) {
+  // The parser stops at a NUL byte as if the text ended there: what follows would be ignored.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos)
+    throw InputError(source, position(text, nul + 1), "a NUL byte: binary data, not JSON text");
   // The parser's callback sees every key as it is read: a stack of the keys
   // of the objects open around it finds repeats; depth is checked on the way in.
   std::vector<std::set<std::string>> keys;
@@ -101,20 +100,6 @@ json parse_strict_json(const std::string& text, const std::string& source) {
   } catch (const std::out_of_range&) {
     throw InputError(source, problem_place, problem);
   }
-}
-
-std::string read_input_file(const std::string& path, size_t max_bytes, const char* what) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw InputError(path, "", std::string("cannot open the ") + what);
-  if (!S_ISREG(st.st_mode)) throw InputError(path, "", std::string("the ") + what + " must be a regular file");
-  if (static_cast<size_t>(st.st_size) > max_bytes)
-    throw InputError(path, "", std::string("the ") + what + " is " + std::to_string(st.st_size) + " bytes, more than the " +
-                                   std::to_string(max_bytes) + " allowed");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", std::string("cannot open the ") + what);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 }  // namespace arp

@@ -8,15 +8,14 @@
 
 #include <string>
 
+#include "InputFile.hpp"  // read_input_file: the text these parse
+
 namespace arp {
 
 constexpr int kMaxJsonDepth = 64;
 
 // Parses `text` read from `source`; InputError(source, "line L, column C" or the key path, reason).
 nlohmann::json parse_strict_json(const std::string& text, const std::string& source);
-
-// Reads a whole regular file (InputError: missing, not a regular file, larger than max_bytes).
-std::string read_input_file(const std::string& path, size_t max_bytes, const char* what);
 
 // A value as an error message quotes it: at most kQuoteChars characters.
 std::string brief(const nlohmann::json& v);

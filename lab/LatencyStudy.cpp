@@ -14,6 +14,7 @@
 #include "common/Gnuplot.hpp"
 #include "common/GtkwSaveFile.hpp"
 #include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
 #include "common/Units.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
@@ -214,7 +215,7 @@ std::string LatencyStudy::run() {
   auto archs = make_architectures(d, c, lab, "arpsim latency settings", &feed);
   std::vector<std::string> names;
   for (const auto& ar : archs) names.push_back(ar->name());
-  fs::create_directories(out);  // only once every setting has been checked
+  make_output_folder("--out-dir", out);  // only once every setting has been checked
 
   LabSettings ls;
   ls.first_frame = first_frame;

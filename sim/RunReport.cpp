@@ -1,5 +1,7 @@
 #include "RunReport.hpp"
 
+#include <cstring>
+
 #include <cinttypes>
 #include <cstdarg>
 #include <cstdio>
@@ -125,6 +127,9 @@ std::vector<std::string> RunSummary::lines() const {
   std::vector<std::string> out;
   out.push_back(line("arpsim run: %s level, %" PRId64 " frames (%" PRId64 "..%" PRId64 ") of %s with %s", fidelity.c_str(), frames,
                      first_frame, first_frame + frames - 1, motion_source.c_str(), memory_source.c_str()));
+  if (!complete())
+    out.push_back(line("  STOPPED%s after %" PRId64 " of %" PRId64 " frames: the outputs cover those frames (the report says \"complete\": false)",
+                       stop_signal ? (std::string(" by SIG") + sigabbrev_np(stop_signal)).c_str() : "", frames_done, frames));
   out.push_back(line("  orientation sample -> photon: min %.1f us, median %.1f us, max %.1f us", latency_min_ps * 1e-6,
                      latency_median_ps * 1e-6, latency_max_ps * 1e-6));
   if (cycle_accurate)

@@ -19,6 +19,9 @@ namespace arp::sim {
 struct RunSummary {
   std::string fidelity, motion_source, memory_source;
   int64_t first_frame = 0, frames = 0;
+  int64_t frames_done = 0;  // scanned out: fewer than `frames` when the run was stopped
+  int stop_signal = 0;      // the signal that stopped it (SIGINT, SIGTERM), 0: ran to the end
+  bool complete() const { return frames_done == frames; }
   int64_t latency_min_ps = 0, latency_median_ps = 0, latency_max_ps = 0;  // over the run (median of frame medians)
   bool cycle_accurate = false;
   int64_t underflows = 0, late_discarded = 0, swaps = 0;

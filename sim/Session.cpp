@@ -11,11 +11,12 @@
 #include <fstream>
 
 #include "FrameImage.hpp"
-#include "common/GtkwSaveFile.hpp"
 #include "PoseConversion.hpp"
 #include "TruthProbe.hpp"
 #include "common/AtomicFile.hpp"
+#include "common/GtkwSaveFile.hpp"
 #include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
 #include "common/Units.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
@@ -44,17 +45,11 @@ std::pair<double, double> parse_window(const std::string& opt, const std::string
   }
 }
 
-// The VCD's final path (".vcd" added; a bare name goes into waveforms/), its folder made and checked writable.
+// The VCD's final path: ".vcd" added; a bare name goes into waveforms/ (made by build_outputs).
 std::string vcd_path(const std::string& arg) {
   fs::path p(arg);
   if (!p.has_parent_path()) p = fs::path("waveforms") / p;
   if (p.extension() != ".vcd") p += ".vcd";
-  std::error_code ec;
-  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  std::ofstream probe(p.string() + ".probe");
-  if (!probe) throw InputError(p.string(), "", "cannot write the waveform there");
-  probe.close();
-  fs::remove(p.string() + ".probe", ec);
   return p.string();
 }
 
@@ -62,7 +57,6 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const auto& o = s.out;
   const auto& h = s.host;
   if (s.frames < 1 || s.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
-  if (s.first_frame < 0 || s.first_frame > 1'000'000'000) throw InputError("--first-frame", "", "must be 0 .. 1e9");
   if (o.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
   if (!s.trace.empty() && s.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
   if (!s.live.empty()) {
@@ -82,8 +76,18 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
   if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
+  if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);
+  check_output_paths({{"--report", o.report}, {"--csv", o.csv}, {"--host-csv", o.host_csv}, {"--tear-image", o.tear_image},
+                      {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
+                      {"--vcd's save file", o.vcd.empty() ? "" : fs::path(vcd_path(o.vcd)).replace_extension(".gtkw").string(), true}},
+                     {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk},
+                      {"--scene", s.memories.scene == "gallery" ? "" : s.memories.scene}, {"--cross", s.memories.cross},
+                      {"--equirect", s.memories.equirect}});
   const auto issues = fid == scm::Fidelity::Functional ? dp::validate(s.config) : dp::validate_timed(s.config);
   if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);
+  // After the configuration's check: the limit depends on its clock.
+  if (const std::string why = dp::VideoTiming(s.config.timing).frames_out_of_range(s.first_frame, s.frames); !why.empty())
+    throw InputError("--first-frame", "", why);
 }
 
 }  // namespace
@@ -108,7 +112,8 @@ Session::~Session() = default;
 // turning on top of it), or live input that grows frame by frame.
 void Session::build_motion() {
   if (!spec_.trace.empty()) {
-    poses_ = tracker::read_trace_csv(spec_.trace);
+    // Only what the run can latch: a second of margin before the first frame covers every lead.
+    poses_ = tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, end_ps_ + kPsPerSecond / 100});
     motion_source_ = spec_.trace;
   } else if (spec_.motion.given()) {
     // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
@@ -220,16 +225,11 @@ void Session::build_live_input(stage::TimedInputs& in) {
 // Every output is checked before anything is simulated: folders made, files writable.
 void Session::build_outputs(scm::TimedRunOptions& opt) {
   const OutputSpec& o = spec_.out;
-  if (o.every > 0 || o.photon_times) {
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    if (ec || !fs::is_directory(o.out_dir))
-      throw InputError(o.out_dir, "", "cannot create the output folder" + (ec ? ": " + ec.message() : std::string()));
-  }
-  if (!o.host_csv.empty()) temp_path_beside(o.host_csv);  // its folder exists
+  if (o.every > 0 || o.photon_times) make_output_folder("--out-dir", o.out_dir);
   log_ = std::make_unique<FrameLog>(o.csv, o.report, frame_csv_header());
   if (o.vcd.empty()) return;
   vcd_final_ = vcd_path(o.vcd);
+  make_output_folder("--vcd", fs::path(vcd_final_).parent_path().string());
   vcd_tmp_base_ = temp_path_beside(vcd_final_).string();
   opt.vcd.path = vcd_tmp_base_;
   if (!o.vcd_lines.empty()) {
@@ -319,6 +319,8 @@ RunSummary Session::run() {
   opt.threads = spec_.threads;
   opt.speculate = spec_.speculate;
   opt.progress = on_progress;
+  int stop_signal = 0;
+  if (stop_when) opt.stop = [this, &stop_signal] { return (stop_signal = stop_when()) != 0; };
   build_outputs(opt);
 
   stage::TimedInputs in;
@@ -386,8 +388,10 @@ RunSummary Session::run() {
   s.memory_source = memory_source_;
   s.first_frame = spec_.first_frame;
   s.frames = spec_.frames;
-  s.latency_min_ps = best;
-  s.latency_median_ps = medians[medians.size() / 2];
+  s.frames_done = res.frames;
+  s.stop_signal = res.stopped ? stop_signal : 0;
+  s.latency_min_ps = res.frames ? best : 0;
+  s.latency_median_ps = res.frames ? medians[medians.size() / 2] : 0;
   s.latency_max_ps = worst;
   s.cycle_accurate = fidelity_ == scm::Fidelity::Detailed || fidelity_ == scm::Fidelity::Cycle;
   s.underflows = res.underflows;
@@ -406,6 +410,8 @@ RunSummary Session::run() {
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
+  r["complete"] = s.complete();
+  r["frames_done"] = s.frames_done;
   r["motion"] = motion_source_;
   r["cube_map"] = memory_source_;
   r["images"] = images_;

@@ -34,6 +34,10 @@ class Session {
   // Hooks: progress (fraction done, what), and each frame as it is scanned out.
   std::function<void(double, const std::string&)> on_progress;
   std::function<void(const HmdFrame&, const stage::FrameReport&)> on_frame;
+  // Polled after each frame: non-zero ends the run there (the signal that
+  // asked, e.g. from common/Interrupt). The outputs then cover the frames
+  // finished; the report says "complete": false.
+  std::function<int()> stop_when;
 
   // Runs the pipeline and writes the outputs; the summary for the command to print.
   RunSummary run();

@@ -4,12 +4,15 @@
 #include <chrono>
 
 #include "ConfigFile.hpp"
+#include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
 namespace arp::sim {
 
 StillFrame render_still(const StillSpec& spec) {
   const FunctionalModel model(spec.config);
+  if (const std::string why = model.timing().frames_out_of_range(spec.frame, 1); !why.empty())
+    throw InputError("--frame", "", why);
   dp::DisplayMemorySet mem(spec.config.memory, spec.config.timing.eyes);
   StillFrame s;
   spec.memories.fill(mem, spec.orientation, s.source);

@@ -22,7 +22,7 @@ TEST(Cli, HelpOnEveryCommand) {
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.output.find("--"), std::string::npos) << sub;
   }
-  EXPECT_NE(run_command(kArpsim).status, 0);  // a command is required
+  EXPECT_EQ(run_command(kArpsim).status, 2);  // a command is required
 }
 
 TEST(Cli, FrameWritesTheStereoImageAndReport) {
@@ -66,7 +66,7 @@ TEST(Cli, BadInputFailsClearlyAndLeavesNoOutput) {
   const auto r = run_command(kArpsim + " frame --out " + d.file("no/folder/out.png"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("does not exist"), std::string::npos);
-  EXPECT_NE(run_command(kArpsim + " frame --threads -1").status, 0);
+  EXPECT_EQ(run_command(kArpsim + " frame --threads -1").status, 2);
   EXPECT_EQ(d.entries(), 2u);  // only the two inputs: no stray temporaries
 }
 
@@ -124,7 +124,7 @@ TEST(Cli, TrackerSynthWritesAReadableTraceAndRefusesBadValues) {
   };
   for (const auto& b : bad) {
     const auto e = run_command(kArpsim + " tracker synth " + b.args + " --out " + d.file("bad.csv"));
-    EXPECT_NE(e.status, 0) << b.args;
+    EXPECT_EQ(e.status, 2) << b.args;
     EXPECT_NE(e.output.find(b.expect), std::string::npos) << b.args << "\n" << e.output;
     EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv"))) << b.args;
   }

@@ -113,7 +113,7 @@ TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
   for (const Bad& b : std::vector<Bad>{
            {" --fidelity gates", "--fidelity"},
            {" --fidelity functional --vcd " + d.file("x.vcd"), "no waveform"},
-           {" --fidelity rtl --vcd /proc/arpsim/x.vcd", "cannot write"},
+           {" --fidelity rtl --vcd /proc/arpsim/x.vcd", "cannot create the folder"},
            {" --fidelity rtl --set timed.fifo_depth=0", "timed.fifo_depth"},
            {" --fidelity cycle --set memory.count=9", "memory.count"},
            {" --fidelity rtl --set display.pixel_clock_hz=200000000", "timed.lens_latency"},
@@ -195,8 +195,10 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
   EXPECT_GT(j["host"]["load_reduction"].get<double>(), 1.0);
   EXPECT_EQ(j["host"]["error"]["frames_measured"], 2);
   EXPECT_GT(j["host"]["error"]["mean_psnr_db"].get<double>(), 15.0);
+  // Pixels showing another object than the truth: some (the host renders
+  // memories 1-3 less often than the display refreshes) but a small share.
   const double share = j["host"]["error"]["worst_share_showing_another_object"].get<double>();
-  EXPECT_GE(share, 0.0);
+  EXPECT_GT(share, 0.0);
   EXPECT_LT(share, 0.2);
   EXPECT_TRUE(std::filesystem::exists(d.file("f/frame_000004.png")));
   std::ofstream(d.file("flat.json")) << R"({"speed": 1, "points": [[0,1.6,0],[0,1.6,0]]})";
@@ -242,8 +244,13 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_EQ(j["host"]["mode"], "regions");
   EXPECT_GT(j["host"]["regions"]["segments"].get<int>(), j["host"]["regions"]["objects_cut"].get<int>());
   EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
-  EXPECT_GE(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
-  EXPECT_GE(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
+  // Segments of one object in memories updated at different times do not
+  // meet where they should (Chow 2005, on segmentation): this walk has both torn
+  // and cracked pixels, and the report carries them (deterministic: the same
+  // walk, the same frames measured).
+  EXPECT_EQ(j["host"]["error"]["frames_measured"], 2);
+  EXPECT_GT(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
+  EXPECT_GT(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
   // Cubes for tall worlds, and the magnified tear at a place given by --tear-at.
   const auto cu = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 3" +
                               " --regions 2 --region-cubes --set memory.face_size=128 --tear-image " + d.file("tear.png") +

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <random>
+#include <stdexcept>
 
 #include "rtl_model/datapath/VideoTiming.hpp"
 
@@ -79,4 +82,38 @@ TEST(VideoTiming, ConversionsAtFarExtremes) {
   EXPECT_EQ(t.cycles_to_ps(month), int64_t{3600} * 24 * 30 * 1'000'000'000'000);
   EXPECT_EQ(t.ps_to_cycle_floor(t.cycles_to_ps(month)), month);
   EXPECT_EQ(t.cycles_to_ps(-1), -39722);  // floor, also before time zero
+}
+
+// Time is int64 picoseconds: 2^63 - 1 ps is 106.75 days (a closed form, not
+// the code's). The last frame in range has every time of itself and of the
+// frame after it representable; a frame further is refused by name, and a
+// cycle past the range is an overflow error, never a wrapped time.
+TEST(VideoTiming, TimesPastThe64BitPicosecondRangeAreRefusedNotWrapped) {
+  for (const int64_t hz : {int64_t{25'175'000}, int64_t{1000}, int64_t{100'000'000'000}}) {
+    VideoTimingConfig c;
+    c.pixel_clock_hz = hz;
+    const VideoTiming t{c};
+    const double range_s = 9223372036854775807.0 * 1e-12;  // 106.75 days
+    const double frame_s = static_cast<double>(t.frame_cycles()) / static_cast<double>(hz);
+    const int64_t last = t.last_frame_in_range();
+    EXPECT_NEAR(static_cast<double>(last), std::floor(range_s / frame_s) - 2, 1.0) << hz;
+    EXPECT_NO_THROW(t.cycles_to_ps(t.frame_start_cycle(last + 2))) << hz;
+    EXPECT_THROW(t.cycles_to_ps(t.frame_start_cycle(last + 4)), std::overflow_error) << hz;
+    EXPECT_GT(t.cycles_to_ps(t.frame_start_cycle(last + 2)), t.cycles_to_ps(t.frame_start_cycle(last + 1)));  // no wrap
+    EXPECT_EQ(t.frames_out_of_range(0, last + 1), "") << hz;
+    EXPECT_EQ(t.frames_out_of_range(last, 1), "") << hz;
+    const std::string why = t.frames_out_of_range(last, 2);
+    EXPECT_NE(why.find("frame " + std::to_string(last + 1) + " is past"), std::string::npos) << why;
+    EXPECT_NE(why.find("frame " + std::to_string(last) + " ("), std::string::npos) << why;  // the limit stated
+    EXPECT_NE(t.frames_out_of_range(INT64_MAX, INT64_MAX).find("or more"), std::string::npos);
+    EXPECT_NE(t.frames_out_of_range(-1, 1), "");
+  }
+  // Far before time zero too: floored, and refused past the range.
+  const VideoTiming t{VideoTimingConfig{}};
+  EXPECT_EQ(t.cycles_to_ps(-1), -39722);
+  EXPECT_THROW(t.cycles_to_ps(INT64_MIN / 2), std::overflow_error);
+  // The inverse at the range's ends stays exact.
+  const int64_t c_last = t.frame_start_cycle(t.last_frame_in_range() + 2);
+  EXPECT_EQ(t.ps_to_cycle_floor(t.cycles_to_ps(c_last)), c_last);
+  EXPECT_EQ(t.ps_to_cycle_floor(t.cycles_to_ps(c_last) - 1), c_last - 1);
 }

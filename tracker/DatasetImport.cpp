@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "common/InputError.hpp"
+#include "common/InputFile.hpp"
 
 namespace arp::tracker {
 
@@ -38,8 +38,8 @@ bool number(const std::string& s, double& v) {
 }  // namespace
 
 std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const DatasetLayout& layout) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open the dataset file");
+  const auto in = open_input_stream(path, "dataset file");
+  LineReader lines(*in, path);
   double to_ps = 1e12;
   switch (layout.time_unit) {
     case DatasetLayout::TimeUnit::Seconds: to_ps = 1e12; break;
@@ -49,12 +49,10 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
   }
   std::vector<PoseSample> out;
   std::string line;
-  size_t line_no = 0;
   bool first_data = true, header_allowed = true;
   double t0 = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string where = "line " + std::to_string(line_no);
+  while (lines.next(line)) {
+    const std::string where = lines.where();
     for (char& c : line)
       if (c == ',' || c == '\t' || c == '\r') c = ' ';
     std::istringstream ss(line);
@@ -74,8 +72,8 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
     static const char* kNames[6] = {"timestamp", "frameId", "quaternion", "quaternion", "quaternion", "quaternion"};
     for (int i = 0; i < 6; ++i)
       if (!number(f[static_cast<size_t>(i)], v[i]))
-        throw InputError(path, where, std::string(kNames[i]) + " '" + f[static_cast<size_t>(i)] + "' is not a finite number");
-    if (v[1] != std::floor(v[1]) || v[1] < 0) throw InputError(path, where, "frameId '" + f[1] + "' is not a non-negative integer");
+        throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(f[static_cast<size_t>(i)]) + "' is not a finite number");
+    if (v[1] != std::floor(v[1]) || v[1] < 0) throw InputError(path, where, "frameId '" + quoted(f[1]) + "' is not a non-negative integer");
     double w = v[2], x = v[3], y = v[4], z = v[5];
     if (layout.scalar_last) {
       x = v[2];
@@ -93,7 +91,7 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
     if (first_data) t0 = v[0];
     const double t_ps = (v[0] - t0) * to_ps;
     if (!first_data && t_ps <= static_cast<double>(out.back().time_ps))
-      throw InputError(path, where, "timestamp " + f[0] + " does not come after the previous one");
+      throw InputError(path, where, "timestamp " + quoted(f[0]) + " does not come after the previous one");
     if (std::abs(t_ps) > 9e18) throw InputError(path, where, "timestamp out of range for the time unit");
     first_data = false;
     PoseSample p;

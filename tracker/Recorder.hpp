@@ -3,7 +3,6 @@
 // holds its last pose and looks for the device again) and reported through
 // the events callback.
 #pragma once
-#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,6 +16,6 @@ struct RecordHooks {
   std::function<void(const std::string&)> event;                                   // unplug, replug, ...
 };
 
-std::vector<PoseSample> record_for(PoseSource& source, double seconds, const std::atomic<bool>& stop, const RecordHooks& hooks);
+std::vector<PoseSample> record_for(PoseSource& source, double seconds, const std::function<bool()>& stop, const RecordHooks& hooks);
 
 }  // namespace arp::tracker

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
+#include "common/InputFile.hpp"
 
 namespace arp::tracker {
 
@@ -30,18 +30,22 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-std::vector<PoseSample> read_trace_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open the trace file");
+std::vector<PoseSample> read_trace_csv(const std::string& path, const TraceWindow& window) {
+  const auto in = open_input_stream(path, "trace file");
+  return read_trace_csv(*in, path, window);
+}
+
+std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path, const TraceWindow& window) {
+  LineReader lines(in, path);
   std::vector<PoseSample> out;
   std::string line;
-  size_t line_no = 0, columns = 0;
+  size_t columns = 0;
+  bool any = false;  // a sample read, kept or not
   static const char* kNames[8] = {"time_s", "qw", "qx", "qy", "qz", "px", "py", "pz"};
-  while (std::getline(in, line)) {
-    ++line_no;
+  while (lines.next(line)) {
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
-    const std::string where = "line " + std::to_string(line_no);
+    const std::string where = lines.where();
     auto fields = split(t);
     for (auto& f : fields) f = trim(f);
     if (columns == 0) {  // the header
@@ -49,7 +53,7 @@ std::vector<PoseSample> read_trace_csv(const std::string& path) {
         throw InputError(path, where, "header must be time_s,qw,qx,qy,qz or time_s,qw,qx,qy,qz,px,py,pz");
       for (size_t i = 0; i < fields.size(); ++i)
         if (fields[i] != kNames[i])
-          throw InputError(path, where, "header column " + std::to_string(i + 1) + " is '" + fields[i] + "', expected '" +
+          throw InputError(path, where, "header column " + std::to_string(i + 1) + " is '" + quoted(fields[i]) + "', expected '" +
                                             kNames[i] + "'");
       columns = fields.size();
       continue;
@@ -63,12 +67,12 @@ std::vector<PoseSample> read_trace_csv(const std::string& path) {
       errno = 0;
       v[i] = std::strtod(s, &end);
       if (fields[i].empty() || end == s || *end != '\0')
-        throw InputError(path, where, std::string(kNames[i]) + " '" + fields[i] + "' is not a number");
-      if (!std::isfinite(v[i]) || errno == ERANGE)
-        throw InputError(path, where, std::string(kNames[i]) + " '" + fields[i] + "' is not a finite number");
+        throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a number");
+      if (!std::isfinite(v[i]) || (errno == ERANGE && std::abs(v[i]) > 1.0))
+        throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a finite number");
     }
     if (std::abs(v[0]) > 9.0e6)  // the int64 picosecond timeline spans +-106 days
-      throw InputError(path, where, "time_s " + fields[0] + " is outside +-9e6 s");
+      throw InputError(path, where, "time_s " + quoted(fields[0]) + " is outside +-9e6 s");
     const double n = std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
     if (!(std::abs(n - 1.0) <= 1e-3))
       throw InputError(path, where, "quaternion has length " + std::to_string(n) + "; a rotation needs a unit quaternion");
@@ -79,9 +83,13 @@ std::vector<PoseSample> read_trace_csv(const std::string& path) {
       p.has_position = true;
       p.position = glm::dvec3(v[5], v[6], v[7]);
     }
-    if (!out.empty() && p.time_ps < out.back().time_ps)
-      throw InputError(path, where, "time " + fields[0] + " s is earlier than the previous sample's");
+    if (any && p.time_ps < (out.empty() ? p.time_ps : out.back().time_ps))
+      throw InputError(path, where, "time " + quoted(fields[0]) + " s is earlier than the previous sample's");
+    any = true;
+    // The window: one sample before its start (the one held at the start), none but the first after its end.
+    if (p.time_ps <= window.from_ps) out.clear();
     out.push_back(p);
+    if (p.time_ps > window.to_ps) break;
   }
   if (columns == 0) throw InputError(path, "", "no header line (time_s,qw,qx,qy,qz[,px,py,pz])");
   if (out.empty()) throw InputError(path, "", "no samples after the header");

@@ -9,7 +9,17 @@
 // world frame and must be unit length (within 1e-3) -- it is renormalised on
 // reading; px py pz are metres in the world frame. Times never decrease.
 // Every problem is an InputError naming the file, the line and the reason.
+//
+// Reading streams: the file is read line by line (lines of at most 64 KiB,
+// no binary data), and with a time window only the samples a run can use are
+// kept -- the last at or before the window's start, every one inside it and
+// the first after its end, where reading stops (times never decrease, so the
+// rest cannot matter). A ten-million-line trace then costs a 3-frame run
+// nothing but the reading of its first seconds.
 #pragma once
+#include <cstdint>
+#include <istream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -17,7 +27,14 @@
 
 namespace arp::tracker {
 
-std::vector<PoseSample> read_trace_csv(const std::string& path);
+struct TraceWindow {
+  int64_t from_ps = std::numeric_limits<int64_t>::min();
+  int64_t to_ps = std::numeric_limits<int64_t>::max();
+};
+
+// A trace file, or standard input for "-".
+std::vector<PoseSample> read_trace_csv(const std::string& path, const TraceWindow& window = {});
+std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& source, const TraceWindow& window = {});
 
 // Writes through a temporary file and a rename: never a half-written trace.
 // Positions are written when every sample has one.

@@ -1,7 +1,61 @@
 #include "CommonOptions.hpp"
 
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "common/InputError.hpp"
 
 namespace arp::app {
+
+namespace {
+
+// "" if `s` is a whole number of type T (then without leading zeros, so CLI11 reads it as decimal), else why not.
+template <class T>
+std::string whole_number(std::string& s) {
+  const bool neg = !s.empty() && s[0] == '-';
+  const size_t digits = !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;
+  if (s.size() == digits || s.find_first_not_of("0123456789", digits) != std::string::npos)
+    return "'" + quoted(s) + "' is not a whole number";
+  T v{};
+  const auto [end, ec] = std::from_chars(s.data() + digits - (neg ? 1 : 0), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size())
+    return quoted(s) + " is outside the range " + std::to_string(std::numeric_limits<T>::min()) + " .. " +
+           std::to_string(std::numeric_limits<T>::max());
+  s = std::to_string(v);
+  return "";
+}
+
+std::string real_number(const std::string& s) {
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size()) return "'" + quoted(s) + "' is not a number";
+  if (!std::isfinite(v)) return quoted(s) + " is not a finite number";
+  if (errno == ERANGE && std::fabs(v) > 1.0) return quoted(s) + " is too large for a double (beyond 1.8e308)";
+  return "";  // an underflow (1e-320) is a number: its nearest double
+}
+
+void strict_options(CLI::App& app, const CLI::Validator& whole, const CLI::Validator& uwhole, const CLI::Validator& real) {
+  for (CLI::Option* o : app.get_options()) {
+    const std::string type = o->get_type_name();
+    if (type.rfind("UINT", 0) == 0) o->transform(uwhole);  // a transform: it may drop leading zeros
+    else if (type.rfind("INT", 0) == 0) o->transform(whole);
+    else if (type.rfind("FLOAT", 0) == 0) o->check(real);
+  }
+  for (CLI::App* sub : app.get_subcommands({})) strict_options(*sub, whole, uwhole, real);
+}
+
+}  // namespace
+
+void strict_numbers(CLI::App& app) {
+  const CLI::Validator whole([](std::string& s) { return whole_number<int64_t>(s); }, "", "whole number");
+  const CLI::Validator uwhole([](std::string& s) { return whole_number<uint64_t>(s); }, "", "whole number >= 0");
+  const CLI::Validator real([](std::string& s) { return real_number(s); }, "", "number");
+  strict_options(app, whole, uwhole, real);
+}
 
 void ConfigOptions::add_to(CLI::App& cmd) {
   cmd.add_option("--config", file, "JSON configuration file (every key: docs/configuration.md)");

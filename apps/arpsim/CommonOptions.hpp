@@ -22,6 +22,12 @@ struct ConfigOptions {
   std::string source() const { return file.empty() ? "configuration" : file; }
 };
 
+// Every numeric option of `app` and its subcommands made strict: an integer
+// is decimal digits with an optional sign (CLI11 alone reads "010" as octal
+// and clamps 2^63 silently) inside its 64-bit range; a real number is finite
+// and not an overflow ("1e400"). Applied once, after every command is added.
+void strict_numbers(CLI::App& app);
+
 // The display memory contents' options (--faces, --cross, --equirect, --scene, --position, --time, --ipd).
 void add_memory_options(CLI::App& cmd, sim::MemoryContents& m);
 

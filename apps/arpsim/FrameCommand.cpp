@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "sim/FrameImage.hpp"
 #include "sim/StillFrame.hpp"
@@ -47,6 +49,9 @@ int run_frame(FrameArgs& a) {
     if (!std::isfinite(v)) throw InputError("--yaw/--pitch/--roll", "", "angles must be finite");
   spec.orientation = a.quat.empty() ? dp::normalised(dp::from_yaw_pitch_roll_deg(a.yaw, a.pitch, a.roll), "orientation")
                                     : parse_quat(a.quat);
+  check_output_paths({{"--out", a.out}, {"--report", a.report}},
+                     {{"--config", a.cfg.file}, {"--cross", spec.memories.cross}, {"--equirect", spec.memories.equirect},
+                      {"--scene", spec.memories.scene}});
   const sim::StillFrame s = sim::render_still(spec);
   const HmdFrame& f = s.frame;
   const dp::Quat& q = spec.orientation;
@@ -75,7 +80,8 @@ Runner add_frame_command(CLI::App& app) {
   add_memory_options(*cmd, args->spec.memories);
   cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str();
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
-  cmd->add_option("--frame", args->spec.frame, "Frame index (sets the photon times)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--frame", args->spec.frame, "Frame index (sets the photon times)")
+      ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()));
   cmd->add_option("--threads", args->spec.threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 256));
   cmd->add_option("--report", args->report, "Also write a JSON report of the frame");
   return [args] { return run_frame(*args); };

@@ -5,6 +5,7 @@
 #include "Commands.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/GtkwSaveFile.hpp"
+#include "common/OutputPaths.hpp"
 
 namespace arp::app {
 
@@ -16,6 +17,7 @@ Runner add_gtkw_command(CLI::App& app) {
   cmd->add_option("--out,-o", *out, "Save file to write (default: the VCD's name with .gtkw)");
   return [vcd, out] {
     const std::string target = out->empty() ? std::filesystem::path(*vcd).replace_extension(".gtkw").string() : *out;
+    check_output_paths({{"--out", target}}, {{"vcd", *vcd}});
     write_text_atomic(target, gtkw_for_vcd(*vcd, std::filesystem::path(*vcd).filename().string()));
     std::printf("arpsim gtkw: %s (open: gtkwave %s %s)\n", target.c_str(), vcd->c_str(), target.c_str());
     return 0;

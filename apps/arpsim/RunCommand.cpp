@@ -6,6 +6,7 @@
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "MotionOptions.hpp"
+#include "common/Interrupt.hpp"
 #include "sim/Session.hpp"
 
 namespace arp::app {
@@ -23,11 +24,15 @@ int run(RunArgs& a) {
   a.spec.config_source = a.cfg.source();
   a.spec.speculate = !a.no_speculation;
   a.spec.host.segmentation = !a.no_segmentation;
+  const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop after the frame in flight, keep what is finished
   sim::Session session(a.spec);
   ProgressLine progress("run " + scm::to_string(session.fidelity()), !a.quiet);
   session.on_progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
-  for (const auto& l : session.run().lines()) std::printf("%s\n", l.c_str());
-  return 0;
+  session.stop_when = interrupt_signal;
+  const sim::RunSummary s = session.run();
+  progress.finish();
+  for (const auto& l : s.lines()) std::printf("%s\n", l.c_str());
+  return s.stop_signal ? interrupted_exit_status(s.stop_signal) : 0;
 }
 
 void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {

@@ -1,12 +1,12 @@
 // arpsim tracker: head-tracker input. `list` finds Oculus Rift DK1/DK2 trackers on USB;
 // `record` streams one to a trace file; `import` converts a dataset; `synth` writes a synthetic trace.
-#include <atomic>
 #include <cinttypes>
-#include <csignal>
 #include <cstdio>
 
 #include "Commands.hpp"
 #include "common/InputError.hpp"
+#include "common/Interrupt.hpp"
+#include "common/OutputPaths.hpp"
 #include "MotionOptions.hpp"
 #include "tracker/TraceFile.hpp"
 #include "tracker/DatasetImport.hpp"
@@ -36,8 +36,6 @@ int run_list() {
   return 0;
 }
 
-std::atomic<bool> g_stop{false};
-void on_interrupt(int) { g_stop = true; }
 
 struct RecordArgs {
   std::string out;
@@ -50,6 +48,7 @@ struct RecordArgs {
 // Ctrl-C stops early and still writes everything recorded.
 int run_record(const RecordArgs& a) {
   if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw InputError("--seconds", "", "must be more than 0 and at most a day");
+  check_output_paths({{"file", a.out}}, {});
   std::string err;
   const auto source = tracker::usb_source(err);
   if (!source) {
@@ -58,7 +57,7 @@ int run_record(const RecordArgs& a) {
   }
   std::printf("arpsim tracker record: %s, %.1f s -> %s (Ctrl-C stops early and keeps what was recorded)\n",
               source->describe().c_str(), a.seconds, a.out.c_str());
-  std::signal(SIGINT, on_interrupt);
+  const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM end the recording early; what was recorded is written
   tracker::RecordHooks hooks;
   hooks.event = [&a](const std::string& e) { std::fprintf(stderr, "%s  %s\n", a.quiet ? "" : "\n", e.c_str()); };
   if (!a.quiet)
@@ -66,8 +65,7 @@ int run_record(const RecordArgs& a) {
       std::fprintf(stderr, "\r  %6.2f / %.2f s  %8zu samples  %s  ETA %.1f s   ", el, a.seconds, n,
                    connected ? "streaming" : "DISCONNECTED, retrying", a.seconds - el);
     };
-  const std::vector<tracker::PoseSample> poses = tracker::record_for(*source, a.seconds, g_stop, hooks);
-  std::signal(SIGINT, SIG_DFL);
+  const std::vector<tracker::PoseSample> poses = tracker::record_for(*source, a.seconds, interrupt_requested, hooks);
   if (!a.quiet) std::fprintf(stderr, "\n");
   if (poses.empty()) {
     std::fprintf(stderr, "arpsim tracker record: nothing was received; %s not written\n", a.out.c_str());
@@ -92,6 +90,7 @@ int run_import(const ImportArgs& a) {
   if (!tracker::parse_time_unit(a.time_unit, layout.time_unit)) throw InputError("--time-unit", a.time_unit, "must be s, ms, us or ns");
   if (!tracker::parse_axes(a.axes, layout.axes)) throw InputError("--axes", a.axes, "must be gl or unity");
   layout.scalar_last = a.scalar_last;
+  check_output_paths({{"trace", a.out}}, {{"dataset", a.in}});
   const auto samples = tracker::read_head_motion_dataset(a.in, layout);
   tracker::write_trace_csv(a.out, samples);
   std::printf("arpsim tracker import: %zu samples, %.3f s (%s axes, %s) -> %s\n", samples.size(),
@@ -106,6 +105,7 @@ struct SynthArgs {
 };
 
 int run_synth(const SynthArgs& a) {
+  check_output_paths({{"--out", a.out}}, {});
   const auto trace = a.motion.make(a.start, a.seconds);
   tracker::write_trace_csv(a.out, trace);
   std::printf("arpsim tracker synth: %zu samples (%s, %.3f s at %.1f Hz) -> %s\n", trace.size(), a.motion.motion.c_str(),

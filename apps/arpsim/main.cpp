@@ -8,6 +8,7 @@
 #include <map>
 
 #include "Commands.hpp"
+#include "CommonOptions.hpp"
 #include "common/InputError.hpp"
 
 // SystemC's library calls sc_main from sc_elab_and_sim; arpsim is its sc_main.
@@ -24,10 +25,12 @@ int sc_main(int argc, char** argv) {
   add(arp::app::add_tracker_command(app));
   add(arp::app::add_latency_command(app));
   add(arp::app::add_live_command(app));
+  arp::app::strict_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int rc = app.exit(e);  // prints the message, or the help (status 0)
+    return rc == 0 ? 0 : 2;      // a malformed option is bad input like any other: status 2
   }
   try {
     for (const auto& [sub, run] : runners)

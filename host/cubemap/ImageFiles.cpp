@@ -1,23 +1,56 @@
 #include "ImageFiles.hpp"
 
 #include <OpenImageIO/imageio.h>
-#include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
+#include "common/InputFile.hpp"
 
 namespace arp::host {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The libraries behind OpenImageIO (libpng, libtiff) print their own lines
+// about a broken file on stderr; arpsim's one message already carries the
+// reason, so while an image is read their output goes nowhere.
+class QuietStderr {
+ public:
+  QuietStderr() : saved_(::dup(STDERR_FILENO)) {
+    std::fflush(stderr);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) {
+      ::dup2(null, STDERR_FILENO);
+      ::close(null);
+    }
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, STDERR_FILENO);
+      ::close(saved_);
+    }
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_;
+};
+
+}  // namespace
+
 RgbImage read_rgb8(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw InputError(path, "", "file does not exist");
-  if (!S_ISREG(st.st_mode)) throw InputError(path, "", "an image must be a regular file");
+  regular_file_size(path, "image");
+  const QuietStderr quiet;  // declared before the reader: restored after it is gone (it may print as it closes)
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path, "", "cannot read as an image: " + quoted(OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
@@ -25,11 +58,13 @@ RgbImage read_rgb8(const std::string& path) {
     throw InputError(path, "header", "image has no pixels");
   // What reading it would take, before anything is allocated: the header decides, not the file's size.
   const uint64_t pixels = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
-  const uint64_t bytes = pixels * static_cast<uint64_t>(spec.nchannels) * (spec.format.is_floating_point() ? 4 : 1);
+  const uint64_t bytes = pixels > kMaxImagePixels ? UINT64_MAX  // (and the product below cannot overflow)
+                                                  : pixels * static_cast<uint64_t>(spec.nchannels) * (spec.format.is_floating_point() ? 4 : 1);
   if (pixels > kMaxImagePixels || bytes > kMaxImageBytes)
     throw InputError(path, "header",
                      std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) +
-                         " channels would take " + std::to_string(bytes >> 20) + " MB; images are limited to " +
+                         " channels would take " + (bytes == UINT64_MAX ? std::string("too much") : std::to_string(bytes >> 20) + " MB") +
+                         "; images are limited to " +
                          std::to_string(kMaxImageBytes >> 20) + " MB and 2^28 pixels");
   const int nc = spec.nchannels;
   if (spec.format.is_floating_point()) {

@@ -35,6 +35,16 @@ class Fields {
     if (!std::isfinite(x) || x < lo || x > hi) fail(k, "must be in [" + num(lo) + ", " + num(hi) + "]");
     return x;
   }
+  int64_t integer(const char* k, int64_t def, int64_t lo, int64_t hi) {
+    seen_.insert(k);
+    if (!j_.contains(k)) return def;
+    const json& v = j_.at(k);
+    if (!v.is_number_integer()) fail(k, "must be a whole number, got " + brief(v));
+    const bool huge = v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(INT64_MAX);
+    const int64_t x = huge ? INT64_MAX : v.get<int64_t>();
+    if (huge || x < lo || x > hi) fail(k, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + brief(v));
+    return x;
+  }
   glm::dvec3 vec3(const char* k, glm::dvec3 def, double lo, double hi) {
     seen_.insert(k);
     if (!j_.contains(k)) return def;
@@ -103,7 +113,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
     int kinds = 0;
     for (const char* k : {"box", "quad", "cylinder", "sphere", "model"}) kinds += o.has(k) ? 1 : 0;
     if (kinds != 1) o.fail("", "needs exactly one of box, quad, cylinder, sphere, model");
-    const int segments = static_cast<int>(o.number("segments", 24, 3, 1024));
+    const int segments = static_cast<int>(o.integer("segments", 24, 3, 1024));
     if (o.has("box")) {
       mesh = std::make_shared<Mesh>(make_box(o.vec3("box", {1, 1, 1}, 1e-4, 1e5)));
     } else if (o.has("quad")) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ArpConfig.hpp"
+#include "ClockTime.hpp"
 #include "VideoTiming.hpp"
 
 namespace arp::dp {
@@ -53,36 +54,5 @@ class PipelineSchedule {
   int64_t swap_offset_;
   std::array<int64_t, kStageCount> to_scanout_{};
 };
-
-// clock_cycle_to_ps for a run of cycles without a 128-bit division each:
-// steps exactly when asked for the next cycle, recomputes otherwise.
-class ClockTimeCursor {
- public:
-  explicit ClockTimeCursor(int64_t hz);
-  int64_t ps(int64_t cycle) {
-    if (cycle == cycle_ + 1) {
-      cycle_ = cycle;
-      ps_ += q_;
-      rem_ += r_;
-      if (rem_ >= hz_) {
-        rem_ -= hz_;
-        ++ps_;
-      }
-      return ps_;
-    }
-    if (cycle != cycle_) seek(cycle);
-    return ps_;
-  }
-
- private:
-  void seek(int64_t cycle);
-  int64_t hz_, q_, r_;  // 1e12 = q * hz + r
-  int64_t cycle_, ps_ = 0, rem_ = 0;
-};
-
-// Exact clock edges of an arbitrary clock: cycle n starts at floor(n * 1e12 / hz) ps.
-int64_t clock_cycle_to_ps(int64_t cycle, int64_t hz);
-// The first cycle that starts at or after ps.
-int64_t clock_cycle_at_or_after(int64_t ps, int64_t hz);
 
 }  // namespace arp::dp

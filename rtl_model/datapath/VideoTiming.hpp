@@ -3,6 +3,7 @@
 // lines (front porch, sync, back porch). Time is integer picoseconds.
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include "ArpConfig.hpp"
 
@@ -34,10 +35,19 @@ class VideoTiming {
     return line_start_cycle(frame, y) + eye_offset + x;
   }
 
-  // Exact conversions: ps = floor(cycles * 1e12 / f_pixel).
+  // Exact conversions: ps = floor(cycles * 1e12 / f_pixel); std::overflow_error
+  // for a time outside the 64-bit picosecond range (never a wrapped time).
   int64_t cycles_to_ps(int64_t cycles) const;
   // The last cycle that starts at or before ps.
   int64_t ps_to_cycle_floor(int64_t ps) const;
+
+  // Time is int64 picoseconds: about 106 days from time zero. The last frame
+  // whose every time -- its pixels, the frame after it (the pipeline's
+  // latency and leads) -- fits; it falls with the pixel clock.
+  int64_t last_frame_in_range() const;
+  // Empty if frames [first, first + count) fit; else why not, with the limit
+  // stated, for an InputError naming the option that asked for them.
+  std::string frames_out_of_range(int64_t first, int64_t count) const;
 
  private:
   VideoTimingConfig c_;

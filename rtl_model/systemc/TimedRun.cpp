@@ -93,16 +93,20 @@ TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& 
     fr.first_photon_ps = t.cycles_to_ps(t.frame_start_cycle(frame)) + pc.photon_delay_ps;
     fr.last_photon_ps = t.cycles_to_ps(scan.last_slot(frame)) + pc.photon_delay_ps;
     if (in.sink) in.sink(f, fr);
-    r.frames.push_back(fr);
+    ++r.frames;
     r.swaps += host.at_vertical_blank(t.cycles_to_ps(sched.swap_cycle(frame)), *in.memories);
     if (opt.progress)
       opt.progress(static_cast<double>(k + 1) / static_cast<double>(in.frames),
                    "frame " + std::to_string(k + 1) + "/" + std::to_string(in.frames));
+    if (k + 1 < in.frames && opt.stop && opt.stop()) {
+      r.stopped = true;
+      break;
+    }
   }
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.host_jobs = host.timings();
   r.first_cycle = timing.first_cycle();
-  r.end_cycle = timing.end_cycle();
+  r.end_cycle = r.stopped ? std::min(timing.end_cycle(), scan.last_slot(in.first_frame + r.frames - 1) + 1) : timing.end_cycle();
   r.issue_lead = sched.issue_lead();
   r.orientation_lead = sched.orientation_lead();
   return r;
@@ -149,11 +153,15 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   const stage::FrameSink user_sink = in.sink;
   const int64_t frames = in.frames;
   run_in.sink = [&r, &user_sink, &opt, frames](const HmdFrame& f, const stage::FrameReport& fr) {
-    r.frames.push_back(fr);
+    ++r.frames;
     if (user_sink) user_sink(f, fr);
     if (opt.progress)
-      opt.progress(static_cast<double>(r.frames.size()) / static_cast<double>(frames),
-                   "frame " + std::to_string(r.frames.size()) + "/" + std::to_string(frames));
+      opt.progress(static_cast<double>(r.frames) / static_cast<double>(frames),
+                   "frame " + std::to_string(r.frames) + "/" + std::to_string(frames));
+    if (r.frames < frames && opt.stop && opt.stop()) {
+      r.stopped = true;
+      sc_stop();  // the kernel returns from sc_start at the end of this delta cycle
+    }
   };
 
   std::unique_ptr<ArpPipelineTop> rtl;
@@ -204,9 +212,9 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     in.before_frame(in.first_frame, static_cast<double>(vt.cycles_to_ps(vt.frame_start_cycle(in.first_frame))) * 1e-12);
   }
   const auto t0 = Clock::now();
-  auto advance_to = [](int64_t sim_ps) {
+  auto advance_to = [&r](int64_t sim_ps) {
     const sc_time target = sc_time::from_value(static_cast<sc_time::value_type>(sim_ps));
-    if (target > sc_time_stamp()) sc_start(target - sc_time_stamp());
+    if (!r.stopped && target > sc_time_stamp()) sc_start(target - sc_time_stamp());
   };
   if (!opt.vcd.path.empty()) {
     if (from > 0) advance_to(from);
@@ -219,6 +227,11 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   }
   advance_to(span + 1);
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (r.stopped) {  // statistics over the clocks simulated
+    const dp::VideoTiming vt(in.config.timing);
+    r.end_cycle = std::min(w.end_cycle, vt.ps_to_cycle_floor(w.base_ps + static_cast<int64_t>(sc_time_stamp().value())) + 1);
+    w.end_cycle = r.end_cycle;
+  }
 
   if (rtl) {
     fill_cycle_statistics(r, *rtl, rtl->memories().stage(), rtl->memories().host_port(), rtl->timing().stage(),

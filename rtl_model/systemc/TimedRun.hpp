@@ -38,11 +38,15 @@ struct TimedRunOptions {
   std::function<void(double fraction, const std::string& what)> progress;
   int threads = 0;  // functional level only
   bool speculate = true;  // fast cycle-accurate level: FrameSpeculation (off: every stage computes every pixel)
+  // Polled after each scanned-out frame: true ends the run there (Ctrl-C);
+  // the result then covers the frames finished.
+  std::function<bool()> stop;
 };
 
 struct TimedResult {
   Fidelity fidelity = Fidelity::Detailed;
-  std::vector<stage::FrameReport> frames;
+  int64_t frames = 0;     // frames scanned out (the sink saw each)
+  bool stopped = false;   // ended early by TimedRunOptions::stop
   bool stages_measured = false, fifos_modelled = false;
   std::array<stage::StageStats, dp::kStageCount> stages{};
   std::vector<std::pair<std::string, stage::FifoStats>> fifos;

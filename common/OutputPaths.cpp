@@ -1,0 +1,76 @@
+#include "OutputPaths.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <stdlib.h>
+
+#include "AtomicFile.hpp"
+#include "InputError.hpp"
+
+namespace arp {
+
+namespace fs = std::filesystem;
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+}
+
+namespace {
+
+// Creates and removes the temporary file the output will be written through.
+void check_writable(const NamedPath& o) {
+  std::error_code ec;
+  if (fs::is_directory(o.path, ec)) throw InputError(o.option, o.path, "is a folder, not a file");
+  const fs::path tmp = temp_path_beside(o.path);  // InputError if the folder does not exist
+  {
+    std::ofstream probe(tmp, std::ios::binary);
+    if (!probe) throw InputError(o.option, o.path, "cannot write there (no permission or a read-only file system)");
+  }
+  discard_temp_file(tmp);
+}
+
+}  // namespace
+
+void check_output_folder(const std::string& option, const std::string& dir) {
+  std::error_code ec;
+  fs::path p = fs::absolute(dir, ec);
+  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec)) throw InputError(option, dir, p.string() + " is not a folder");
+  // A folder made and removed again where the first missing one would go: permissions, read-only or virtual file systems.
+  std::string probe = (p / ".arpsim-probe-XXXXXX").string();
+  if (!::mkdtemp(probe.data())) throw InputError(option, dir, "cannot create the folder: nothing can be written in " + p.string());
+  fs::remove(probe, ec);
+}
+
+void make_output_folder(const std::string& option, const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec))
+    throw InputError(option, dir, "cannot create the folder" + (ec ? ": " + ec.message() : std::string(": a file of that name exists")));
+  check_writable({option, (fs::path(dir) / ".arpsim-write-probe").string()});
+}
+
+void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const NamedPath& o = outputs[i];
+    if (o.path.empty() || o.path == "-") continue;
+    for (const NamedPath& in : inputs)
+      if (!in.path.empty() && in.path != "-" && same_file(o.path, in.path))
+        throw InputError(o.option, o.path, "is the " + in.option + " input; it would be overwritten");
+    for (size_t j = 0; j < i; ++j)
+      if (!outputs[j].path.empty() && same_file(o.path, outputs[j].path))
+        throw InputError(o.option, o.path, "is also the " + outputs[j].option + " output");
+    if (o.folder_made_later) {
+      std::error_code ec;
+      if (fs::is_directory(o.path, ec)) throw InputError(o.option, o.path, "is a folder, not a file");
+      check_output_folder(o.option, fs::path(o.path).has_parent_path() ? fs::path(o.path).parent_path().string() : ".");
+    } else {
+      check_writable(o);
+    }
+  }
+}
+
+}  // namespace arp

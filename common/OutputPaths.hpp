@@ -1,0 +1,32 @@
+// A command's files checked before any work starts: every output can be
+// written (its folder exists, it is not a folder, a file can be created
+// there), no two outputs are one file, and no output is one of the inputs --
+// so an hour of simulation is never lost to a typo in --report, and
+// `--out x.png` never overwrites the `--cross x.png` it reads.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace arp {
+
+// A file and what named it on the command line ("--report", "--trace").
+struct NamedPath {
+  std::string option, path;
+  bool folder_made_later = false;  // an output whose folder the command creates: checked as check_output_folder does
+};
+
+// InputError naming the option and the file on the first fault; empty paths are skipped.
+void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
+
+// Checks an output folder could be made and written without making it (its
+// nearest existing ancestor is a writable folder): for the checks before a
+// run, which must leave nothing behind if a later input is refused.
+void check_output_folder(const std::string& option, const std::string& dir);
+// Creates an output folder (and its parents) and checks a file can be
+// written in it; InputError naming the option and the folder otherwise.
+void make_output_folder(const std::string& option, const std::string& dir);
+
+// True when a and b name the same file (the same inode if both exist, else the same normalised path).
+bool same_file(const std::string& a, const std::string& b);
+
+}  // namespace arp
