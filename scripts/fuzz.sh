@@ -1,19 +1,68 @@
 #!/usr/bin/env bash
-# Fuzzes the Oculus report decoder with libFuzzer (clang, ASan + UBSan) for
-# SECONDS (default 60), starting from a corpus of valid DK1/DK2 reports.
-# The ordinary tests run the same target over 200 000 fixed inputs
-# (ReportDecoderFuzz.RandomAndMutatedReports); this is the open-ended search.
-# Usage: scripts/fuzz.sh [SECONDS]   (needs clang and libclang-rt-dev)
+# Fuzzes every parser of untrusted input with libFuzzer (clang, ASan + UBSan):
+# the targets of tests/fuzz/FuzzTargets, each for a CPU budget of SECONDS
+# (default 60), starting from its corpus tests/fuzz/corpus/<target> (the
+# project's own files and inputs kept from earlier runs; the model target also
+# from assimp-testmodels). The model target runs assimp in this process,
+# watched by libFuzzer's -timeout and -rss_limit_mb (arpsim itself runs it in
+# the guarded helper). Every run's executions and findings are appended to
+# tests/fuzz/fuzz-log.csv, the ledger docs/robustness.md sums.
+#
+# Usage: scripts/fuzz.sh [--merge] [SECONDS] [TARGET...]
+#   --merge   keep the new inputs that add coverage in tests/fuzz/corpus (minimised)
+# A finding is written to build-fuzz/findings/<target>/ and makes the exit status 1;
+# replay one with  ARPSIM_FUZZ_TARGET=<target> build-fuzz/tests/arp_fuzz FILE
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SECONDS_TO_RUN=${1:-60}
-command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang++ (apt-get install clang libclang-rt-dev)" >&2; exit 2; }
+merge=0
+if [ "${1:-}" = "--merge" ]; then merge=1; shift; fi
+budget=${1:-60}
+[[ "$budget" =~ ^[0-9]+$ && "$budget" -gt 0 ]] || { echo "fuzz.sh: SECONDS must be a whole number above 0, not '$budget'" >&2; exit 2; }
+shift || true
+scripts/setup.sh clang libclang-rt-14-dev
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DARPSIM_FUZZ=ON -DARPSIM_WERROR=OFF -DARPSIM_BUILD_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target arp_fuzz_report_decoder
-corpus=build-fuzz/fuzz-corpus
-mkdir -p "$corpus"
-# Seeds: one valid report of each model (first byte 0: DK1, 1: DK2).
-printf '\x00\x01\x01\xe8\x03\x05\x00\xc4\x09' > "$corpus/dk1-seed"; head -c 56 /dev/zero >> "$corpus/dk1-seed"
-printf '\x01\x0b\x05\x00\x01\x10\x00\xc4\x09\x40\x42\x0f\x00' > "$corpus/dk2-seed"; head -c 52 /dev/zero >> "$corpus/dk2-seed"
-build-fuzz/tests/arp_fuzz_report_decoder -max_total_time="$SECONDS_TO_RUN" -max_len=128 "$corpus"
+cmake --build build-fuzz -j"$(nproc)" --target arp_fuzz arpsim-import
+fuzzer=build-fuzz/tests/arp_fuzz
+export ARPSIM_IMPORT_HELPER="$PWD/build-fuzz/apps/arpsim/arpsim-import"  # scene files naming a model
+
+targets=("$@")
+if ((${#targets[@]} == 0)); then mapfile -t targets < <(ARPSIM_FUZZ_TARGET=list "$fuzzer" | cut -d' ' -f1); fi
+ledger=tests/fuzz/fuzz-log.csv
+[ -f "$ledger" ] || echo "date,commit,machine,target,seconds,executions,findings" > "$ledger"
+machine="$(nproc)x $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//; s/,//g')"
+commit="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+status=0
+printf '%-8s %8s %14s %9s\n' target seconds executions findings
+for t in "${targets[@]}"; do
+  max_len=$(ARPSIM_FUZZ_TARGET=list "$fuzzer" | awk -v t="$t" '$1 == t {print $2}')
+  [ -n "$max_len" ] || { echo "fuzz.sh: no target '$t' (ARPSIM_FUZZ_TARGET=list $fuzzer)" >&2; exit 2; }
+  work=build-fuzz/corpus/$t findings=build-fuzz/findings/$t
+  mkdir -p "$work" "$findings"
+  cp -n tests/fuzz/corpus/"$t"/* "$work"/ 2>/dev/null || true
+  extra=()
+  if [ "$t" = model ]; then  # assimp's test models of the documented formats, small enough for -max_len (read, not kept)
+    extra=(build-fuzz/seeds/model); mkdir -p "${extra[0]}"
+    i=0
+    for ext in obj ply off stl gltf glb; do
+      while IFS= read -r f; do
+        { printf "\\x$(printf %02x $i)"; cat "$f"; } > "${extra[0]}/$ext-$(basename "$f")"
+      done < <(find /usr/share/assimp/models -iname "*.$ext" -size -"$((max_len / 1024 - 1))"k 2>/dev/null | head -40)
+      i=$((i + 1))
+    done
+  fi
+  log=build-fuzz/$t.log
+  before=$(ls "$findings" | wc -l)
+  ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$findings/" "$work" "${extra[@]}" > "$log" 2>&1 || true
+  runs=$(awk -F: '/stat::number_of_executed_units/ {gsub(/ /, "", $2); print $2}' "$log" | tail -1)
+  found=$(($(ls "$findings" | wc -l) - before))
+  printf '%-8s %8s %14s %9s\n' "$t" "$budget" "${runs:-?}" "$found"
+  echo "$(date -u +%F),$commit,$machine,$t,$budget,${runs:-0},$found" >> "$ledger"
+  if ((found > 0)); then status=1; echo "  finding(s) in $findings (log: $log)"; fi
+  if ((merge)); then  # adds to the first folder only what brings new coverage
+    ARPSIM_FUZZ_TARGET=$t "$fuzzer" -merge=1 -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+      tests/fuzz/corpus/"$t" "$work" >> "$log" 2>&1 || true
+  fi
+done
+exit $status

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages arpsim needs. Idempotent: packages already
 # present are skipped, so a second run does no network access at all.
+# Extra packages a script needs beyond the build's (scripts/fuzz.sh: clang)
+# are given as arguments.
 set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config
@@ -11,6 +13,7 @@ PKGS=(
   libsdl2-dev xvfb xauth
   libsystemc-dev
   libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
+  "$@"
 )
 missing=()
 for p in "${PKGS[@]}"; do

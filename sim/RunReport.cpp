@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "ConfigFile.hpp"
+#include "common/ResourceUsage.hpp"
 
 namespace arp::sim {
 
@@ -116,6 +117,7 @@ nlohmann::json pipeline_report(const scm::TimedResult& res, const dp::ArpConfig&
            {{"pixel_clocks", res.end_cycle - res.first_cycle},
             {"wall_seconds", res.wall_seconds},
             {"pixel_clocks_per_second", res.cycles_per_second()},
+            {"peak_resident_mb", static_cast<double>(peak_resident_bytes()) / (1 << 20)},
             {"speculated_pixels", res.speculated_pixels},
             {"fallback_pixels", res.fallback_pixels},
             {"vcd_time_zero_ps", t.cycles_to_ps(res.first_cycle)},
@@ -135,8 +137,9 @@ std::vector<std::string> RunSummary::lines() const {
   if (cycle_accurate)
     out.push_back(line("  underflows %" PRId64 ", late pixels dropped %" PRId64 ", buffer swaps %" PRId64, underflows, late_discarded,
                        swaps));
-  out.push_back(line("  %" PRId64 " pixel clocks in %.2f s: %.2f M pixel clocks/s", pixel_clocks, wall_seconds,
-                     wall_seconds > 0 ? static_cast<double>(pixel_clocks) / wall_seconds * 1e-6 : 0.0));
+  out.push_back(line("  %" PRId64 " pixel clocks in %.2f s: %.2f M pixel clocks/s, peak memory %.0f MB", pixel_clocks,
+                     wall_seconds, wall_seconds > 0 ? static_cast<double>(pixel_clocks) / wall_seconds * 1e-6 : 0.0,
+                     static_cast<double>(peak_resident_bytes()) / (1 << 20)));
   if (images) out.push_back(line("  %" PRId64 " images in %s", images, out_dir.c_str()));
   if (!vcd.empty()) out.push_back(line("  waveform %s (open: gtkwave %s %s)", vcd.c_str(), vcd.c_str(), gtkw.c_str()));
   out.insert(out.end(), notes.begin(), notes.end());

@@ -109,17 +109,12 @@ Session::Session(RunSpec spec)
 Session::~Session() = default;
 
 // The head motion: a trace, synthetic motion, a walk (facing where it goes,
-// turning on top of it), or live input that grows frame by frame.
+// turning on top of it), or live input that grows frame by frame. Generated
+// motion (synthetic, or the still head of a walk) is not held for the whole
+// run: the stream is extended a window ahead before each frame and trimmed
+// behind it (extend_motion), so memory does not grow with the run's length.
+// A trace is read over the run's window only and held.
 void Session::build_motion() {
-  if (!spec_.trace.empty()) {
-    // Only what the run can latch: a second of margin before the first frame covers every lead.
-    poses_ = tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, end_ps_ + kPsPerSecond / 100});
-    motion_source_ = spec_.trace;
-  } else if (spec_.motion.given()) {
-    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
-    poses_ = spec_.motion.make(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01);
-    motion_source_ = "synthetic " + spec_.motion.motion;
-  }
   const HostSpec& h = spec_.host;
   if (!h.walk.empty()) {
     if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
@@ -129,28 +124,81 @@ void Session::build_motion() {
       walk_ = std::make_unique<host::WalkPath>(host::load_walk_file(h.walk));
       if (h.walk_speed > 0) *walk_ = host::WalkPath(walk_->points(), h.walk_speed, h.walk);
     }
-    if (poses_.empty()) {  // still head on the walk: sample it at 1 kHz
-      const double t0 = seconds_of(start_ps_) - 1.0, t1 = seconds_of(end_ps_) + 0.01;
-      for (double tt = t0; tt <= t1; tt += 1e-3) {
+  }
+  if (!spec_.trace.empty()) {
+    // Only what the run can latch: a second of margin before the first frame covers every lead.
+    std::vector<tracker::PoseSample> poses =
+        tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, end_ps_ + kPsPerSecond / 100});
+    motion_source_ = spec_.trace;
+    more_poses_ = [poses = std::move(poses)](int64_t, std::vector<tracker::PoseSample>& out) mutable {
+      out = std::move(poses);
+      poses.clear();
+      return true;
+    };
+  } else if (spec_.motion.given()) {
+    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
+    auto g = std::make_shared<tracker::MotionGenerator>(
+        spec_.motion.generator(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01));
+    motion_source_ = "synthetic " + spec_.motion.motion;
+    more_poses_ = [g](int64_t through_ps, std::vector<tracker::PoseSample>& out) {
+      g->take_through(through_ps, out);
+      return g->done();
+    };
+  } else if (walk_) {  // still head on the walk: sample it at 1 kHz
+    const double t1 = seconds_of(end_ps_) + 0.01;
+    more_poses_ = [tt = seconds_of(start_ps_) - 1.0, t1](int64_t through_ps, std::vector<tracker::PoseSample>& out) mutable {
+      for (; tt <= t1; tt += 1e-3) {
         tracker::PoseSample p;
         p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
-        poses_.push_back(p);
+        out.push_back(p);
+        if (p.time_ps > through_ps) {
+          tt += 1e-3;
+          return false;
+        }
       }
-    }
-    for (auto& p : poses_) {
-      const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
-      const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
-      p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
-    }
-    motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
+      return true;
+    };
   }
+  if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
   if (!spec_.live.empty()) {
     std::string err;
     live_ = tracker::usb_source(err);
     if (!live_) throw InputError("--live usb", "", err);
     motion_source_ = "live " + live_->describe();
   }
-  if (!poses_.empty()) stream_ = dp::OrientationStream(to_orientation_samples(poses_), motion_source_);
+  // Live input appends to the stream as it arrives: generated motion is then made whole first.
+  const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
+  extend_motion(live_ ? INT64_MAX : start_ps_ + 3 * frame_ps + kPsPerSecond);
+}
+
+// After frame k is scanned out (every level reports its frames in order),
+// the window of generated motion moves: through two more frames and a second
+// ahead (the next frame's pixels are already in flight at the timed levels),
+// and trimmed to a second and two frames behind frame k (every latch lead).
+void Session::advance_motion(int64_t frame) {
+  if (live_ || !more_poses_) return;
+  const int64_t f0 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame));
+  const int64_t f1 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1));
+  extend_motion(f1 + 2 * (f1 - f0) + kPsPerSecond);
+  if (motion_started_) stream_.discard_before(f0 - 2 * (f1 - f0) - kPsPerSecond);
+}
+
+// Appends the generated motion through `through_ps` (and one sample past it) to the stream.
+void Session::extend_motion(int64_t through_ps) {
+  if (!more_poses_ || motion_done_) return;
+  std::vector<tracker::PoseSample> more;
+  motion_done_ = more_poses_(through_ps, more);
+  if (more.empty()) return;
+  for (auto& p : more)
+    if (walk_) {
+      const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
+      const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
+      p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
+    }
+  last_pose_ps_ = more.back().time_ps;
+  if (!motion_started_) stream_ = dp::OrientationStream(to_orientation_samples(more), motion_source_);
+  else stream_.append(to_orientation_samples(more), motion_source_);
+  motion_started_ = true;
 }
 
 // The display memories: a host simulating priority rendering over the walk, or a cube map / scene once.
@@ -364,6 +412,7 @@ RunSummary Session::run() {
     best = std::min(best, r.latency_min_ps);
     medians.push_back(r.latency_median_ps);
     on_scanned_out(f, r);
+    advance_motion(r.frame);
   };
 
   scm::TimedResult res;
@@ -401,10 +450,10 @@ RunSummary Session::run() {
   s.wall_seconds = res.wall_seconds;
   s.images = images_;
   s.out_dir = o.out_dir;
-  if (!poses_.empty() && poses_.back().time_ps < end_ps_) {
+  if (motion_started_ && motion_done_ && last_pose_ps_ < end_ps_) {
     char b[160];
     std::snprintf(b, sizeof b, "  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)",
-                  seconds_of(poses_.back().time_ps));
+                  seconds_of(last_pose_ps_));
     s.notes.push_back(b);
   }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());

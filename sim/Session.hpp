@@ -49,6 +49,8 @@ class Session {
 
  private:
   void build_motion();
+  void extend_motion(int64_t through_ps);
+  void advance_motion(int64_t frame);
   void build_memories();
   void build_live_input(stage::TimedInputs& in);
   void build_outputs(scm::TimedRunOptions& opt);
@@ -59,7 +61,11 @@ class Session {
   scm::Fidelity fidelity_ = scm::Fidelity::Functional;
   dp::VideoTiming timing_;
   int64_t start_ps_ = 0, end_ps_ = 0;
-  std::vector<tracker::PoseSample> poses_;
+  // The motion not yet in the stream: appends the poses through a time (and
+  // one past it) and says whether it has given all it has.
+  std::function<bool(int64_t, std::vector<tracker::PoseSample>&)> more_poses_;
+  bool motion_started_ = false, motion_done_ = false;
+  int64_t last_pose_ps_ = 0;
   std::string motion_source_ = "still head", memory_source_;
   std::unique_ptr<host::WalkPath> walk_;
   std::unique_ptr<tracker::PoseSource> live_;

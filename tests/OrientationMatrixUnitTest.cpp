@@ -149,3 +149,24 @@ TEST(LatchPolicy, LatchPointsAreThePixelsThatStartTheirGroup) {
   // frame: 1+1+1, field: 1+2+1, scanline: 9 each, pixel: every pixel (216, 216, 432)
   EXPECT_EQ(points, 3 + 4 + 27 + 864);
 }
+
+// A long run keeps only a window of the tracker stream: indices stay those of
+// the whole stream, the register's value at the window's start survives, and
+// a read before the window is an error rather than a silently wrong sample.
+TEST(OrientationStream, DiscardKeepsIndicesAndTheHeldSample) {
+  std::vector<OrientationSample> s;
+  for (int i = 0; i < 10; ++i) s.push_back({int64_t{1000} * i, Quat{1, 0, 0, 0}});
+  OrientationStream st(s, "test");
+  st.discard_before(4500);  // samples 0..3 go; 4 (at 4000 ps, held at 4500) stays
+  EXPECT_EQ(st.size(), 10u);
+  EXPECT_EQ(st.index_at(4500), 4u);
+  EXPECT_EQ(st.index_at(4000), 4u);
+  EXPECT_EQ(st.index_at(9999), 9u);
+  EXPECT_EQ(st[7].time_ps, 7000);
+  EXPECT_THROW(st.index_at(3999), std::logic_error);
+  st.append({{10000, Quat{0, 0, 1, 0}}}, "test");
+  EXPECT_EQ(st.size(), 11u);
+  EXPECT_EQ(st.index_at(20000), 10u);
+  st.discard_before(4000);  // nothing before the held sample: no change
+  EXPECT_EQ(st.index_at(4000), 4u);
+}

@@ -488,3 +488,34 @@ TEST(PoseSource, RecordedSourcesAndNoDevice) {
   EXPECT_EQ(usb_source(err), nullptr);  // no tracker here (the USB tests emulate one)
   EXPECT_FALSE(err.empty());
 }
+
+// Synthetic motion taken in pieces (as a long run takes it, frame by frame)
+// is exactly the motion taken at once -- noise included: one seeded
+// generator in sample order -- and each piece ends on the first sample after
+// the time asked for.
+TEST(SyntheticMotion, PiecesAreTheWholeBitForBit) {
+  arp::tracker::MotionSpec m;
+  m.motion = "shake";
+  m.noise = 0.5;
+  m.seed = 7;
+  const auto whole = m.make(-1.0, 2.5);
+  ASSERT_EQ(whole.size(), 2501u);
+  auto g = m.generator(-1.0, 2.5);
+  std::vector<arp::tracker::PoseSample> pieces;
+  for (int64_t t = -900'000'000'000; !g.done(); t += 16'666'666'667) {
+    const size_t before = pieces.size();
+    g.take_through(t, pieces);
+    if (!g.done()) {
+      ASSERT_GT(pieces.back().time_ps, t);
+      if (pieces.size() - before > 1) {
+        EXPECT_LE(pieces[pieces.size() - 2].time_ps, t);
+      }
+    }
+  }
+  ASSERT_EQ(pieces.size(), whole.size());
+  for (size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(pieces[i].time_ps, whole[i].time_ps) << i;
+    EXPECT_EQ(pieces[i].orientation, whole[i].orientation) << i;
+    EXPECT_EQ(pieces[i].angular_velocity, whole[i].angular_velocity) << i;
+  }
+}

@@ -12,65 +12,86 @@
 
 namespace arp::tracker {
 
-namespace {
-
-// angle(t) and its derivative, in radians, about a unit axis.
-using AngleFn = std::function<void(double t, double& angle, double& rate)>;
-
-std::vector<PoseSample> generate(const glm::dvec3& axis_in, const AngleFn& fn, const SamplingSpec& s) {
+MotionGenerator::MotionGenerator(const glm::dvec3& axis, AngleFn angle, const SamplingSpec& s)
+    : angle_(std::move(angle)), s_(s), rng_(s.seed) {
   if (!(s.rate_hz > 0.0) || !std::isfinite(s.rate_hz)) throw std::invalid_argument("sample rate must be positive");
   if (!(s.duration_s >= 0.0) || !std::isfinite(s.duration_s)) throw std::invalid_argument("duration must be >= 0");
-  if (!(glm::length(axis_in) > 0.0)) throw std::invalid_argument("rotation axis must be non-zero");
-  const glm::dvec3 axis = glm::normalize(axis_in);
-  std::mt19937_64 rng(s.seed);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  const auto count = static_cast<int64_t>(std::floor(s.duration_s * s.rate_hz + 1e-9)) + 1;
-  std::vector<PoseSample> out;
-  out.reserve(static_cast<size_t>(count));
-  for (int64_t i = 0; i < count; ++i) {
-    const double t = static_cast<double>(i) / s.rate_hz;
-    double angle = 0.0, rate = 0.0;
-    fn(t, angle, rate);
-    glm::dquat q = s.start * glm::angleAxis(angle, axis);  // rotation about the head-frame axis
-    if (s.noise_deg > 0.0) {
-      glm::dvec3 a(noise(rng), noise(rng), noise(rng));
-      if (glm::length(a) > 0.0) q = q * glm::angleAxis(glm::radians(s.noise_deg) * noise(rng), glm::normalize(a));
-    }
-    PoseSample p;
-    p.time_ps = std::llround((s.start_s + t) * 1e12);
-    p.orientation = glm::normalize(q);
-    p.has_angular_velocity = true;
-    p.angular_velocity = axis * rate;
-    out.push_back(p);
+  if (!(glm::length(axis) > 0.0)) throw std::invalid_argument("rotation axis must be non-zero");
+  axis_ = glm::normalize(axis);
+  count_ = static_cast<int64_t>(std::floor(s.duration_s * s.rate_hz + 1e-9)) + 1;
+}
+
+PoseSample MotionGenerator::next() {
+  const double t = static_cast<double>(next_++) / s_.rate_hz;
+  double angle = 0.0, rate = 0.0;
+  angle_(t, angle, rate);
+  glm::dquat q = s_.start * glm::angleAxis(angle, axis_);  // rotation about the head-frame axis
+  if (s_.noise_deg > 0.0) {
+    glm::dvec3 a(noise_(rng_), noise_(rng_), noise_(rng_));
+    if (glm::length(a) > 0.0) q = q * glm::angleAxis(glm::radians(s_.noise_deg) * noise_(rng_), glm::normalize(a));
   }
+  PoseSample p;
+  p.time_ps = std::llround((s_.start_s + t) * 1e12);
+  p.orientation = glm::normalize(q);
+  p.has_angular_velocity = true;
+  p.angular_velocity = axis_ * rate;
+  return p;
+}
+
+void MotionGenerator::take_through(int64_t time_ps, std::vector<PoseSample>& out) {
+  while (!done()) {
+    out.push_back(next());
+    if (out.back().time_ps > time_ps) return;
+  }
+}
+
+namespace {
+
+std::vector<PoseSample> generate(const glm::dvec3& axis, MotionGenerator::AngleFn fn, const SamplingSpec& s) {
+  MotionGenerator g(axis, std::move(fn), s);
+  std::vector<PoseSample> out;
+  out.reserve(static_cast<size_t>(g.count()));
+  while (!g.done()) out.push_back(g.next());
   return out;
+}
+
+MotionGenerator::AngleFn rotation_angle(double deg_per_s) {
+  const double w = glm::radians(deg_per_s);
+  return [w](double t, double& a, double& r) { a = w * t; r = w; };
+}
+
+MotionGenerator::AngleFn shake_angle(double peak_deg_per_s, double frequency_hz) {
+  if (!(frequency_hz > 0.0)) throw std::invalid_argument("head shake frequency must be positive");
+  const double omega = 2.0 * kPi * frequency_hz;
+  const double amp = glm::radians(peak_deg_per_s) / omega;
+  return [amp, omega](double t, double& a, double& r) {
+    a = amp * std::sin(omega * t);
+    r = amp * omega * std::cos(omega * t);
+  };
+}
+
+MotionGenerator::AngleFn pendulum_angle(double amplitude_deg, double period_s) {
+  if (!(period_s > 0.0)) throw std::invalid_argument("pendulum period must be positive");
+  const double omega = 2.0 * kPi / period_s, amp = glm::radians(amplitude_deg);
+  return [amp, omega](double t, double& a, double& r) {
+    a = amp * std::cos(omega * t);
+    r = -amp * omega * std::sin(omega * t);
+  };
 }
 
 }  // namespace
 
 std::vector<PoseSample> constant_rotation(const glm::dvec3& axis, double deg_per_s, const SamplingSpec& s) {
-  const double w = glm::radians(deg_per_s);
-  return generate(axis, [w](double t, double& a, double& r) { a = w * t; r = w; }, s);
+  return generate(axis, rotation_angle(deg_per_s), s);
 }
 
 std::vector<PoseSample> head_shake(const glm::dvec3& axis, double peak_deg_per_s, double frequency_hz,
                                    const SamplingSpec& s) {
-  if (!(frequency_hz > 0.0)) throw std::invalid_argument("head shake frequency must be positive");
-  const double omega = 2.0 * kPi * frequency_hz;
-  const double amp = glm::radians(peak_deg_per_s) / omega;
-  return generate(axis, [amp, omega](double t, double& a, double& r) {
-    a = amp * std::sin(omega * t);
-    r = amp * omega * std::cos(omega * t);
-  }, s);
+  return generate(axis, shake_angle(peak_deg_per_s, frequency_hz), s);
 }
 
 std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, double period_s, const SamplingSpec& s) {
-  if (!(period_s > 0.0)) throw std::invalid_argument("pendulum period must be positive");
-  const double omega = 2.0 * kPi / period_s, amp = glm::radians(amplitude_deg);
-  return generate(axis, [amp, omega](double t, double& a, double& r) {
-    a = amp * std::cos(omega * t);
-    r = -amp * omega * std::sin(omega * t);
-  }, s);
+  return generate(axis, pendulum_angle(amplitude_deg, period_s), s);
 }
 
 namespace {
@@ -87,6 +108,14 @@ glm::dvec3 parse_axis(const std::string& s) {
 }  // namespace
 
 std::vector<PoseSample> MotionSpec::make(double start_s, double seconds) const {
+  MotionGenerator g = generator(start_s, seconds);
+  std::vector<PoseSample> out;
+  out.reserve(static_cast<size_t>(g.count()));
+  while (!g.done()) out.push_back(g.next());
+  return out;
+}
+
+MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   if (!(seconds > 0.0) || !std::isfinite(seconds)) throw InputError("--seconds", "", "must be a positive number");
   if (!(hz > 0.0) || !std::isfinite(hz)) throw InputError("--hz", "", "must be a positive number");
   if (seconds * hz > 1e8) throw InputError("--seconds", "", "more than 1e8 samples; lower --seconds or --hz");
@@ -101,16 +130,16 @@ std::vector<PoseSample> MotionSpec::make(double start_s, double seconds) const {
   const glm::dvec3 ax = parse_axis(axis);
   if (motion == "rotate") {
     if (!std::isfinite(rate)) throw InputError("--rate", "", "must be finite");
-    return constant_rotation(ax, rate, s);
+    return MotionGenerator(ax, rotation_angle(rate), s);
   }
   if (motion == "shake") {
     if (!(frequency > 0.0) || !std::isfinite(frequency)) throw InputError("--frequency", "", "must be positive");
     if (!std::isfinite(peak)) throw InputError("--peak", "", "must be finite");
-    return head_shake(ax, peak, frequency, s);
+    return MotionGenerator(ax, shake_angle(peak, frequency), s);
   }
   if (!(period > 0.0) || !std::isfinite(period)) throw InputError("--period", "", "must be positive");
   if (!std::isfinite(amplitude)) throw InputError("--amplitude", "", "must be finite");
-  return pendulum(ax, amplitude, period, s);
+  return MotionGenerator(ax, pendulum_angle(amplitude, period), s);
 }
 
 }  // namespace arp::tracker

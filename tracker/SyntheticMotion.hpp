@@ -3,6 +3,8 @@
 // sample carries its exact angular velocity. Deterministic for a seed.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,33 @@ struct SamplingSpec {
   glm::dquat start{1.0, 0.0, 0.0, 0.0};  // orientation at angle zero
   double noise_deg = 0.0;    // standard deviation of a random extra rotation per sample
   uint64_t seed = 1;
+};
+
+// The samples one at a time, in order, without holding them: a run of any
+// length takes them as its frames need them (flat memory). Sample i is at
+// start_s + i / rate_hz; the noise comes from one seeded generator in sample
+// order, so taking them in pieces gives exactly what taking them at once does.
+class MotionGenerator {
+ public:
+  // angle(t) and its derivative, in radians, about the unit axis.
+  using AngleFn = std::function<void(double t, double& angle, double& rate)>;
+  // std::invalid_argument on a non-positive rate, a negative duration or a zero axis.
+  MotionGenerator(const glm::dvec3& axis, AngleFn angle, const SamplingSpec& s);
+
+  bool done() const { return next_ >= count_; }
+  int64_t count() const { return count_; }
+  PoseSample next();
+  // Appends every sample up to and including the first one after `time_ps`
+  // (so the sample following any time up to `time_ps` is always taken), or to the end.
+  void take_through(int64_t time_ps, std::vector<PoseSample>& out);
+
+ private:
+  glm::dvec3 axis_;
+  AngleFn angle_;
+  SamplingSpec s_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> noise_{0.0, 1.0};
+  int64_t count_ = 0, next_ = 0;
 };
 
 // Rotation about a fixed head-frame axis at a constant rate (deg/s; any sign, 0 allowed).
@@ -46,6 +75,8 @@ struct MotionSpec {
   bool given() const { return !motion.empty(); }
   // Samples over [start_s, start_s + seconds]; InputError naming the option (--rate, --hz, ...) on bad values.
   std::vector<PoseSample> make(double start_s, double seconds) const;
+  // The same samples, one at a time.
+  MotionGenerator generator(double start_s, double seconds) const;
 };
 
 }  // namespace arp::tracker

@@ -1,5 +1,7 @@
 #include "OrientationMatrixUnit.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 
@@ -60,7 +62,7 @@ OrientationStream::OrientationStream(std::vector<OrientationSample> samples, con
 
 void OrientationStream::append(const std::vector<OrientationSample>& more, const std::string& source) {
   for (const OrientationSample& m : more) {
-    const std::string place = "sample " + std::to_string(samples_.size());
+    const std::string place = "sample " + std::to_string(size());
     OrientationSample s = m;
     try {
       s.q = normalised(s.q, source);
@@ -80,7 +82,20 @@ OrientationStream OrientationStream::constant(const Quat& q) {
 size_t OrientationStream::index_at(int64_t t_ps) const {
   auto it = std::upper_bound(samples_.begin(), samples_.end(), t_ps,
                              [](int64_t t, const OrientationSample& s) { return t < s.time_ps; });
-  return it == samples_.begin() ? 0 : static_cast<size_t>(it - samples_.begin()) - 1;
+  if (it == samples_.begin()) {
+    if (base_ > 0) throw std::logic_error("orientation stream read at " + std::to_string(t_ps) + " ps, before its window");
+    return 0;
+  }
+  return base_ + static_cast<size_t>(it - samples_.begin()) - 1;
+}
+
+void OrientationStream::discard_before(int64_t t_ps) {
+  auto it = std::upper_bound(samples_.begin(), samples_.end(), t_ps,
+                             [](int64_t t, const OrientationSample& s) { return t < s.time_ps; });
+  if (it == samples_.begin()) return;
+  --it;  // the last sample at or before t_ps stays
+  base_ += static_cast<size_t>(it - samples_.begin());
+  samples_.erase(samples_.begin(), it);
 }
 
 size_t register_sample(const OrientationStream& s, const VideoTiming& t, int64_t cycle) {

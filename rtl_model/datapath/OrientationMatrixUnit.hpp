@@ -71,12 +71,18 @@ class OrientationStream {
   // Live input: more samples, validated like the first (none earlier than the last one held).
   void append(const std::vector<OrientationSample>& more, const std::string& source);
 
-  size_t size() const { return samples_.size(); }
-  const OrientationSample& operator[](size_t i) const { return samples_[i]; }
+  // Indices count from the stream's first sample ever, also after discard_before.
+  size_t size() const { return base_ + samples_.size(); }
+  const OrientationSample& operator[](size_t i) const { return samples_[i - base_]; }
   size_t index_at(int64_t t_ps) const;
+  // A long run's window: drops the samples no reader needs any more -- those
+  // before `t_ps` but the last one at or before it (the register's value at
+  // `t_ps`). Reading a time before the window is then a std::logic_error.
+  void discard_before(int64_t t_ps);
 
  private:
   std::vector<OrientationSample> samples_;
+  size_t base_ = 0;  // index of samples_[0]
 };
 
 // The orientation register as a reader sees it at pixel clock `cycle`: the

@@ -47,7 +47,3 @@ int report_decoder_one_input(const uint8_t* data, size_t size) {
 }
 
 }  // namespace arp::fuzz
-
-#ifdef ARPSIM_LIBFUZZER
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return arp::fuzz::report_decoder_one_input(data, size); }
-#endif

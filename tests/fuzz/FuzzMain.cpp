@@ -1,0 +1,32 @@
+// The libFuzzer binary over every fuzz target (tests/fuzz/FuzzTargets): the
+// target is chosen by ARPSIM_FUZZ_TARGET (scripts/fuzz.sh sets it; "list"
+// prints the targets with their -max_len). Built with clang only (ARPSIM_FUZZ).
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "FuzzTargets.hpp"
+
+namespace {
+const arp::fuzz::FuzzTarget* target = nullptr;
+}
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  const char* name = std::getenv("ARPSIM_FUZZ_TARGET");
+  if (name && std::string(name) == "list") {
+    for (const auto& t : arp::fuzz::fuzz_targets()) std::printf("%s %zu %s\n", t.name, t.max_len, t.what);
+    std::exit(0);
+  }
+  target = name ? arp::fuzz::find_fuzz_target(name) : nullptr;
+  if (!target) {
+    std::fprintf(stderr, "arp_fuzz: set ARPSIM_FUZZ_TARGET to one of:");
+    for (const auto& t : arp::fuzz::fuzz_targets()) std::fprintf(stderr, " %s", t.name);
+    std::fprintf(stderr, " (or list)\n");
+    std::exit(2);
+  }
+  // assimp in this process: libFuzzer's -timeout and -rss_limit_mb watch it.
+  arp::fuzz::set_model_import_in_process(true);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return target->one_input(data, size); }
