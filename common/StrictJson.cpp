@@ -30,7 +30,7 @@ std::string position(const std::string& text, size_t byte) {
 std::string brief(const json& v) {
   if (v.is_object()) return "an object of " + std::to_string(v.size()) + " keys";
   if (v.is_array()) return "an array of " + std::to_string(v.size()) + " elements";
-  return quoted(v.dump());
+  return quoted(dump_json(v));
 }
 
 json parse_strict_json(const std::string& text, const std::string& source) {
@@ -100,6 +100,10 @@ json parse_strict_json(const std::string& text, const std::string& source) {
   } catch (const std::out_of_range&) {
     throw InputError(source, problem_place, problem);
   }
+}
+
+std::string dump_json(const nlohmann::json& v, int indent) {
+  return v.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace arp

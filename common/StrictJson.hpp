@@ -20,4 +20,9 @@ nlohmann::json parse_strict_json(const std::string& text, const std::string& sou
 // A value as an error message quotes it: at most kQuoteChars characters.
 std::string brief(const nlohmann::json& v);
 
+// JSON as text for every file and message arpsim writes: a string holding
+// bytes that are not UTF-8 (a file name, a --set value) is written with
+// U+FFFD in their place instead of throwing. indent < 0: one line.
+std::string dump_json(const nlohmann::json& v, int indent = -1);
+
 }  // namespace arp

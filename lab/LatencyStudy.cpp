@@ -19,6 +19,7 @@
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
 #include "tracker/TraceFile.hpp"
+#include "common/StrictJson.hpp"
 
 namespace arp::lab {
 
@@ -452,7 +453,7 @@ std::string LatencyStudy::run() {
   md += olano_reproduction(c, summary["olano"]);
   step("tables");
   write_text_atomic((out / "table.md").string(), md);
-  write_text_atomic((out / "summary.json").string(), summary.dump(2) + "\n");
+  write_text_atomic((out / "summary.json").string(), dump_json(summary, 2) + "\n");
   return md;
 }
 

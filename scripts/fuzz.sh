@@ -55,7 +55,7 @@ for t in "${targets[@]}"; do
   before=$(ls "$findings" | wc -l)
   ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$findings/" "$work" "${extra[@]}" > "$log" 2>&1 || true
-  runs=$(awk -F: '/stat::number_of_executed_units/ {gsub(/ /, "", $2); print $2}' "$log" | tail -1)
+  runs=$(awk '/stat::number_of_executed_units/ {print $2}' "$log" | tail -1)
   found=$(($(ls "$findings" | wc -l) - before))
   printf '%-8s %8s %14s %9s\n' "$t" "$budget" "${runs:-?}" "$found"
   echo "$(date -u +%F),$commit,$machine,$t,$budget,${runs:-0},$found" >> "$ledger"

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
+#include "common/StrictJson.hpp"
 
 namespace arp::sim {
 
@@ -32,7 +33,7 @@ FrameLog::~FrameLog() {
 void FrameLog::add(const nlohmann::json& row, const std::string& csv_row) {
   ++rows_;
   if (csv_.is_open()) csv_ << csv_row;
-  if (rows_file_.is_open()) rows_file_ << row.dump() << '\n';
+  if (rows_file_.is_open()) rows_file_ << dump_json(row) << '\n';
 }
 
 void FrameLog::finish(const nlohmann::json& report) {
@@ -49,7 +50,7 @@ void FrameLog::finish(const nlohmann::json& report) {
   const auto tmp = temp_path_beside(report_path_);
   std::ofstream out(tmp, std::ios::binary);
   // The report's other keys, then "frames": one row per line, read back from the temporary file.
-  const std::string head = report.dump(2);  // "{\n  ...\n}" (or "{}")
+  const std::string head = dump_json(report, 2);  // "{\n  ...\n}" (or "{}")
   out << (report.empty() ? std::string("{") : head.substr(0, head.size() - 2) + ",") << "\n  \"frames\": [";
   std::ifstream in(rows_tmp_, std::ios::binary);
   std::string line;

@@ -10,15 +10,9 @@
 using namespace arp;
 using nlohmann::json;
 
+using arp::test::error_of;
+
 namespace {
-InputError error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e;
-  }
-  return InputError("", "", "no error");
-}
 dp::ArpConfig parse(const std::string& text) { return config::from_json(json::parse(text), "test.json"); }
 }  // namespace
 

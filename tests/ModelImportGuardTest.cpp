@@ -17,18 +17,10 @@
 #include "host/scene/ModelImport.hpp"
 
 using namespace arp;
+using arp::test::error_of;
 using arp::test::TempDir;
 
 namespace {
-
-InputError error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e;
-  }
-  return InputError("", "", "no error");
-}
 
 // The stand-in importer for one test, in one mode.
 class FakeImporter {

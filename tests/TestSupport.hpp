@@ -5,9 +5,22 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
+#include "common/InputError.hpp"
+
 namespace arp::test {
+
+// The InputError `fn` throws; one whose reason is "no error" when it throws none.
+inline InputError error_of(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const InputError& e) {
+    return e;
+  }
+  return InputError("", "", "no error");
+}
 
 // A fresh folder under the system temp folder, removed when the object dies.
 class TempDir {

@@ -31,7 +31,7 @@ Runner add_config_command(CLI::App& app) {
       std::printf("arpsim config: %s %s\n", a->doc.c_str(), updated == text ? "is current" : "updated");
       return 0;
     }
-    std::printf("%s", a->list ? config::listing(c).c_str() : (config::to_json(c).dump(2) + "\n").c_str());
+    std::printf("%s", a->list ? config::listing(c).c_str() : (dump_json(config::to_json(c), 2) + "\n").c_str());
     return 0;
   };
 }

@@ -12,6 +12,7 @@
 #include "host/cubemap/ImageFiles.hpp"
 #include "sim/FrameImage.hpp"
 #include "sim/StillFrame.hpp"
+#include "common/StrictJson.hpp"
 
 namespace arp::app {
 
@@ -63,7 +64,7 @@ int run_frame(FrameArgs& a) {
   std::printf("  photon times %.6f .. %.6f ms; display memory in use %.1f MiB; rendered in %.1f ms (wall clock)\n",
               static_cast<double>(s.first_photon_ps) * 1e-9, static_cast<double>(s.last_photon_ps) * 1e-9,
               static_cast<double>(s.memory_bytes) / (1 << 20), s.render_ms);
-  if (!a.report.empty()) write_text_atomic(a.report, sim::still_report(spec, s, a.out).dump(2) + "\n");
+  if (!a.report.empty()) write_text_atomic(a.report, dump_json(sim::still_report(spec, s, a.out), 2) + "\n");
   return 0;
 }
 }  // namespace

@@ -99,7 +99,10 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
   // The orientation register can only hold samples between the frame's first
   // latch and the start of the next frame; quantise each once.
-  const auto [s_lo, s_hi] = latch_.frame_samples(orientation, frame);
+  // (Plain variables, not a structured binding: the render lambdas capture
+  // s_lo, which clang before 16 does not allow for a binding.)
+  const auto samples = latch_.frame_samples(orientation, frame);
+  const size_t s_lo = samples.first, s_hi = samples.second;
   std::vector<Mat3q> mats;
   for (size_t s = s_lo; s <= s_hi; ++s) mats.push_back(quantise_rotation(orientation[s].q, cfg_.widths.mat_frac));
 
