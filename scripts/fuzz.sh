@@ -36,6 +36,7 @@ status=0
 printf '%-8s %8s %14s %9s\n' target seconds executions findings
 for t in "${targets[@]}"; do
   max_len=$(ARPSIM_FUZZ_TARGET=list "$fuzzer" | awk -v t="$t" '$1 == t {print $2}')
+  leaks=$(ARPSIM_FUZZ_TARGET=list "$fuzzer" | awk -v t="$t" '$1 == t {print $3}')
   [ -n "$max_len" ] || { echo "fuzz.sh: no target '$t' (ARPSIM_FUZZ_TARGET=list $fuzzer)" >&2; exit 2; }
   work=build-fuzz/corpus/$t findings=build-fuzz/findings/$t
   mkdir -p "$work" "$findings"
@@ -53,7 +54,7 @@ for t in "${targets[@]}"; do
   fi
   log=build-fuzz/$t.log
   before=$(ls "$findings" | wc -l)
-  ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+  ASAN_OPTIONS=detect_leaks=$leaks ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -detect_leaks="$leaks" \
     -print_final_stats=1 -artifact_prefix="$findings/" "$work" "${extra[@]}" > "$log" 2>&1 || true
   runs=$(awk '/stat::number_of_executed_units/ {print $2}' "$log" | tail -1)
   found=$(($(ls "$findings" | wc -l) - before))

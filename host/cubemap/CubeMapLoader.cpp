@@ -67,33 +67,38 @@ std::array<std::string, 6> six_face_paths_in(const std::string& folder) {
 }
 
 CubeMapImages load_cross(const std::string& path, int S) {
-  const RgbImage img = read_rgb8(path);
+  // The layout from the header: 4:3 (horizontal) or 3:4 (vertical), 4 or 3 faces wide.
+  const RgbImage img = read_rgb8(path, [&](int w, int h) {
+    if (int64_t{w} * 3 == int64_t{h} * 4) {
+      if (w != 4 * S)
+        throw InputError(path, "size", "horizontal cross is " + size_str(w, h) + "; with faces of " + size_str(S, S) +
+                                           " (memory.face_size) it must be " + size_str(4 * S, 3 * S));
+    } else if (int64_t{w} * 4 == int64_t{h} * 3) {
+      if (w != 3 * S)
+        throw InputError(path, "size", "vertical cross is " + size_str(w, h) + "; with faces of " + size_str(S, S) +
+                                           " (memory.face_size) it must be " + size_str(3 * S, 4 * S));
+    } else {
+      throw InputError(path, "size", "image is " + size_str(w, h) + "; a cross must be 4:3 (horizontal) or 3:4 (vertical)");
+    }
+  });
   CubeMapImages cm;
   cm.face_size = S;
   if (img.width * 3 == img.height * 4) {
-    if (img.width != 4 * S)
-      throw InputError(path, "size", "horizontal cross is " + size_str(img.width, img.height) + "; with faces of " +
-                                         size_str(S, S) + " (memory.face_size) it must be " + size_str(4 * S, 3 * S));
     // cells (column, row): +X (2,1) -X (0,1) +Y (1,0) -Y (1,2) +Z (3,1) -Z (1,1)
     const int cells[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {3, 1}, {1, 1}};
     for (size_t f = 0; f < 6; ++f) cm.faces[f] = crop(img, cells[f][0] * S, cells[f][1] * S, S, false);
-  } else if (img.width * 4 == img.height * 3) {
-    if (img.width != 3 * S)
-      throw InputError(path, "size", "vertical cross is " + size_str(img.width, img.height) + "; with faces of " +
-                                         size_str(S, S) + " (memory.face_size) it must be " + size_str(3 * S, 4 * S));
+  } else {
     const int cells[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 3}, {1, 1}};
     for (size_t f = 0; f < 6; ++f) cm.faces[f] = crop(img, cells[f][0] * S, cells[f][1] * S, S, f == 4);
-  } else {
-    throw InputError(path, "size", "image is " + size_str(img.width, img.height) +
-                                       "; a cross must be 4:3 (horizontal) or 3:4 (vertical)");
   }
   return cm;
 }
 
 CubeMapImages load_equirect(const std::string& path, int S) {
-  const RgbImage img = read_rgb8(path);
-  if (img.width != 2 * img.height)
-    throw InputError(path, "size", "panorama is " + size_str(img.width, img.height) + "; an equirectangular panorama must be 2:1");
+  const RgbImage img = read_rgb8(path, [&](int w, int h) {
+    if (int64_t{w} != 2 * int64_t{h})
+      throw InputError(path, "size", "panorama is " + size_str(w, h) + "; an equirectangular panorama must be 2:1");
+  });
   CubeMapImages cm;
   cm.face_size = S;
   const auto& bases = face_bases();

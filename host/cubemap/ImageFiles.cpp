@@ -48,7 +48,7 @@ class QuietStderr {
 
 }  // namespace
 
-RgbImage read_rgb8(const std::string& path) {
+RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>& check_size) {
   regular_file_size(path, "image");
   const QuietStderr quiet;  // declared before the reader: restored after it is gone (it may print as it closes)
   auto in = OIIO::ImageInput::open(path);
@@ -66,6 +66,7 @@ RgbImage read_rgb8(const std::string& path) {
                          " channels would take " + (bytes == UINT64_MAX ? std::string("too much") : std::to_string(bytes >> 20) + " MB") +
                          "; images are limited to " +
                          std::to_string(kMaxImageBytes >> 20) + " MB and 2^28 pixels");
+  if (check_size) check_size(spec.width, spec.height);
   const int nc = spec.nchannels;
   if (spec.format.is_floating_point()) {
     // High dynamic range faces: every value must be a number.

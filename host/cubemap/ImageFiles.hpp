@@ -2,6 +2,7 @@
 // writing atomically (a temporary file in the same folder, then a rename), so
 // a failed run never leaves a half-written image.
 #pragma once
+#include <functional>
 #include <cstdint>
 #include <string>
 
@@ -18,7 +19,10 @@ constexpr uint64_t kMaxImageBytes = uint64_t{1} << 30;
 // Any channel count: 1 (grey) is replicated, alpha and extra channels dropped.
 // InputError naming the file on a missing, non-regular, too large, unreadable
 // or corrupt image, or a floating-point one holding NaN or infinity.
-RgbImage read_rgb8(const std::string& path);
+// `check_size`, when given, sees the header's width and height before any
+// pixel is read (a layout the caller cannot use is refused without reading
+// a gigabyte first); it throws to refuse.
+RgbImage read_rgb8(const std::string& path, const std::function<void(int width, int height)>& check_size = {});
 
 // Format from the extension (.png, .exr, .tif, ...). InputError naming the file on failure.
 void write_rgb8(const std::string& path, const RgbImage& img);

@@ -35,7 +35,7 @@ Mesh assimp_import(const std::string& path) {
                                              aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
                                              aiProcess_ValidateDataStructure);
   if (!sc || !sc->mRootNode || (sc->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    throw InputError(path, "", std::string("cannot import the model: ") + imp.GetErrorString());
+    throw InputError(path, "", "cannot import the model: " + quoted(imp.GetErrorString()));  // assimp may quote the whole file
   if (log.stream->text.find("out-of-range indices") != std::string::npos)
     throw InputError(path, "", "corrupt model: some faces have out-of-range vertex indices");
   Mesh out;

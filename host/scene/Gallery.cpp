@@ -155,6 +155,7 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
     const glm::dvec3 top{kRoom * i, 1.0, -kRoom * k - 1.5};
     std::shared_ptr<const Mesh> mesh;
     std::string found;
+    bool refused = false;
     for (const auto& r : roots) {
       const std::string p = (std::filesystem::path(r) / e.relative).string();
       if (std::filesystem::exists(p)) {
@@ -166,6 +167,7 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
           found = p;
         } catch (const InputError& err) {
           s.notes.push_back(std::string("exhibit ") + e.name + ": " + err.what());
+          refused = true;
         }
         break;
       }
@@ -173,7 +175,8 @@ Scene make_gallery(const std::vector<std::string>& model_roots) {
     if (!mesh) {
       mesh = std::make_shared<Mesh>(make_sphere(0.5, 32));
       s.notes.push_back(std::string("exhibit ") + e.name + ": " + e.relative +
-                        " not found (Debian packages glmark2-data, assimp-testmodels); a sphere stands in");
+                        (refused ? " refused" : " not found (Debian packages glmark2-data, assimp-testmodels)") +
+                        "; a sphere stands in");
     }
     SceneObject& o = add_object(s, std::string("exhibit ") + e.name, mesh, top, mat(e.color, true));
     const double scale = o.model_bound.radius > 0 ? e.size / (2 * o.model_bound.radius) : 1.0;

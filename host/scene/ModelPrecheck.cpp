@@ -54,11 +54,24 @@ uint64_t parse_count(const std::string& path, const std::string& place, const st
 // properties' sizes in binary (a list at least its count).
 void check_ply(const std::string& path, uint64_t size) {
   const std::string head = read_prefix(path, 1 << 16);
-  const auto end = head.find("end_header");
   if (head.rfind("ply", 0) != 0) refuse(path, "line 1", "not a PLY file (no 'ply' magic)");
-  if (end == std::string::npos) refuse(path, "header", "truncated: no end_header in the first 64 KB");
-  const auto data_start = head.find('\n', end);
-  const uint64_t available = size - std::min<uint64_t>(size, data_start == std::string::npos ? head.size() : data_start + 1);
+  // The header: lines up to one that is "end_header" itself (not a line
+  // merely containing it -- assimp's reader hangs on such headers).
+  size_t end = std::string::npos, data_start = std::string::npos;
+  for (size_t at = 0; at < head.size();) {
+    const size_t nl = head.find('\n', at);
+    if (nl == std::string::npos) break;
+    std::string l = head.substr(at, nl - at);
+    while (!l.empty() && (l.back() == '\r' || l.back() == ' ' || l.back() == '\t')) l.pop_back();
+    if (l == "end_header") {
+      end = at;
+      data_start = nl + 1;
+      break;
+    }
+    at = nl + 1;
+  }
+  if (end == std::string::npos) refuse(path, "header", "truncated: no end_header line in the first 64 KB");
+  const uint64_t available = size - std::min<uint64_t>(size, data_start);
   static const std::map<std::string, int> kSize{{"char", 1},  {"uchar", 1}, {"int8", 1},   {"uint8", 1},    {"short", 2},
                                                 {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4},      {"uint", 4},
                                                 {"int32", 4},  {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8},
@@ -75,6 +88,7 @@ void check_ply(const std::string& path, uint64_t size) {
     std::string kw;
     ss >> kw;
     const std::string place = "line " + std::to_string(n);
+    // (Other lines are let through: real files carry free text, e.g. Blender's "Created by ...".)
     if (kw == "format") ss >> format;
     if (kw == "element") {
       Element e;

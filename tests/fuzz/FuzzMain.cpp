@@ -1,6 +1,6 @@
 // The libFuzzer binary over every fuzz target (tests/fuzz/FuzzTargets): the
 // target is chosen by ARPSIM_FUZZ_TARGET (scripts/fuzz.sh sets it; "list"
-// prints the targets with their -max_len). Built with clang only (ARPSIM_FUZZ).
+// prints the targets with their -max_len and -detect_leaks). Built with clang only (ARPSIM_FUZZ).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -14,7 +14,7 @@ const arp::fuzz::FuzzTarget* target = nullptr;
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   const char* name = std::getenv("ARPSIM_FUZZ_TARGET");
   if (name && std::string(name) == "list") {
-    for (const auto& t : arp::fuzz::fuzz_targets()) std::printf("%s %zu %s\n", t.name, t.max_len, t.what);
+    for (const auto& t : arp::fuzz::fuzz_targets()) std::printf("%s %zu %d %s\n", t.name, t.max_len, t.detect_leaks ? 1 : 0, t.what);
     std::exit(0);
   }
   target = name ? arp::fuzz::find_fuzz_target(name) : nullptr;
