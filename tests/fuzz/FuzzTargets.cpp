@@ -177,16 +177,16 @@ bool last_input_refused() { return refused; }
 
 const std::vector<FuzzTarget>& fuzz_targets() {
   static const std::vector<FuzzTarget> kTargets = {
-      {"config", "configuration file (sim/ConfigFile)", 1 << 16, true, config_one},
-      {"set", "--set KEY=VALUE overrides, one per line (sim/ConfigFile)", 4096, true, set_one},
-      {"scene", "scene file (host/scene/SceneFile)", 1 << 16, true, scene_one},
-      {"walk", "walk file (host/motion/WalkPath)", 1 << 14, true, walk_one},
-      {"trace", "trace CSV (tracker/TraceFile)", 1 << 16, true, trace_one},
-      {"dataset", "head-motion dataset import (tracker/DatasetImport)", 1 << 16, true, dataset_one},
-      {"vcd", "VCD behind arpsim gtkw (common/GtkwSaveFile)", 1 << 16, true, vcd_one},
-      {"image", "cube-map image through OpenImageIO (host/cubemap/CubeMapLoader)", 1 << 16, false, image_one},
-      {"model", "model file through precheck and import (host/scene/ModelImport)", 1 << 16, false, model_one},
-      {"report", "Oculus DK1/DK2 USB report (tracker/OculusReport)", 128, true, report_decoder_one_input},
+      {"config", "configuration file (sim/ConfigFile)", 1 << 16, true, false, config_one},
+      {"set", "--set KEY=VALUE overrides, one per line (sim/ConfigFile)", 4096, true, false, set_one},
+      {"scene", "scene file (host/scene/SceneFile)", 1 << 16, true, false, scene_one},
+      {"walk", "walk file (host/motion/WalkPath)", 1 << 14, true, false, walk_one},
+      {"trace", "trace CSV (tracker/TraceFile)", 1 << 16, true, false, trace_one},
+      {"dataset", "head-motion dataset import (tracker/DatasetImport)", 1 << 16, true, false, dataset_one},
+      {"vcd", "VCD behind arpsim gtkw (common/GtkwSaveFile)", 1 << 16, true, false, vcd_one},
+      {"image", "cube-map image through OpenImageIO (host/cubemap/CubeMapLoader)", 1 << 16, false, false, image_one},
+      {"model", "model file through precheck and import (host/scene/ModelImport)", 1 << 16, false, true, model_one},
+      {"report", "Oculus DK1/DK2 USB report (tracker/OculusReport)", 128, true, false, report_decoder_one_input},
   };
   return kTargets;
 }
