@@ -26,6 +26,10 @@ namespace arp::sim {
 
 namespace {
 
+// a + b (b >= 0) held at the largest time: windows near the end of the
+// 64-bit picosecond range (a run may end within a frame of it) never wrap.
+int64_t plus_saturated(int64_t a, int64_t b) { return a > INT64_MAX - b ? INT64_MAX : a + b; }
+
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
@@ -128,7 +132,7 @@ void Session::build_motion() {
   if (!spec_.trace.empty()) {
     // Only what the run can latch: a second of margin before the first frame covers every lead.
     std::vector<tracker::PoseSample> poses =
-        tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, end_ps_ + kPsPerSecond / 100});
+        tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, plus_saturated(end_ps_, kPsPerSecond / 100)});
     motion_source_ = spec_.trace;
     more_poses_ = [poses = std::move(poses)](int64_t, std::vector<tracker::PoseSample>& out) mutable {
       out = std::move(poses);
@@ -168,7 +172,7 @@ void Session::build_motion() {
   }
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
-  extend_motion(live_ ? INT64_MAX : start_ps_ + 3 * frame_ps + kPsPerSecond);
+  extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));
 }
 
 // After frame k is scanned out (every level reports its frames in order),
@@ -179,7 +183,7 @@ void Session::advance_motion(int64_t frame) {
   if (live_ || !more_poses_) return;
   const int64_t f0 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame));
   const int64_t f1 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1));
-  extend_motion(f1 + 2 * (f1 - f0) + kPsPerSecond);
+  extend_motion(plus_saturated(f1, 2 * (f1 - f0) + kPsPerSecond));
   if (motion_started_) stream_.discard_before(f0 - 2 * (f1 - f0) - kPsPerSecond);
 }
 
@@ -221,7 +225,11 @@ void Session::build_memories() {
     if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");
   if (!(h.engine.object_setup_s >= 0) || !std::isfinite(h.engine.object_setup_s)) throw InputError("--engine-setup", "", "must be >= 0");
   auto head = [this](double tt) {
-    const dp::Quat& q = stream_[stream_.index_at(static_cast<int64_t>(std::llround(tt * 1e12)))].q;
+    // The host may render ahead of the frame (a memory queued behind a busy
+    // engine): the generated motion is extended to whatever time it asks for.
+    const int64_t t_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+    extend_motion(t_ps);
+    const dp::Quat& q = stream_[stream_.index_at(t_ps)].q;
     return glm::dquat(q.w, q.x, q.y, q.z);
   };
   if (h.region_size != 0) {

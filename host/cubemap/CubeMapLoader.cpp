@@ -35,14 +35,13 @@ CubeMapImages load_six_faces(const std::array<std::string, 6>& paths, int S) {
   CubeMapImages cm;
   cm.face_size = S;
   for (size_t f = 0; f < 6; ++f) {
-    RgbImage img = read_rgb8(paths[f]);
-    if (img.width != img.height)
-      throw InputError(paths[f], "size", "face is " + size_str(img.width, img.height) + "; cube faces must be square");
-    if (img.width != S)
-      throw InputError(paths[f], "size", "face is " + size_str(img.width, img.height) +
-                                             " but the display memory's faces are " + size_str(S, S) +
-                                             " (memory.face_size)");
-    cm.faces[f] = std::move(img);
+    // The size from the header, before any pixel is read.
+    cm.faces[f] = read_rgb8(paths[f], [&](int w, int h) {
+      if (w != h) throw InputError(paths[f], "size", "face is " + size_str(w, h) + "; cube faces must be square");
+      if (w != S)
+        throw InputError(paths[f], "size", "face is " + size_str(w, h) + " but the display memory's faces are " +
+                                               size_str(S, S) + " (memory.face_size)");
+    });
   }
   return cm;
 }
