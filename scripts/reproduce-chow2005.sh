@@ -19,7 +19,7 @@ OUT=${1:-chow2005}
 FRAMES=${FRAMES:-300}
 THETA=${THETA:-0.75}
 mkdir -p "$OUT"
-value() { grep "\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+a-z"]*\).*/\1/' | tr -d '"'; }
+value() { grep -E "^ *\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+a-z"]*\).*/\1/' | tr -d '"'; }
 run() {  # name, extra arguments
   local name=$1
   shift

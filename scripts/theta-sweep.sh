@@ -13,7 +13,7 @@ mkdir -p "$OUT"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # The last occurrence of a key in arpsim's report (the host summary sorts after the frames).
-value() { grep "\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+]*\).*/\1/'; }
+value() { grep -E "^ *\"$1\":" "$2" | tail -1 | sed 's/.*: \([-0-9.e+]*\).*/\1/'; }
 csv="$OUT/theta-sweep.csv"
 echo "theta_deg,triangles_per_s,full_render_triangles_per_s,load_reduction,mean_psnr_db,worst_psnr_db,max_displacement_px,worst_share_another_object" > "$tmp/sweep.csv"
 for th in $THETAS; do
