@@ -190,6 +190,7 @@ void Session::advance_motion(int64_t frame) {
 // Appends the generated motion through `through_ps` (and one sample past it) to the stream.
 void Session::extend_motion(int64_t through_ps) {
   if (!more_poses_ || motion_done_) return;
+  if (motion_started_ && last_pose_ps_ > through_ps) return;  // already there (the host asks several times a frame)
   std::vector<tracker::PoseSample> more;
   motion_done_ = more_poses_(through_ps, more);
   if (more.empty()) return;
