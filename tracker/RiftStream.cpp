@@ -36,7 +36,8 @@ struct RiftStream::Impl {
   RiftStreamOptions opt;
   libusb_context* ctx = nullptr;
   libusb_device_handle* handle = nullptr;
-  RiftModel model = RiftModel::DK1;
+  // Written by connect() on the pump thread (a replug may bring the other model), read by model().
+  std::atomic<RiftModel> model{RiftModel::DK1};
   std::atomic<bool> is_connected{false};
   bool ever_opened = false;
   // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
@@ -227,17 +228,28 @@ struct RiftStream::Impl {
     return true;
   }
 
-  // After a loss: wait for the transfers to come back, then let go of the handle.
+  // After a loss: cancel the transfers and wait for every one to come back
+  // (libusb completes a cancelled transfer, or one on a vanished device, with
+  // a status), then let go of the handle. A transfer is freed only once it is
+  // back: freeing one still in flight lets libusb write into freed memory. If
+  // the backend never returns one (1 s), the transfers are left allocated --
+  // a small leak, never a use after free -- and the event says so.
   void release() {
     for (auto* t : transfers)
       if (t && in_flight > 0) libusb_cancel_transfer(t);
     timeval tv{0, 20000};
-    for (int k = 0; k < 50 && in_flight > 0; ++k) libusb_handle_events_timeout(ctx, &tv);
+    for (int k = 0; k < 50 && in_flight > 0; ++k) libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
+    if (in_flight > 0) {
+      event(StreamEvent::Kind::Disconnected, std::to_string(in_flight) + " transfer(s) never came back from libusb; left allocated");
+      for (auto*& t : transfers) t = nullptr;
+      in_flight = 0;
+      handle = nullptr;  // not closed either: closing frees what the transfers still point to
+      return;
+    }
     for (auto*& t : transfers) {
       if (t) libusb_free_transfer(t);
       t = nullptr;
     }
-    in_flight = 0;
     if (handle) {
       libusb_release_interface(handle, 0);
       libusb_close(handle);

@@ -1,0 +1,110 @@
+// `arpsim tracker list`, `tracker record`, `run --live usb` against emulated
+// Rift DK1s (umockdev; see RiftEmulator.hpp): the commands find the device,
+// record a trace that replays into the pipeline, and survive an unplug.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "../TestSupport.hpp"
+#include "RiftEmulator.hpp"
+#include "tracker/Fusion.hpp"
+#include "tracker/SyntheticMotion.hpp"
+#include "tracker/TraceFile.hpp"
+
+using namespace arp;
+using namespace arp::tracker;
+
+namespace {
+
+std::vector<PoseSample> yaw_90(double seconds) {
+  SamplingSpec s;
+  s.rate_hz = 1000;
+  s.duration_s = seconds;
+  return constant_rotation({0, 1, 0}, 90.0, s);
+}
+
+}  // namespace
+
+TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
+  const auto truth = yaw_90(6.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  arp::test::TempDir d;
+  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  EXPECT_EQ(list.status, 0) << list.output;
+  EXPECT_NE(list.output.find("Oculus Rift DK1"), std::string::npos) << list.output;
+  const auto rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 0.5 " + d.file("head.csv"));
+  ASSERT_EQ(rec.status, 0) << rec.output;
+  const auto trace = read_trace_csv(d.file("head.csv"));
+  EXPECT_GT(trace.size(), 300u);
+  EXPECT_LT(angle_between_deg(trace.back().orientation, truth[trace.size()].orientation), 0.5);
+  // The recording replays into the pipeline.
+  const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
+                                          " --set display.h_active=64 --set display.v_active=48");
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
+TEST(RiftCommand, NoDeviceGivesAClearAnswer) {
+  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  EXPECT_NE(list.output.find("no Oculus Rift DK1/DK2 found"), std::string::npos) << list.output;
+}
+
+// Unplugged in the middle of a recording and of a live run: both go on, the
+// events are reported, and everything received before and after is kept.
+TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
+  const auto truth = yaw_90(20.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  arp::test::TempDir d;
+  // Unplugs once the child has streamed 200 reports (however long it takes to start), for 300 ms.
+  auto unplug_for_a_while = [&dk1] {
+    const int64_t base = dk1.reports_sent();
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (dk1.reports_sent() < base + 200 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    dk1.unplug();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    dk1.replug();
+  };
+  {
+    arp::test::CommandResult rec;
+    std::thread child([&] {
+      rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 1.5 " + d.file("gap.csv"));
+    });
+    unplug_for_a_while();
+    child.join();
+    ASSERT_EQ(rec.status, 0) << rec.output;
+    EXPECT_NE(rec.output.find("disconnected"), std::string::npos) << rec.output;
+    EXPECT_NE(rec.output.find("reconnected"), std::string::npos) << rec.output;
+    EXPECT_NE(rec.output.find("1 disconnects, 1 reconnects"), std::string::npos) << rec.output;
+    const auto trace = read_trace_csv(d.file("gap.csv"));
+    // Before the unplug and after the replug, with a gap of about 300 ms in between.
+    EXPECT_GT(trace.size(), 600u);
+    int64_t gap = 0;
+    for (size_t i = 1; i < trace.size(); ++i) gap = std::max(gap, trace[i].time_ps - trace[i - 1].time_ps);
+    EXPECT_GT(gap, 200'000'000'000);
+  }
+  {
+    dk1.replug();
+    arp::test::CommandResult run;
+    std::thread child([&] {
+      // 90 frames of the default display: 1.5 s at its 60 Hz pace.
+      run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 90 --every 0 --report " + d.file("live.json"));
+    });
+    unplug_for_a_while();
+    child.join();
+    ASSERT_EQ(run.status, 0) << run.output;
+    std::ifstream in(d.file("live.json"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string rep = ss.str();
+    const size_t live_at = rep.find("\"live\"");
+    ASSERT_NE(live_at, std::string::npos);
+    EXPECT_NE(rep.find("\"disconnects\": 1"), std::string::npos) << rep.substr(live_at, 400) << run.output;
+    EXPECT_NE(rep.find("\"reconnects\": 1"), std::string::npos);
+    EXPECT_NE(rep.find("live Oculus Rift DK1 (USB)"), std::string::npos);
+    EXPECT_NE(rep.find("\"connected_at_end\": true"), std::string::npos);
+    EXPECT_NE(run.output.find("live input"), std::string::npos) << run.output;
+  }
+}
