@@ -476,9 +476,10 @@ RunSummary Session::run() {
   if (live_) {
     tracker::StreamStats st;
     live_->usb_stats(st);
-    r["live"] = {{"source", motion_source_}, {"samples", live_samples_}, {"reports", st.reports}, {"malformed", st.malformed},
-                 {"disconnects", st.disconnects}, {"reconnects", st.reconnects}, {"keep_alives", st.keep_alives},
-                 {"connected_at_end", live_->connected()}};
+    r["live"] = {{"source", motion_source_}, {"samples", live_samples_}};
+    tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });
+    r["live"]["device_gap_s"] = st.gap_s;
+    r["live"]["connected_at_end"] = live_->connected();
   }
   if (host_) {
     const double px_rad = deg_to_rad(spec_.config.lens.fov_deg) / spec_.config.timing.h_active;

@@ -9,6 +9,7 @@
 #include "common/InputError.hpp"
 #include "tracker/DatasetImport.hpp"
 #include "tracker/OculusReport.hpp"
+#include "tracker/RiftProtocol.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"
 
@@ -115,23 +116,54 @@ TEST(OculusReport, MalformedReportsAreRejectedWithAReason) {
   uint8_t r[64] = {};
   ImuReport rep;
   std::string err;
+  ReportFault fault = ReportFault::None;
   r[0] = 1;
-  r[1] = 4;  // DK1 carries at most 3 samples
-  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 64, rep, err));
-  EXPECT_NE(err.find("sample count 4"), std::string::npos) << err;
   r[1] = 1;
-  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 63, rep, err));  // short
-  EXPECT_NE(err.find("63 bytes"), std::string::npos) << err;
-  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 64, rep, err));  // wrong id
+  EXPECT_FALSE(decode_report(RiftModel::DK1, r, 61, rep, err, &fault));  // short: the magnetometer ends at byte 62
+  EXPECT_NE(err.find("61 bytes"), std::string::npos) << err;
+  EXPECT_EQ(fault, ReportFault::TooShort);
+  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 64, rep, err, &fault));  // wrong id
   EXPECT_NE(err.find("id 1"), std::string::npos) << err;
+  EXPECT_EQ(fault, ReportFault::WrongId);
   r[0] = 11;
-  r[3] = 3;  // DK2 carries at most 2
-  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 64, rep, err));
-  EXPECT_FALSE(decode_report(RiftModel::DK2, nullptr, 0, rep, err));
+  EXPECT_FALSE(decode_report(RiftModel::DK2, r, 63, rep, err, &fault));  // a DK2 sends 64
+  EXPECT_EQ(fault, ReportFault::TooShort);
+  EXPECT_FALSE(decode_report(RiftModel::DK2, nullptr, 0, rep, err, &fault));
+  EXPECT_EQ(fault, ReportFault::Empty);
   EXPECT_FALSE(decode_report(RiftModel::DK1, r, 0, rep, err));
   r[3] = 0;  // no samples is a valid report
-  EXPECT_TRUE(decode_report(RiftModel::DK2, r, 64, rep, err));
+  EXPECT_TRUE(decode_report(RiftModel::DK2, r, 64, rep, err, &fault));
   EXPECT_EQ(rep.sample_count, 0);
+  EXPECT_EQ(fault, ReportFault::None);
+}
+
+// As the devices send them: a DK1 report may be 62 bytes; a count above what
+// a report holds is clamped (the open drivers do the same), the rest lost.
+TEST(OculusReport, Dk1ReportsOf62BytesAndLargeCountsAreTaken) {
+  ImuReport in;
+  in.model = RiftModel::DK1;
+  in.sample_count = 3;
+  in.reported_sample_count = 7;  // the device took 7 since its last report; 3 fit
+  in.timestamp = 0xBEEF;
+  for (int s = 0; s < 3; ++s) in.samples[static_cast<size_t>(s)] = {{{s, -s, 100 + s}}, {{-1000 * s, 5, 6}}};
+  in.magnetometer = {1, -2, 3};
+  const auto bytes = encode_report(in);
+  EXPECT_EQ(bytes[1], 7);
+  std::vector<uint8_t> short62(bytes.begin(), bytes.begin() + 62);  // exactly 62 bytes on the heap: ASan sees an overread
+  ImuReport out;
+  std::string err;
+  ASSERT_TRUE(decode_report(RiftModel::DK1, short62.data(), short62.size(), out, err)) << err;
+  EXPECT_EQ(out.sample_count, 3);
+  EXPECT_EQ(out.reported_sample_count, 7);
+  EXPECT_EQ(out.timestamp, 0xBEEFu);
+  EXPECT_EQ(out.samples[2].accel, (std::array<int32_t, 3>{2, -2, 102}));
+  EXPECT_EQ(out.magnetometer, (std::array<int16_t, 3>{1, -2, 3}));
+  // A DK2 count of 3 keeps 2.
+  uint8_t dk2[64] = {11};
+  dk2[3] = 3;
+  ASSERT_TRUE(decode_report(RiftModel::DK2, dk2, 64, out, err)) << err;
+  EXPECT_EQ(out.sample_count, 2);
+  EXPECT_EQ(out.reported_sample_count, 3);
 }
 
 TEST(OculusReport, RandomBytesNeverReadPastTheReport) {
@@ -150,7 +182,7 @@ TEST(OculusReport, RandomBytesNeverReadPastTheReport) {
     if (decode_report(m, len ? buf.data() : nullptr, len, rep, err)) {
       ++accepted;
       ASSERT_LE(rep.sample_count, m == RiftModel::DK1 ? 3 : 2);
-      ASSERT_GE(len, kRiftReportSize);
+      ASSERT_GE(len, m == RiftModel::DK1 ? 62u : 64u);
     } else {
       ASSERT_FALSE(err.empty());
     }
@@ -362,9 +394,99 @@ TEST(DeviceClock, BackwardStepsAreFlaggedAndHeld) {
   EXPECT_THROW(DeviceClock(16, 0), std::invalid_argument);
 }
 
+namespace {
+constexpr int64_t kMs = 1'000'000'000;  // ps
+}
+
+// A DK1 that restarts (its counter back to 0 after 30 s) carries on from the
+// report's arrival: no freeze (the old clock took 32 s of reports as stale).
+TEST(DeviceClock, ARestartedDeviceReanchorsToTheHostClock) {
+  DeviceClock c(16, kMs);
+  for (int64_t k = 0; k <= 30000; ++k) ASSERT_FALSE(c.map(static_cast<uint64_t>(k), k * kMs).reanchored);
+  const auto r = c.map(0, 30001 * kMs);  // restarted
+  EXPECT_TRUE(r.reanchored);
+  EXPECT_FALSE(r.backwards);
+  EXPECT_EQ(r.jump_ps, -30000 * kMs);
+  EXPECT_EQ(r.time_ps, 30001 * kMs);  // the arrival
+  const auto n = c.map(1, 30002 * kMs);
+  EXPECT_FALSE(n.reanchored);
+  EXPECT_EQ(n.time_ps, 30002 * kMs);
+  EXPECT_EQ(c.reanchors(), 1);
+}
+
+// The counter leaps 10 s ahead while reports keep arriving 1 ms apart: the
+// device's time would lead its arrival, which cannot be, so time carries on
+// from the arrival.
+TEST(DeviceClock, AForwardJumpReanchorsAndTimeStaysMonotonic) {
+  DeviceClock c(32, 1'000'000);  // DK2: us
+  for (int64_t k = 0; k < 100; ++k) c.map(static_cast<uint64_t>(k * 1000), k * kMs);
+  const auto j = c.map(99'000 + 10'000'000, 100 * kMs);
+  EXPECT_TRUE(j.reanchored);
+  EXPECT_EQ(j.time_ps, 100 * kMs);
+  EXPECT_EQ(j.jump_ps, 9'999 * kMs);  // the counter stepped 10 s, the arrival 1 ms
+  const auto n = c.map(99'000 + 10'001'000, 101 * kMs);
+  EXPECT_FALSE(n.reanchored);
+  EXPECT_EQ(n.time_ps, 101 * kMs);
+  // A lead within the tolerance (a report arriving early relative to the anchor's latency) is no jump.
+  const auto e = c.map(99'000 + 10'002'000 + 200'000, 102 * kMs);
+  EXPECT_FALSE(e.reanchored);
+  EXPECT_EQ(e.time_ps, 302 * kMs);
+}
+
+// A counter that stops while reports keep coming: held for max_held_reports
+// reports, then re-anchored, so the pose freezes 50 ms at most.
+TEST(DeviceClock, AStuckCounterReanchorsAfterTheHeldLimit) {
+  DeviceClockLimits lim;
+  lim.max_held_reports = 50;
+  DeviceClock c(16, kMs, lim);
+  c.map(7, 0);
+  int held = 0;
+  DeviceClock::Mapped m{};
+  for (int64_t k = 1; k <= 50; ++k) {
+    m = c.map(7, k * kMs);
+    held += m.backwards;
+  }
+  EXPECT_EQ(held, 49);
+  EXPECT_TRUE(m.reanchored);
+  EXPECT_EQ(m.time_ps, 50 * kMs);
+  // A stale report a few ticks back is held, not a restart.
+  c.map(9, 52 * kMs);
+  const auto stale = c.map(8, 53 * kMs);
+  EXPECT_TRUE(stale.backwards);
+  EXPECT_FALSE(stale.reanchored);
+  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.0, 50}), std::invalid_argument);
+  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.25, 0}), std::invalid_argument);
+}
+
+// Over 75 minutes of a DK2 (its 32-bit microsecond counter wraps at 71.6 min)
+// whose crystal runs 80 ppm fast, with up to 2 ms of transfer latency: no
+// re-anchor, one wrap, and time within 2 ms of arrival at the end.
+TEST(DeviceClock, AnHourAndAQuarterOfDk2CountsNoJumpAndTracksTheHost) {
+  DeviceClock c(32, 1'000'000);
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int64_t> latency(0, 2 * kMs);
+  const int64_t reports = 75 * 60 * 100;  // every 10 ms
+  int wraps = 0;
+  int64_t last = -1;
+  DeviceClock::Mapped m{};
+  int64_t arrival = 0;
+  for (int64_t k = 0; k < reports; ++k) {
+    const int64_t device_us = k * 10'000;
+    arrival = static_cast<int64_t>(static_cast<double>(device_us) * 1e6 / (1 + 80e-6)) + latency(rng);
+    m = c.map(static_cast<uint64_t>(device_us) + 4'000'000'000u, arrival);  // starts near the wrap
+    ASSERT_FALSE(m.reanchored) << k;
+    ASSERT_GT(m.time_ps, last) << k;
+    wraps += m.wrapped;
+    last = m.time_ps;
+  }
+  EXPECT_EQ(wraps, 1);
+  EXPECT_NEAR(c.skew_ppm(), -80.0, 1.0);
+  EXPECT_LT(std::llabs(m.time_ps - arrival), 2 * kMs);
+}
+
 TEST(DeviceClock, SkewIsEstimatedFromArrivalsWithJitter) {
   // The host runs 100 ppm faster than the device; arrivals jitter by 0-1 ms.
-  DeviceClock c(32, 1'000'000, 10.0);
+  DeviceClock c(32, 1'000'000, DeviceClockLimits{10.0, 0.25, 50});
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<int64_t> jitter(0, 1'000'000'000);
   DeviceClock::Mapped m{};

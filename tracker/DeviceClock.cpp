@@ -1,48 +1,81 @@
 #include "DeviceClock.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace arp::tracker {
 
-DeviceClock::DeviceClock(int counter_bits, int64_t tick_ps, double min_skew_span_s)
+DeviceClock::DeviceClock(int counter_bits, int64_t tick_ps, const DeviceClockLimits& limits)
     : bits_(counter_bits),
       mask_(counter_bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << counter_bits) - 1)),
       tick_ps_(tick_ps),
-      min_span_ps_(min_skew_span_s * 1e12) {
+      limits_(limits) {
   if (counter_bits < 2 || counter_bits > 62) throw std::invalid_argument("counter width must be 2..62 bits");
   if (tick_ps <= 0) throw std::invalid_argument("tick must be positive");
+  if (!(limits.min_skew_span_s > 0) || !(limits.jump_tolerance_s > 0) || limits.max_held_reports < 1)
+    throw std::invalid_argument("device clock limits: spans must be positive, max_held_reports at least 1");
+}
+
+int64_t DeviceClock::time_of_ticks() const {
+  const double device_ps = static_cast<double>(ticks_) * static_cast<double>(tick_ps_);
+  return anchor_ps_ + std::llround(device_ps * (1.0 + skew_));
+}
+
+void DeviceClock::reanchor(int64_t arrival_ps) {
+  anchor_ps_ = std::max(arrival_ps, last_time_ps_ + tick_ps_);
+  ticks_ = 0;
+  held_run_ = 0;
+  n_ = sx_ = sy_ = sxx_ = sxy_ = 0;
+  ++reanchors_;
 }
 
 DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   counter &= mask_;
-  Mapped m{0, false, false};
+  Mapped m{0, false, false, false, 0};
+  const double tolerance_ps = limits_.jump_tolerance_s * 1e12;
   if (!started_) {
     started_ = true;
     anchor_ps_ = arrival_ps;
   } else {
     const uint64_t delta = (counter - last_counter_) & mask_;
-    if (delta > (mask_ >> 1)) {  // more than half the range: it went back
-      m.backwards = true;
+    if (delta == 0 || delta > (mask_ >> 1)) {  // repeated or behind
+      const uint64_t back = (last_counter_ - counter) & mask_;
+      const bool restarted = static_cast<double>(back) * static_cast<double>(tick_ps_) > tolerance_ps ||
+                             ++held_run_ >= limits_.max_held_reports;
+      if (!restarted) {
+        m.backwards = true;
+        m.time_ps = last_time_ps_;
+        return m;
+      }
+      m.jump_ps = -static_cast<int64_t>(std::min<uint64_t>(back, uint64_t{1} << 40)) * tick_ps_;
+      reanchor(arrival_ps);
+      m.reanchored = true;
     } else {
       m.wrapped = counter < last_counter_;
       ticks_ += static_cast<int64_t>(delta);
+      held_run_ = 0;
+      const int64_t t = time_of_ticks();
+      if (static_cast<double>(t - arrival_ps) > tolerance_ps) {  // the device's time ran ahead of the host's
+        m.jump_ps = t - std::max(arrival_ps, last_time_ps_ + tick_ps_);
+        reanchor(arrival_ps);
+        m.reanchored = true;
+      }
     }
   }
-  if (!m.backwards) last_counter_ = counter;
+  last_counter_ = counter;
   const double device_ps = static_cast<double>(ticks_) * static_cast<double>(tick_ps_);
-  if (!m.backwards) {
-    // Arrival against device time, relative to the anchor (doubles stay exact enough over days).
-    const double y = static_cast<double>(arrival_ps - anchor_ps_);
-    n_ += 1;
-    sx_ += device_ps;
-    sy_ += y;
-    sxx_ += device_ps * device_ps;
-    sxy_ += device_ps * y;
-    const double var = sxx_ - sx_ * sx_ / n_;
-    if (device_ps >= min_span_ps_ && var > 0) skew_ = (sxy_ - sx_ * sy_ / n_) / var - 1.0;
-  }
-  m.time_ps = anchor_ps_ + std::llround(device_ps * (1.0 + skew_));
+  // Arrival against device time, relative to the anchor (doubles stay exact enough over days).
+  const double y = static_cast<double>(arrival_ps - anchor_ps_);
+  n_ += 1;
+  sx_ += device_ps;
+  sy_ += y;
+  sxx_ += device_ps * device_ps;
+  sxy_ += device_ps * y;
+  const double var = sxx_ - sx_ * sx_ / n_;
+  if (device_ps >= limits_.min_skew_span_s * 1e12 && var > 0) skew_ = (sxy_ - sx_ * sy_ / n_) / var - 1.0;
+  m.time_ps = time_of_ticks();
+  last_time_ps_ = m.time_ps;
   return m;
 }
 

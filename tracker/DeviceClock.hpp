@@ -1,42 +1,72 @@
 // Device time -> simulated time for a tracker whose reports carry a wrapping
 // tick counter (DK1: 16 bits of 1 ms, wraps every 65.5 s; DK2: 32 bits of
-// 1 us, every 71.6 min). The counter is unwrapped (a step of more than half
-// the range counts as going backwards: flagged, time held); time is anchored
-// at the first report's arrival and runs at the device's rate corrected by
-// the skew estimated from arrivals (least squares of arrival time against
-// device time, after at least min_skew_span_s of device time).
+// 1 us, every 71.6 min).
+//
+// The model: the counter is unwrapped (a step of up to half its range is
+// forward); time is anchored at a report's arrival on the host and runs at
+// the device's rate corrected by the skew estimated from arrivals (least
+// squares of arrival time against device time, after at least
+// min_skew_span_s of device time since the anchor). Arrival can only lag the
+// device's time (transfer latency, a busy host), never lead it, so:
+//   - a counter that repeats or steps back by at most `jump_tolerance_s` is a
+//     stale or reordered report: flagged `backwards`, its time held (the
+//     stream skips its samples);
+//   - a counter that steps back by more, or that has not advanced for
+//     `max_held_reports` reports in a row, means the device restarted;
+//   - a counter that steps forward so that the device's time leads the
+//     report's arrival by more than `jump_tolerance_s` jumped;
+// and in the last two cases the clock re-anchors: a new segment starts at the
+// report's arrival (never before the last time given plus one tick), so the
+// timeline stays monotonic and carries on with the host's clock; the skew
+// estimate is kept until the new segment has its own.
 #pragma once
 #include <cstdint>
 
 namespace arp::tracker {
 
+struct DeviceClockLimits {
+  double min_skew_span_s = 10.0;  // device time before the skew is estimated, s (> 0)
+  double jump_tolerance_s = 0.25; // a step back, or a lead over arrival, beyond this re-anchors, s (> 0)
+  int max_held_reports = 50;      // reports in a row without the counter advancing before re-anchoring (>= 1)
+};
+
 class DeviceClock {
  public:
-  DeviceClock(int counter_bits, int64_t tick_ps, double min_skew_span_s = 10.0);
+  DeviceClock(int counter_bits, int64_t tick_ps, const DeviceClockLimits& limits = {});
 
   struct Mapped {
-    int64_t time_ps;   // simulated time of the sample
-    bool wrapped;      // the counter wrapped since the last report
-    bool backwards;    // the counter went back: the report's time is held at the last one
+    int64_t time_ps;      // simulated time of the sample
+    bool wrapped;         // the counter wrapped since the last report
+    bool backwards;       // a stale report: its time is held at the last one
+    bool reanchored;      // the device restarted or jumped: time carries on from the arrival
+    int64_t jump_ps;      // when re-anchored: device time's step against the timeline's (negative: back)
   };
   // counter: the report's timestamp field; arrival_ps: when it arrived on the simulated timeline.
   Mapped map(uint64_t counter, int64_t arrival_ps);
 
   // Estimated (host rate / device rate - 1), parts per million; 0 until enough span.
   double skew_ppm() const { return skew_ * 1e6; }
+  // Unwrapped device ticks since the current anchor.
   int64_t unwrapped_ticks() const { return ticks_; }
+  int64_t reanchors() const { return reanchors_; }
 
  private:
+  void reanchor(int64_t arrival_ps);
+  int64_t time_of_ticks() const;
+
   int bits_;
   uint64_t mask_;
   int64_t tick_ps_;
-  double min_span_ps_;
+  DeviceClockLimits limits_;
   bool started_ = false;
   uint64_t last_counter_ = 0;
-  int64_t ticks_ = 0;            // unwrapped device ticks since the first report
-  int64_t anchor_ps_ = 0;        // arrival of the first report
+  int64_t ticks_ = 0;            // unwrapped device ticks since the anchor
+  int64_t anchor_ps_ = 0;        // the anchor's arrival
+  int64_t last_time_ps_ = 0;     // the last time given out
+  int held_run_ = 0;             // reports in a row without the counter advancing
+  int64_t reanchors_ = 0;
   double skew_ = 0.0;
-  // Running sums for the least-squares slope of arrival (ps) against device time (ps).
+  // Running sums for the least-squares slope of arrival (ps) against device time (ps), this segment.
   double n_ = 0, sx_ = 0, sy_ = 0, sxx_ = 0, sxy_ = 0;
 };
 

@@ -1,5 +1,7 @@
 #include "OculusReport.hpp"
 
+#include <algorithm>
+
 namespace arp::tracker {
 
 namespace {
@@ -21,32 +23,35 @@ std::array<int32_t, 3> unpack_21bit_triplet(const uint8_t* b) {
   return {sign21(v >> 43), sign21(v >> 22), sign21(v >> 1)};
 }
 
-bool decode_report(RiftModel model, const uint8_t* data, size_t length, ImuReport& out, std::string& error) {
+const char* to_string(ReportFault f) {
+  switch (f) {
+    case ReportFault::None: return "none";
+    case ReportFault::Empty: return "empty";
+    case ReportFault::WrongId: return "wrong report id";
+    case ReportFault::TooShort: return "too short";
+  }
+  return "?";
+}
+
+bool decode_report(RiftModel model, const uint8_t* data, size_t length, ImuReport& out, std::string& error, ReportFault* fault) {
   const bool dk1 = model == RiftModel::DK1;
   const char* name = dk1 ? "DK1" : "DK2";
   const uint8_t id = dk1 ? kDk1ReportId : kDk2ReportId;
-  if (data == nullptr || length == 0) {
-    error = std::string(name) + " report: empty";
+  auto refuse = [&](ReportFault f, std::string why) {
+    if (fault) *fault = f;
+    error = std::string(name) + " report: " + why;
     return false;
-  }
-  if (data[0] != id) {
-    error = std::string(name) + " report: id " + std::to_string(data[0]) + ", expected " + std::to_string(id);
-    return false;
-  }
-  if (length < kRiftReportSize) {
-    error = std::string(name) + " report: " + std::to_string(length) + " bytes, expected " +
-            std::to_string(kRiftReportSize);
-    return false;
-  }
+  };
+  if (data == nullptr || length == 0) return refuse(ReportFault::Empty, "empty");
+  if (data[0] != id) return refuse(ReportFault::WrongId, "id " + std::to_string(data[0]) + ", expected " + std::to_string(id));
+  if (length < min_report_size(model))
+    return refuse(ReportFault::TooShort, std::to_string(length) + " bytes, expected " + std::to_string(min_report_size(model)) +
+                                             (dk1 ? " or more" : ""));
+  if (fault) *fault = ReportFault::None;
   ImuReport r;
   r.model = model;
-  const int max_samples = dk1 ? 3 : 2;
-  r.sample_count = dk1 ? data[1] : data[3];
-  if (r.sample_count > max_samples) {
-    error = std::string(name) + " report: sample count " + std::to_string(r.sample_count) + " exceeds " +
-            std::to_string(max_samples);
-    return false;
-  }
+  r.reported_sample_count = dk1 ? data[1] : data[3];
+  r.sample_count = std::min(r.reported_sample_count, max_samples_held(model));
   size_t sample_at, mag_at;
   if (dk1) {
     r.timestamp = u16le(data + 2);

@@ -1,5 +1,6 @@
 #include "RiftProtocol.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace arp::tracker {
@@ -49,11 +50,14 @@ std::vector<uint8_t> keep_alive_report(RiftModel model, uint16_t command_id, uin
 std::array<uint8_t, kRiftReportSize> encode_report(const ImuReport& r) {
   std::array<uint8_t, kRiftReportSize> b{};
   const bool dk1 = r.model == RiftModel::DK1;
-  if (r.sample_count < 0 || r.sample_count > (dk1 ? 3 : 2)) throw std::out_of_range("sample count");
+  if (r.sample_count < 0 || r.sample_count > max_samples_held(r.model)) throw std::out_of_range("sample count");
+  if (r.reported_sample_count > 255) throw std::out_of_range("reported sample count");
+  // The count byte: what the device took, which may exceed what the report holds.
+  const auto count = static_cast<uint8_t>(std::max(r.sample_count, r.reported_sample_count));
   size_t sample_at, mag_at;
   if (dk1) {
     b[0] = kDk1ReportId;
-    b[1] = static_cast<uint8_t>(r.sample_count);
+    b[1] = count;
     put16(&b[2], static_cast<uint16_t>(r.timestamp));
     put16(&b[4], r.last_command_id);
     put16(&b[6], static_cast<uint16_t>(r.temperature));
@@ -62,7 +66,7 @@ std::array<uint8_t, kRiftReportSize> encode_report(const ImuReport& r) {
   } else {
     b[0] = kDk2ReportId;
     put16(&b[1], r.last_command_id);
-    b[3] = static_cast<uint8_t>(r.sample_count);
+    b[3] = count;
     put16(&b[4], r.samples_since_start);
     put16(&b[6], static_cast<uint16_t>(r.temperature));
     for (int i = 0; i < 4; ++i) b[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(r.timestamp >> (8 * i));

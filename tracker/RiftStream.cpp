@@ -27,6 +27,7 @@ const char* to_string(StreamEvent::Kind k) {
     case StreamEvent::Kind::Reconnected: return "reconnected";
     case StreamEvent::Kind::MalformedReport: return "malformed report";
     case StreamEvent::Kind::TimeWentBack: return "device time went back";
+    case StreamEvent::Kind::ClockReanchored: return "device clock re-anchored";
     case StreamEvent::Kind::OpenFailed: return "open failed";
   }
   return "?";
@@ -67,6 +68,15 @@ struct RiftStream::Impl {
   void event(StreamEvent::Kind k, std::string detail) {
     std::lock_guard<std::mutex> lock(mu);
     events.push_back({k, now_s(), std::move(detail)});
+  }
+  // A repeating event: reported the 1st, 10th, 100th ... time (nth: the count
+  // including this one), so a device sending 1000 bad reports a second does
+  // not flood the terminal. Called with mu held.
+  void repeating_event_locked(StreamEvent::Kind k, int64_t nth, const std::string& detail) {
+    int64_t p = 1;
+    while (p < nth && p <= INT64_MAX / 10) p *= 10;
+    if (p != nth) return;
+    events.push_back({k, now_s(), nth == 1 ? detail : detail + " (the " + std::to_string(nth) + "th; every one is counted)"});
   }
 
   int send_feature(const std::vector<uint8_t>& report) {
@@ -111,33 +121,48 @@ struct RiftStream::Impl {
   void report(const uint8_t* data, size_t n) {
     ImuReport r;
     std::string err;
-    if (!decode_report(model, data, n, r, err)) {
-      {
-        std::lock_guard<std::mutex> lock(mu);
-        ++stats.malformed;
-      }
-      event(StreamEvent::Kind::MalformedReport, err);
+    ReportFault fault = ReportFault::None;
+    std::unique_lock<std::mutex> lock(mu);
+    if (!decode_report(model, data, n, r, err, &fault)) {
+      ++stats.malformed;
+      ++(fault == ReportFault::Empty ? stats.malformed_empty : fault == ReportFault::WrongId ? stats.malformed_wrong_id : stats.malformed_short);
+      repeating_event_locked(StreamEvent::Kind::MalformedReport, stats.malformed, err);
       return;
     }
-    std::unique_lock<std::mutex> lock(mu);
     ++stats.reports;
+    stats.samples_lost_on_device += r.reported_sample_count - r.sample_count;
     const int64_t arrival = static_cast<int64_t>(now_s() * 1e12);
     const DeviceClock::Mapped m = clock->map(r.timestamp, arrival);
     if (m.backwards) {
       ++stats.time_went_back;
-      lock.unlock();
-      event(StreamEvent::Kind::TimeWentBack, "report timestamp " + std::to_string(r.timestamp) + " is behind the last; samples skipped");
+      repeating_event_locked(StreamEvent::Kind::TimeWentBack, stats.time_went_back,
+                             "report timestamp " + std::to_string(r.timestamp) + " is not after the last; its samples skipped");
       return;
     }
+    if (m.reanchored) {
+      ++stats.clock_reanchors;
+      char what[120];
+      std::snprintf(what, sizeof what, "the device's timestamp jumped %+.1f ms (a restart or a glitch); time carries on from the host clock",
+                    static_cast<double>(m.jump_ps) * 1e-9);
+      repeating_event_locked(StreamEvent::Kind::ClockReanchored, stats.clock_reanchors, what);
+    }
     constexpr int64_t kSamplePs = 1'000'000'000;  // 1000 Hz
+    // Longer than this between two samples is a break (a reconnection, a re-anchor): nothing is known
+    // of the head in between, so the pose is held across it rather than the gyro integrated over it.
+    constexpr int64_t kGapPs = 20 * kSamplePs;
     for (int i = 0; i < r.sample_count; ++i) {
       const auto& s = r.samples[static_cast<size_t>(i)];
       const int64_t t = m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
       if (fusion_started && t <= last_sample_ps) continue;  // already fused (overlapping counts)
       const glm::dvec3 gyro(gyro_rad_s(s.gyro[0]), gyro_rad_s(s.gyro[1]), gyro_rad_s(s.gyro[2]));
       const glm::dvec3 accel(accel_m_s2(s.accel[0]), accel_m_s2(s.accel[1]), accel_m_s2(s.accel[2]));
-      const double dt = fusion_started ? static_cast<double>(t - last_sample_ps) * 1e-12 : 1e-3;
-      fusion.update(gyro, accel, std::min(dt, 0.1));  // a long gap (a reconnection) is not integrated as one step
+      int64_t dt_ps = fusion_started ? t - last_sample_ps : kSamplePs;
+      if (dt_ps > kGapPs) {
+        ++stats.gaps;
+        stats.gap_s += static_cast<double>(dt_ps) * 1e-12;
+        dt_ps = kSamplePs;  // this sample's own period only
+      }
+      fusion.update(gyro, accel, static_cast<double>(dt_ps) * 1e-12);
       fusion_started = true;
       last_sample_ps = t;
       ++stats.samples;

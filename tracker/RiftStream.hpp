@@ -35,8 +35,11 @@ struct RiftStreamOptions {
   FusionParams fusion;
 };
 
+// Events that repeat (a malformed report, a stale timestamp, a clock
+// re-anchor) are reported the 1st, 10th, 100th, ... time, each saying which
+// occurrence it is; the stats count every one.
 struct StreamEvent {
-  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, OpenFailed };
+  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, ClockReanchored, OpenFailed };
   Kind kind;
   double at_s;         // seconds since the stream was created (wall clock)
   std::string detail;
@@ -44,9 +47,35 @@ struct StreamEvent {
 const char* to_string(StreamEvent::Kind k);
 
 struct StreamStats {
-  int64_t reports = 0, samples = 0, malformed = 0, keep_alives = 0, disconnects = 0, reconnects = 0, time_went_back = 0;
+  int64_t reports = 0, samples = 0, keep_alives = 0, disconnects = 0, reconnects = 0;
+  int64_t malformed = 0;                                          // refused reports, all kinds
+  int64_t malformed_empty = 0, malformed_wrong_id = 0, malformed_short = 0;  // ... by kind
+  int64_t samples_lost_on_device = 0;  // counted by the device beyond what its reports held
+  int64_t time_went_back = 0;          // stale reports skipped (DeviceClock: backwards)
+  int64_t clock_reanchors = 0;         // device restarts and timestamp jumps (DeviceClock: reanchored)
+  int64_t gaps = 0;                    // breaks in the samples (a reconnection, a re-anchor) bridged by holding the pose
+  double gap_s = 0;                    // their total length, s
   bool kernel_driver_detached = false;
 };
+
+// Every counter of StreamStats, named, in report order: the run's report and
+// `tracker record`'s summary iterate this list.
+template <class F>
+void for_each_counter(const StreamStats& s, F&& f) {
+  f("reports", s.reports);
+  f("samples", s.samples);
+  f("malformed", s.malformed);
+  f("malformed_empty", s.malformed_empty);
+  f("malformed_wrong_id", s.malformed_wrong_id);
+  f("malformed_short", s.malformed_short);
+  f("samples_lost_on_device", s.samples_lost_on_device);
+  f("time_went_back", s.time_went_back);
+  f("clock_reanchors", s.clock_reanchors);
+  f("gaps", s.gaps);
+  f("disconnects", s.disconnects);
+  f("reconnects", s.reconnects);
+  f("keep_alives", s.keep_alives);
+}
 
 // Where the udev rules file ships and what it says (docs/tracker.md).
 extern const char* const kUdevRulesHint;

@@ -2,6 +2,8 @@
 // `record` streams one to a trace file; `import` converts a dataset; `synth` writes a synthetic trace.
 #include <cinttypes>
 #include <cstdio>
+#include <set>
+#include <string>
 
 #include "Commands.hpp"
 #include "common/InputError.hpp"
@@ -77,6 +79,13 @@ int run_record(const RecordArgs& a) {
   std::printf("  %zu samples from %" PRId64 " reports; %" PRId64 " malformed, %" PRId64 " disconnects, %" PRId64
               " reconnects, %" PRId64 " keep-alives -> %s\n",
               poses.size(), st.reports, st.malformed, st.disconnects, st.reconnects, st.keep_alives, a.out.c_str());
+  // The device's quirks, when there were any: every other counter that is not zero.
+  std::string quirks;
+  tracker::for_each_counter(st, [&quirks](const char* name, int64_t v) {
+    static const std::set<std::string> shown{"reports", "samples", "malformed", "disconnects", "reconnects", "keep_alives"};
+    if (v != 0 && !shown.count(name)) quirks += (quirks.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(v);
+  });
+  if (!quirks.empty()) std::printf("  also: %s (gaps %.3f s in all)\n", quirks.c_str(), st.gap_s);
   return 0;
 }
 

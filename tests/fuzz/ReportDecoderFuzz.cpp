@@ -30,13 +30,14 @@ int report_decoder_one_input(const uint8_t* data, size_t size) {
     if (error.empty()) fail("refused without a reason");
     return 0;
   }
-  if (report.size() < tracker::kRiftReportSize) fail("accepted a short report");
+  // A DK1 sends 62 or 64 bytes, a DK2 64 (the open drivers' sizes, not the decoder's constants).
+  if (report.size() < (model == tracker::RiftModel::DK1 ? 62u : 64u)) fail("accepted a short report");
   if (r.sample_count < 0 || r.sample_count > (model == tracker::RiftModel::DK1 ? 3 : 2)) fail("sample count out of range");
   // Round trip: what was decoded encodes to the same fields.
   const auto again = tracker::encode_report(r);
   tracker::ImuReport r2;
   if (!tracker::decode_report(model, again.data(), again.size(), r2, error)) fail("re-encoded report refused");
-  if (r2.sample_count != r.sample_count || r2.timestamp != r.timestamp || r2.last_command_id != r.last_command_id ||
+  if (r2.sample_count != r.sample_count || r2.reported_sample_count != r.reported_sample_count || r2.timestamp != r.timestamp || r2.last_command_id != r.last_command_id ||
       r2.temperature != r.temperature || r2.magnetometer != r.magnetometer)
     fail("round trip changed a field");
   for (int s = 0; s < r.sample_count; ++s)

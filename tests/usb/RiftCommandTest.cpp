@@ -101,8 +101,8 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
     const std::string rep = ss.str();
     const size_t live_at = rep.find("\"live\"");
     ASSERT_NE(live_at, std::string::npos);
-    EXPECT_NE(rep.find("\"disconnects\": 1"), std::string::npos) << rep.substr(live_at, 400) << run.output;
-    EXPECT_NE(rep.find("\"reconnects\": 1"), std::string::npos);
+    EXPECT_NE(rep.find("\"device_disconnects\": 1"), std::string::npos) << rep.substr(live_at, 400) << run.output;
+    EXPECT_NE(rep.find("\"device_reconnects\": 1"), std::string::npos);
     EXPECT_NE(rep.find("live Oculus Rift DK1 (USB)"), std::string::npos);
     EXPECT_NE(rep.find("\"connected_at_end\": true"), std::string::npos);
     EXPECT_NE(run.output.find("live input"), std::string::npos) << run.output;
