@@ -449,13 +449,17 @@ TEST(DeviceClock, AStuckCounterReanchorsAfterTheHeldLimit) {
   EXPECT_EQ(held, 49);
   EXPECT_TRUE(m.reanchored);
   EXPECT_EQ(m.time_ps, 50 * kMs);
-  // A stale report a few ticks back is held, not a restart.
-  c.map(9, 52 * kMs);
-  const auto stale = c.map(8, 53 * kMs);
+  // A stale report a few ticks back (within 20 ms) is held, not a restart; 30 ticks back is one.
+  c.map(40, 52 * kMs);
+  const auto stale = c.map(25, 53 * kMs);
   EXPECT_TRUE(stale.backwards);
   EXPECT_FALSE(stale.reanchored);
-  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.0, 50}), std::invalid_argument);
-  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.25, 0}), std::invalid_argument);
+  const auto restart = c.map(10, 54 * kMs);
+  EXPECT_TRUE(restart.reanchored);
+  EXPECT_EQ(restart.jump_ps, -30 * kMs);
+  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.0, 0.25, 50}), std::invalid_argument);
+  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.02, 0.0, 50}), std::invalid_argument);
+  EXPECT_THROW(DeviceClock(16, kMs, DeviceClockLimits{10.0, 0.02, 0.25, 0}), std::invalid_argument);
 }
 
 // Over 75 minutes of a DK2 (its 32-bit microsecond counter wraps at 71.6 min)
@@ -486,7 +490,7 @@ TEST(DeviceClock, AnHourAndAQuarterOfDk2CountsNoJumpAndTracksTheHost) {
 
 TEST(DeviceClock, SkewIsEstimatedFromArrivalsWithJitter) {
   // The host runs 100 ppm faster than the device; arrivals jitter by 0-1 ms.
-  DeviceClock c(32, 1'000'000, DeviceClockLimits{10.0, 0.25, 50});
+  DeviceClock c(32, 1'000'000, DeviceClockLimits{10.0, 0.02, 0.25, 50});
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<int64_t> jitter(0, 1'000'000'000);
   DeviceClock::Mapped m{};

@@ -13,7 +13,7 @@ DeviceClock::DeviceClock(int counter_bits, int64_t tick_ps, const DeviceClockLim
       limits_(limits) {
   if (counter_bits < 2 || counter_bits > 62) throw std::invalid_argument("counter width must be 2..62 bits");
   if (tick_ps <= 0) throw std::invalid_argument("tick must be positive");
-  if (!(limits.min_skew_span_s > 0) || !(limits.jump_tolerance_s > 0) || limits.max_held_reports < 1)
+  if (!(limits.min_skew_span_s > 0) || !(limits.stale_tolerance_s > 0) || !(limits.lead_tolerance_s > 0) || limits.max_held_reports < 1)
     throw std::invalid_argument("device clock limits: spans must be positive, max_held_reports at least 1");
 }
 
@@ -33,7 +33,6 @@ void DeviceClock::reanchor(int64_t arrival_ps) {
 DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   counter &= mask_;
   Mapped m{0, false, false, false, 0};
-  const double tolerance_ps = limits_.jump_tolerance_s * 1e12;
   if (!started_) {
     started_ = true;
     anchor_ps_ = arrival_ps;
@@ -41,7 +40,7 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
     const uint64_t delta = (counter - last_counter_) & mask_;
     if (delta == 0 || delta > (mask_ >> 1)) {  // repeated or behind
       const uint64_t back = (last_counter_ - counter) & mask_;
-      const bool restarted = static_cast<double>(back) * static_cast<double>(tick_ps_) > tolerance_ps ||
+      const bool restarted = static_cast<double>(back) * static_cast<double>(tick_ps_) > limits_.stale_tolerance_s * 1e12 ||
                              ++held_run_ >= limits_.max_held_reports;
       if (!restarted) {
         m.backwards = true;
@@ -56,7 +55,7 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
       ticks_ += static_cast<int64_t>(delta);
       held_run_ = 0;
       const int64_t t = time_of_ticks();
-      if (static_cast<double>(t - arrival_ps) > tolerance_ps) {  // the device's time ran ahead of the host's
+      if (static_cast<double>(t - arrival_ps) > limits_.lead_tolerance_s * 1e12) {  // the device's time ran ahead of the host's
         m.jump_ps = t - std::max(arrival_ps, last_time_ps_ + tick_ps_);
         reanchor(arrival_ps);
         m.reanchored = true;

@@ -8,13 +8,14 @@
 // squares of arrival time against device time, after at least
 // min_skew_span_s of device time since the anchor). Arrival can only lag the
 // device's time (transfer latency, a busy host), never lead it, so:
-//   - a counter that repeats or steps back by at most `jump_tolerance_s` is a
-//     stale or reordered report: flagged `backwards`, its time held (the
-//     stream skips its samples);
+//   - a counter that repeats or steps back by at most `stale_tolerance_s` is
+//     a stale or reordered report (a few transfers are in flight at once):
+//     flagged `backwards`, its time held (the stream skips its samples);
 //   - a counter that steps back by more, or that has not advanced for
 //     `max_held_reports` reports in a row, means the device restarted;
 //   - a counter that steps forward so that the device's time leads the
-//     report's arrival by more than `jump_tolerance_s` jumped;
+//     report's arrival by more than `lead_tolerance_s` jumped (the tolerance
+//     covers the latency of the report the clock was anchored at);
 // and in the last two cases the clock re-anchors: a new segment starts at the
 // report's arrival (never before the last time given plus one tick), so the
 // timeline stays monotonic and carries on with the host's clock; the skew
@@ -25,9 +26,10 @@
 namespace arp::tracker {
 
 struct DeviceClockLimits {
-  double min_skew_span_s = 10.0;  // device time before the skew is estimated, s (> 0)
-  double jump_tolerance_s = 0.25; // a step back, or a lead over arrival, beyond this re-anchors, s (> 0)
-  int max_held_reports = 50;      // reports in a row without the counter advancing before re-anchoring (>= 1)
+  double min_skew_span_s = 10.0;   // device time before the skew is estimated, s (> 0)
+  double stale_tolerance_s = 0.02; // a step back beyond this is a restart, s (> 0)
+  double lead_tolerance_s = 0.25;  // device time leading arrival beyond this is a jump, s (> 0)
+  int max_held_reports = 50;       // reports in a row without the counter advancing before re-anchoring (>= 1)
 };
 
 class DeviceClock {

@@ -150,6 +150,7 @@ struct RiftStream::Impl {
     // Longer than this between two samples is a break (a reconnection, a re-anchor): nothing is known
     // of the head in between, so the pose is held across it rather than the gyro integrated over it.
     constexpr int64_t kGapPs = 20 * kSamplePs;
+    bool first_after_reanchor = m.reanchored;
     for (int i = 0; i < r.sample_count; ++i) {
       const auto& s = r.samples[static_cast<size_t>(i)];
       const int64_t t = m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
@@ -157,7 +158,10 @@ struct RiftStream::Impl {
       const glm::dvec3 gyro(gyro_rad_s(s.gyro[0]), gyro_rad_s(s.gyro[1]), gyro_rad_s(s.gyro[2]));
       const glm::dvec3 accel(accel_m_s2(s.accel[0]), accel_m_s2(s.accel[1]), accel_m_s2(s.accel[2]));
       int64_t dt_ps = fusion_started ? t - last_sample_ps : kSamplePs;
-      if (dt_ps > kGapPs) {
+      if (first_after_reanchor) {
+        dt_ps = kSamplePs;  // the timeline moved to the arrival; the device sampled at its own period
+        first_after_reanchor = false;
+      } else if (dt_ps > kGapPs) {
         ++stats.gaps;
         stats.gap_s += static_cast<double>(dt_ps) * 1e-12;
         dt_ps = kSamplePs;  // this sample's own period only

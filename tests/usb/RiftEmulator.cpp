@@ -65,7 +65,11 @@ struct RiftEmulator::State {
   UMockdevTestbed* testbed = nullptr;
   UMockdevIoctlBase* handler = nullptr;
   mutable std::mutex mu;
-  bool connected = true, detached = false, claimed = false, cut_next = false;
+  bool connected = true, detached = false, claimed = false;
+  int cut_remaining = 0;        // reports still to cut short
+  size_t report_length = tracker::kRiftReportSize;
+  int claimed_count_next = 0;   // > 0: the next report's sample count
+  uint64_t counter_shift = 0;   // added to every timestamp from now on (a restart), modulo the counter's width
   std::deque<Urb> done, interrupts;
   std::vector<std::vector<uint8_t>> features;
   int64_t sent = 0;
@@ -79,6 +83,31 @@ struct RiftEmulator::State {
     if (!streaming || now > keep_alive_until || sent >= static_cast<int64_t>(reports.size())) return false;
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now - streaming_since).count();
     return sent - delivered_at_start <= ms;
+  }
+
+  bool dk1() const { return model == tracker::RiftModel::DK1; }
+  uint64_t timestamp_of(const std::array<uint8_t, tracker::kRiftReportSize>& r) const {
+    if (dk1()) return static_cast<uint64_t>(r[2] | (r[3] << 8));
+    return static_cast<uint64_t>(r[8]) | (static_cast<uint64_t>(r[9]) << 8) | (static_cast<uint64_t>(r[10]) << 16) |
+           (static_cast<uint64_t>(r[11]) << 24);
+  }
+  // A report as sent after the quirks asked for (raw bytes: the counts and
+  // timestamps a real device may send, which encode_report would refuse).
+  std::array<uint8_t, tracker::kRiftReportSize> quirked(std::array<uint8_t, tracker::kRiftReportSize> r) {
+    const uint64_t ts = (timestamp_of(r) + counter_shift) & (dk1() ? 0xffffu : 0xffffffffu);
+    if (dk1()) {
+      r[2] = static_cast<uint8_t>(ts);
+      r[3] = static_cast<uint8_t>(ts >> 8);
+    } else {
+      for (int i = 0; i < 4; ++i) r[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(ts >> (8 * i));
+    }
+    if (claimed_count_next > 0) {
+      const size_t at = dk1() ? 8 : 12, held = dk1() ? 3 : 2;
+      for (size_t k = held - 1; k > 0; --k) std::memcpy(&r[at + 16 * k], &r[at], 16);  // the report's own sample, latest slot too
+      r[dk1() ? 1 : 3] = static_cast<uint8_t>(claimed_count_next);
+      claimed_count_next = 0;
+    }
+    return r;
   }
 
   gboolean handle(UMockdevIoctlClient* client) {
@@ -199,9 +228,9 @@ struct RiftEmulator::State {
         } else if (connected && i != interrupts.end() && report_due(now)) {
           u = *i;
           interrupts.erase(i);
-          const auto& rep = reports[static_cast<size_t>(sent++)];
-          u.actual = cut_next ? 10 : static_cast<int>(rep.size());
-          cut_next = false;
+          const auto rep = quirked(reports[static_cast<size_t>(sent++)]);
+          u.actual = cut_remaining > 0 ? 10 : static_cast<int>(report_length);
+          if (cut_remaining > 0) --cut_remaining;
           std::memcpy(u.buffer->data, rep.data(), static_cast<size_t>(u.actual));
         } else {
           return reply(-1, connected ? EAGAIN : ENODEV);
@@ -290,9 +319,28 @@ void RiftEmulator::replug() {
   s_->streaming = false;  // until the next keep-alive
 }
 
-void RiftEmulator::inject_malformed_report() {
+void RiftEmulator::inject_malformed_report(int n) {
   std::lock_guard<std::mutex> lock(s_->mu);
-  s_->cut_next = true;
+  s_->cut_remaining += n;
+}
+
+void RiftEmulator::set_report_length(size_t bytes) {
+  if (bytes > tracker::kRiftReportSize) throw std::invalid_argument("a Rift report is at most 64 bytes");
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->report_length = bytes;
+}
+
+void RiftEmulator::inject_sample_count(int count) {
+  if (count < 1 || count > 255) throw std::invalid_argument("a sample count is 1..255");
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->claimed_count_next = count;
+}
+
+void RiftEmulator::restart_counter() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  if (s_->sent >= static_cast<int64_t>(s_->reports.size())) return;
+  // The next report's timestamp becomes 0.
+  s_->counter_shift = (~s_->timestamp_of(s_->reports[static_cast<size_t>(s_->sent)])) + 1;
 }
 
 std::vector<std::vector<uint8_t>> RiftEmulator::feature_reports() const {

@@ -4,12 +4,14 @@
 // interface claim, HID feature reports (recorded), interrupt IN transfers on
 // 0x81 answered at 1000 reports per second of wall time with reports encoded
 // from a synthetic head motion (the DK1's 16-bit millisecond counter starts
-// just before its wrap), a malformed report on request, the device stopping
-// when its keep-alive runs out, and unplugging and replugging.
+// just before its wrap), the device stopping when its keep-alive runs out,
+// and on request: malformed reports, 62-byte reports, a sample count larger
+// than a report holds, a restarted counter, unplugging and replugging.
 //
 // The process (and any child it starts) must run under umockdev's preload
 // library (ctest runs the USB tests through umockdev-wrapper).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -27,7 +29,11 @@ class RiftEmulator {
 
   void unplug();
   void replug();
-  void inject_malformed_report();  // the next report is cut short
+  void inject_malformed_report(int n = 1);  // the next n reports are cut short (10 bytes)
+  // The devices' quirks, for the reports sent from now on:
+  void set_report_length(size_t bytes);      // a DK1 may send 62 bytes instead of 64
+  void inject_sample_count(int count);       // the next report claims `count` samples (its own is the latest)
+  void restart_counter();                    // the device restarts: its timestamp counter starts again at 0
   // Feature reports received (each as sent: report id first).
   std::vector<std::vector<uint8_t>> feature_reports() const;
   int64_t reports_sent() const;

@@ -39,6 +39,14 @@ void stream_for(RiftStream& r, double seconds, std::vector<PoseSample>& out) {
   while (std::chrono::steady_clock::now() < until) r.poll(5, out);
 }
 
+// Polls until `done` holds, or fails after `limit_s` of wall time (a bound for a stuck stream, not a pace).
+template <class Done>
+void stream_until(RiftStream& r, Done done, std::vector<PoseSample>& out, const char* what, double limit_s = 20) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_s);
+  while (!done() && std::chrono::steady_clock::now() < until) r.poll(5, out);
+  ASSERT_TRUE(done()) << "still waiting for " << what << " after " << limit_s << " s";
+}
+
 void expect_fused_motion(const RiftStream& r, const std::vector<PoseSample>& truth) {
   // Report k carries the motion's sample k: after n samples the orientation is the truth's sample n - 1
   // integrated over one more millisecond (the first step).
@@ -141,4 +149,63 @@ TEST(RiftStream, NoDeviceGivesAClearAnswer) {
   std::string err;
   EXPECT_FALSE(r.open(err));
   EXPECT_NE(err.find("no Oculus Rift"), std::string::npos) << err;
+}
+
+// The quirks of real devices, one after the other on one stream, each
+// asserted on what must hold whatever the pace: 62-byte reports, a count of
+// 7 samples in a report that holds 3, 150 malformed reports, and a device
+// restart (its counter back to 0).
+TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
+  const auto truth = yaw_90(12.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  RiftStream r;
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  std::vector<PoseSample> poses;
+  auto samples_at_least = [&r](int64_t n) { return [&r, n] { return r.stats().samples >= n; }; };
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, samples_at_least(200), poses, "200 samples"));
+
+  dk1.set_report_length(62);
+  const int64_t before62 = r.stats().samples;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, samples_at_least(before62 + 200), poses, "200 samples of 62-byte reports"));
+  EXPECT_EQ(r.stats().malformed, 0);
+
+  dk1.inject_sample_count(7);
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().samples_lost_on_device > 0; }, poses, "the report claiming 7 samples"));
+  EXPECT_EQ(r.stats().samples_lost_on_device, 4);  // 7 taken, 3 held
+
+  dk1.inject_malformed_report(150);
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().malformed >= 150; }, poses, "150 malformed reports"));
+  EXPECT_EQ(r.stats().malformed, 150);
+  EXPECT_EQ(r.stats().malformed_short, 150);
+  // 150 ms without a sample: a break, bridged by holding the pose. The fused orientation then trails the
+  // truth by the turn made in the break (90 deg/s for 150 ms = 13.5 deg), and by nothing else.
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().gaps >= 1; }, poses, "the first sample after the break"));
+  EXPECT_EQ(r.stats().gaps, 1);
+  EXPECT_NEAR(r.stats().gap_s, 0.151, 0.0005);
+  const int64_t n = r.stats().samples + r.stats().malformed;
+  EXPECT_NEAR(angle_between_deg(r.last_pose().orientation, truth[static_cast<size_t>(n)].orientation), 13.5, 0.5) << n;
+
+  // The restart sets the counter back by more than the stale tolerance (20 ms): wait until the counter,
+  // which wrapped at the 536th report, reads 100 or more.
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().samples + r.stats().malformed >= 640; }, poses, "640 reports"));
+  dk1.restart_counter();
+  const int64_t before_restart = r.stats().samples;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, samples_at_least(before_restart + 300), poses, "300 samples after the restart"));
+  EXPECT_EQ(r.stats().clock_reanchors, 1);
+  EXPECT_EQ(r.stats().time_went_back, 0);
+  for (size_t i = 1; i < poses.size(); ++i) ASSERT_GT(poses[i].time_ps, poses[i - 1].time_ps) << i;
+  EXPECT_EQ(r.stats().gaps, 1);  // the restart is no break: time carries on from the arrival
+  // Since the break the fused motion follows the truth: the trail is still the break's 13.5 deg.
+  const int64_t m = r.stats().samples + r.stats().malformed;
+  EXPECT_NEAR(angle_between_deg(r.last_pose().orientation, truth[static_cast<size_t>(m)].orientation), 13.5, 0.5) << m;
+
+  // Events: the 1st, 10th and 100th malformed report, one re-anchor; never one line per report.
+  int malformed_events = 0, reanchor_events = 0;
+  for (const auto& e : r.take_events()) {
+    malformed_events += e.kind == StreamEvent::Kind::MalformedReport;
+    reanchor_events += e.kind == StreamEvent::Kind::ClockReanchored;
+  }
+  EXPECT_EQ(malformed_events, 3);
+  EXPECT_EQ(reanchor_events, 1);
 }
