@@ -95,11 +95,11 @@ std::pair<std::string, json> parse_override(const std::string& s) {
   const std::string key = s.substr(0, eq), value = s.substr(eq + 1);
   json v;
   try {
-    v = parse_strict_json(value, "--set " + key);
+    v = parse_strict_json(value, "--set " + quoted(key));
   } catch (const InputError& e) {
     // A bare word such as half_even is a string; anything that looks like a number or JSON must parse.
     const bool looks_like_json = !value.empty() && (std::string("-+.0123456789[{\"").find(value[0]) != std::string::npos);
-    if (looks_like_json) throw InputError("--set", key, e.reason());
+    if (looks_like_json) throw InputError("--set", brief(json(key)), e.reason());
     v = value;
   }
   return {key, v};

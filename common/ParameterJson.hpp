@@ -80,7 +80,7 @@ void apply_parameter_overrides(const ParameterTable<Root>& table, const std::vec
   for (const std::string& s : sets) {
     const auto [key, v] = param_json::parse_override(s);
     const Parameter<Root>* p = table.find(key);
-    if (!p) throw InputError("--set", key, "unknown key (arpsim config --list shows every key)");
+    if (!p) throw InputError("--set", quoted(key), "unknown key (arpsim config --list shows every key)");
     set_parameter(*p, v, "--set", r);
   }
 }

@@ -7,8 +7,7 @@
 namespace arp::tracker {
 
 DeviceClock::DeviceClock(int counter_bits, int64_t tick_ps, const DeviceClockLimits& limits)
-    : bits_(counter_bits),
-      mask_(counter_bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << counter_bits) - 1)),
+    : mask_(counter_bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << counter_bits) - 1)),
       tick_ps_(tick_ps),
       limits_(limits) {
   if (counter_bits < 2 || counter_bits > 62) throw std::invalid_argument("counter width must be 2..62 bits");

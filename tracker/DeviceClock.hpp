@@ -56,7 +56,6 @@ class DeviceClock {
   void reanchor(int64_t arrival_ps);
   int64_t time_of_ticks() const;
 
-  int bits_;
   uint64_t mask_;
   int64_t tick_ps_;
   DeviceClockLimits limits_;
