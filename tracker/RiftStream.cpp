@@ -4,9 +4,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <deque>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "DeviceClock.hpp"
@@ -28,6 +31,7 @@ const char* to_string(StreamEvent::Kind k) {
     case StreamEvent::Kind::MalformedReport: return "malformed report";
     case StreamEvent::Kind::TimeWentBack: return "device time went back";
     case StreamEvent::Kind::ClockReanchored: return "device clock re-anchored";
+    case StreamEvent::Kind::ConsumerBehind: return "consumer behind";
     case StreamEvent::Kind::OpenFailed: return "open failed";
   }
   return "?";
@@ -58,7 +62,7 @@ struct RiftStream::Impl {
   int64_t last_sample_ps = 0;
   StreamStats stats;
   std::vector<StreamEvent> events;
-  std::vector<PoseSample> pending;
+  std::deque<PoseSample> pending;  // bounded: max_pending_s of device time
   PoseSample last;
 
   explicit Impl(const RiftStreamOptions& o) : opt(o), fusion(o.fusion) {}
@@ -176,6 +180,13 @@ struct RiftStream::Impl {
       p.has_angular_velocity = true;
       p.angular_velocity = gyro;
       pending.push_back(p);
+      while (static_cast<double>(pending.back().time_ps - pending.front().time_ps) >= opt.max_pending_s * 1e12) {
+        pending.pop_front();
+        ++stats.dropped_unconsumed;
+        char what[120];
+        std::snprintf(what, sizeof what, "the consumer is more than %g s of samples behind; the oldest are dropped", opt.max_pending_s);
+        repeating_event_locked(StreamEvent::Kind::ConsumerBehind, stats.dropped_unconsumed, what);
+      }
       last = p;
     }
     lock.unlock();
@@ -287,7 +298,9 @@ struct RiftStream::Impl {
   }
 };
 
-RiftStream::RiftStream(const RiftStreamOptions& o) : p_(std::make_unique<Impl>(o)) {}
+RiftStream::RiftStream(const RiftStreamOptions& o) : p_(std::make_unique<Impl>(o)) {
+  if (!(o.max_pending_s > 0) || !std::isfinite(o.max_pending_s)) throw std::invalid_argument("max_pending_s must be > 0");
+}
 
 // One round of device service: events, keep-alive, reconnection.
 void RiftStream::Impl::step(int timeout_ms) {

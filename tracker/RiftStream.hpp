@@ -32,6 +32,9 @@ struct RiftStreamOptions {
   int transfers_in_flight = 4;
   double reconnect_every_s = 0.5;
   bool background_thread = true;
+  // Fused samples kept for the consumer, s of device time (> 0): 10 s at 1 kHz is 10 000 samples, about
+  // 1 MB. A consumer that falls further behind loses the oldest, counted (dropped_unconsumed) and reported.
+  double max_pending_s = 10.0;
   FusionParams fusion;
 };
 
@@ -39,7 +42,7 @@ struct RiftStreamOptions {
 // re-anchor) are reported the 1st, 10th, 100th, ... time, each saying which
 // occurrence it is; the stats count every one.
 struct StreamEvent {
-  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, ClockReanchored, OpenFailed };
+  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, ClockReanchored, ConsumerBehind, OpenFailed };
   Kind kind;
   double at_s;         // seconds since the stream was created (wall clock)
   std::string detail;
@@ -53,7 +56,8 @@ struct StreamStats {
   int64_t samples_lost_on_device = 0;  // counted by the device beyond what its reports held
   int64_t time_went_back = 0;          // stale reports skipped (DeviceClock: backwards)
   int64_t clock_reanchors = 0;         // device restarts and timestamp jumps (DeviceClock: reanchored)
-  int64_t gaps = 0;                    // breaks in the samples (a reconnection, a re-anchor) bridged by holding the pose
+  int64_t gaps = 0;                    // breaks in the samples (a reconnection, a lost run of reports) bridged by holding the pose
+  int64_t dropped_unconsumed = 0;      // samples dropped because the consumer fell max_pending_s behind
   double gap_s = 0;                    // their total length, s
   bool kernel_driver_detached = false;
 };
@@ -72,6 +76,7 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("time_went_back", s.time_went_back);
   f("clock_reanchors", s.clock_reanchors);
   f("gaps", s.gaps);
+  f("dropped_unconsumed", s.dropped_unconsumed);
   f("disconnects", s.disconnects);
   f("reconnects", s.reconnects);
   f("keep_alives", s.keep_alives);

@@ -38,7 +38,10 @@ TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
   const auto rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 0.5 " + d.file("head.csv"));
   ASSERT_EQ(rec.status, 0) << rec.output;
   const auto trace = read_trace_csv(d.file("head.csv"));
-  EXPECT_GT(trace.size(), 300u);
+  // How many samples 0.5 s of wall time holds depends on the machine's pace (a CI run had 243 of ~500);
+  // what must hold at any pace: the device's samples, consecutive, following the truth.
+  ASSERT_GT(trace.size(), 50u);
+  for (size_t i = 1; i < trace.size(); ++i) ASSERT_EQ(trace[i].time_ps - trace[i - 1].time_ps, 1'000'000'000) << i;
   EXPECT_LT(angle_between_deg(trace.back().orientation, truth[trace.size()].orientation), 0.5);
   // The recording replays into the pipeline.
   const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
@@ -70,7 +73,7 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
   {
     arp::test::CommandResult rec;
     std::thread child([&] {
-      rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 1.5 " + d.file("gap.csv"));
+      rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 2.5 " + d.file("gap.csv"));
     });
     unplug_for_a_while();
     child.join();
@@ -79,11 +82,18 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
     EXPECT_NE(rec.output.find("reconnected"), std::string::npos) << rec.output;
     EXPECT_NE(rec.output.find("1 disconnects, 1 reconnects"), std::string::npos) << rec.output;
     const auto trace = read_trace_csv(d.file("gap.csv"));
-    // Before the unplug and after the replug, with a gap of about 300 ms in between.
-    EXPECT_GT(trace.size(), 600u);
+    // Before the unplug and after the replug, with a gap of about 300 ms in between (counts that hold at
+    // any pace: the unplug waits for 200 reports; the recording lasts 2.5 s, the replug comes 0.3 s after).
     int64_t gap = 0;
-    for (size_t i = 1; i < trace.size(); ++i) gap = std::max(gap, trace[i].time_ps - trace[i - 1].time_ps);
+    size_t gap_at = 0;
+    for (size_t i = 1; i < trace.size(); ++i)
+      if (trace[i].time_ps - trace[i - 1].time_ps > gap) {
+        gap = trace[i].time_ps - trace[i - 1].time_ps;
+        gap_at = i;
+      }
     EXPECT_GT(gap, 200'000'000'000);
+    EXPECT_GE(gap_at, 150u);
+    EXPECT_GT(trace.size() - gap_at, 100u);
   }
   {
     dk1.replug();

@@ -209,3 +209,35 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
   EXPECT_EQ(malformed_events, 3);
   EXPECT_EQ(reanchor_events, 1);
 }
+
+// A consumer slower than the device: the stream keeps max_pending_s of
+// samples (0.2 s at 1 kHz: 200), drops the oldest beyond, counts them and
+// says so once per power of ten.
+TEST(RiftStream, AConsumerSlowerThanTheDeviceGetsTheNewestWithinTheBound) {
+  const auto truth = yaw_90(4.0);
+  test::RiftEmulator dk2(RiftModel::DK2, truth);
+  RiftStreamOptions o;
+  o.max_pending_s = 0.2;
+  RiftStream r(o);
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  // Nothing taken until 700 samples were fused (stats() does not consume).
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (r.stats().samples < 700 && std::chrono::steady_clock::now() < give_up) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::vector<PoseSample> got;
+  r.poll(0, got);
+  const StreamStats st = r.stats();
+  ASSERT_GE(st.samples, 700);
+  // Samples fused after the poll stay queued; those taken are the newest 200 at the moment of the poll.
+  ASSERT_EQ(got.size(), 200u);
+  for (size_t i = 1; i < got.size(); ++i) ASSERT_EQ(got[i].time_ps - got[i - 1].time_ps, 1'000'000'000) << i;
+  EXPECT_GE(st.dropped_unconsumed, 500);
+  EXPECT_LE(st.dropped_unconsumed, st.samples - 200);
+  int behind = 0;
+  for (const auto& e : r.take_events()) behind += e.kind == StreamEvent::Kind::ConsumerBehind;
+  EXPECT_GE(behind, 3);  // the 1st, 10th, 100th drop (and the 1000th if the wait ran long)
+  EXPECT_LE(behind, 4);
+  RiftStreamOptions none;
+  none.max_pending_s = 0;
+  EXPECT_THROW(RiftStream{none}, std::invalid_argument);
+}
