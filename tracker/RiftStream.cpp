@@ -32,6 +32,7 @@ const char* to_string(StreamEvent::Kind k) {
     case StreamEvent::Kind::TimeWentBack: return "device time went back";
     case StreamEvent::Kind::ClockReanchored: return "device clock re-anchored";
     case StreamEvent::Kind::ConsumerBehind: return "consumer behind";
+    case StreamEvent::Kind::Stalled: return "endpoint stalled";
     case StreamEvent::Kind::OpenFailed: return "open failed";
   }
   return "?";
@@ -53,6 +54,8 @@ struct RiftStream::Impl {
   std::vector<libusb_transfer*> transfers;
   std::vector<std::vector<uint8_t>> buffers;
   int in_flight = 0;
+  int transfer_errors_in_a_row = 0;
+  std::vector<libusb_transfer*> stalled;  // came back STALL, waiting for clear_stall()
   uint16_t command_id = 1;
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   double last_keep_alive_s = -1e9, last_attempt_s = -1e9;
@@ -101,16 +104,66 @@ struct RiftStream::Impl {
 
   static void LIBUSB_CALL on_transfer(libusb_transfer* t) { static_cast<Impl*>(t->user_data)->completed(t); }
 
+  // A transfer came back. Its status decides: completed -> decode and resubmit; stalled -> wait for the
+  // halt to be cleared (step() does it: no synchronous libusb call inside a callback); a transient error
+  // (timeout, overflow, error) -> resubmit, up to kMaxTransferErrors in a row; no device -> unplugged.
+  static constexpr int kMaxTransferErrors = 20;
   void completed(libusb_transfer* t) {
     --in_flight;
-    if (t->status == LIBUSB_TRANSFER_COMPLETED) {
-      report(t->buffer, static_cast<size_t>(t->actual_length));
-      if (is_connected && libusb_submit_transfer(t) == 0) ++in_flight;
-      else lost("resubmitting the transfer failed");
+    switch (t->status) {
+      case LIBUSB_TRANSFER_COMPLETED:
+        transfer_errors_in_a_row = 0;
+        report(t->buffer, static_cast<size_t>(t->actual_length));
+        resubmit(t);
+        return;
+      case LIBUSB_TRANSFER_CANCELLED:
+        return;
+      case LIBUSB_TRANSFER_NO_DEVICE:
+        lost("the device is gone");
+        return;
+      case LIBUSB_TRANSFER_STALL:
+        stalled.push_back(t);
+        return;
+      default: {
+        {
+          std::lock_guard<std::mutex> lock(mu);
+          ++stats.transfer_errors;
+        }
+        if (++transfer_errors_in_a_row > kMaxTransferErrors) {
+          lost(std::to_string(kMaxTransferErrors) + " transfers in a row failed (" + libusb_error_name(t->status) + ")");
+          return;
+        }
+        resubmit(t);
+      }
+    }
+  }
+
+  void resubmit(libusb_transfer* t) {
+    if (!is_connected) return;
+    const int rc = libusb_submit_transfer(t);
+    if (rc == 0) ++in_flight;
+    else lost(std::string("resubmitting a transfer failed: ") + libusb_strerror(rc));
+  }
+
+  // Endpoint 0x81 halted: clear the halt once, then resubmit every stalled transfer.
+  void clear_stall() {
+    if (stalled.empty() || !is_connected) return;
+    const int rc = libusb_clear_halt(handle, 0x81);
+    {
+      std::lock_guard<std::mutex> lock(mu);
+      ++stats.stalls;
+      repeating_event_locked(StreamEvent::Kind::Stalled, stats.stalls,
+                             rc == 0 ? "endpoint 0x81 stalled; halt cleared, streaming on"
+                                     : std::string("endpoint 0x81 stalled; clearing the halt failed: ") + libusb_strerror(rc));
+    }
+    if (rc != 0) {
+      stalled.clear();
+      lost("the endpoint stalled and its halt could not be cleared");
       return;
     }
-    if (t->status == LIBUSB_TRANSFER_CANCELLED) return;
-    lost(t->status == LIBUSB_TRANSFER_NO_DEVICE ? "the device is gone" : std::string("transfer ") + libusb_error_name(t->status));
+    std::vector<libusb_transfer*> again;
+    again.swap(stalled);
+    for (auto* t : again) resubmit(t);
   }
 
   void lost(const std::string& why) {
@@ -227,13 +280,43 @@ struct RiftStream::Impl {
       return false;
     }
     model = found;
-    auto fail = [&](const char* what, int code) {
-      error = std::string(what) + " on " + where + ": " + libusb_strerror(code) +
-              (code == LIBUSB_ERROR_ACCESS || code == LIBUSB_ERROR_BUSY ? std::string("; ") + kUdevRulesHint : std::string());
+    auto fail = [&](const std::string& what, int code) {
+      error = what + " on " + where + ": " + libusb_strerror(code) +
+              (code == LIBUSB_ERROR_ACCESS ? std::string("; ") + kUdevRulesHint
+               : code == LIBUSB_ERROR_BUSY ? std::string("; interface 0 is in use by another program (another driver or tracker tool): close it")
+                                           : std::string());
       libusb_close(handle);
       handle = nullptr;
       return false;
     };
+    // The layout streaming needs: interface 0 with an interrupt IN endpoint 0x81 large enough for a report.
+    {
+      libusb_config_descriptor* cfg = nullptr;
+      int rc0 = libusb_get_active_config_descriptor(libusb_get_device(handle), &cfg);
+      if (rc0 != 0) return fail("reading the configuration descriptor", rc0);
+      std::string found_eps;
+      bool ok = false;
+      if (cfg->bNumInterfaces >= 1 && cfg->interface[0].num_altsetting >= 1) {
+        const libusb_interface_descriptor& alt = cfg->interface[0].altsetting[0];
+        for (int e = 0; e < alt.bNumEndpoints; ++e) {
+          const libusb_endpoint_descriptor& ep = alt.endpoint[e];
+          char b[48];
+          std::snprintf(b, sizeof b, "%s0x%02x %s", found_eps.empty() ? "" : ", ", ep.bEndpointAddress,
+                        (ep.bmAttributes & 3) == LIBUSB_TRANSFER_TYPE_INTERRUPT ? "interrupt" : (ep.bmAttributes & 3) == LIBUSB_TRANSFER_TYPE_BULK ? "bulk" : "other");
+          found_eps += b;
+          ok |= ep.bEndpointAddress == 0x81 && (ep.bmAttributes & 3) == LIBUSB_TRANSFER_TYPE_INTERRUPT &&
+                ep.wMaxPacketSize >= min_report_size(found);
+        }
+      }
+      libusb_free_config_descriptor(cfg);
+      if (!ok) {
+        error = std::string("not the layout of a Rift tracker on ") + where + ": interface 0 has no interrupt IN endpoint 0x81 of " +
+                std::to_string(min_report_size(found)) + "+ bytes (found: " + (found_eps.empty() ? "no endpoints" : found_eps) + ")";
+        libusb_close(handle);
+        handle = nullptr;
+        return false;
+      }
+    }
     rc = libusb_kernel_driver_active(handle, 0);
     if (rc == 1) {
       if ((rc = libusb_detach_kernel_driver(handle, 0)) != 0) return fail("detaching the kernel driver", rc);
@@ -260,11 +343,14 @@ struct RiftStream::Impl {
       transfers[static_cast<size_t>(i)] = t;
       libusb_fill_interrupt_transfer(t, handle, 0x81, buffers[static_cast<size_t>(i)].data(), static_cast<int>(kRiftReportSize), on_transfer, this, 0);
       if ((rc = libusb_submit_transfer(t)) != 0) {
-        lost(std::string("submitting a transfer: ") + libusb_strerror(rc));
-        break;
+        is_connected = false;
+        release();  // what was submitted comes back cancelled; the handle is closed
+        error = std::string("submitting a transfer on ") + where + ": " + libusb_strerror(rc);
+        return false;
       }
       ++in_flight;
     }
+    transfer_errors_in_a_row = 0;
     return true;
   }
 
@@ -275,6 +361,7 @@ struct RiftStream::Impl {
   // the backend never returns one (1 s), the transfers are left allocated --
   // a small leak, never a use after free -- and the event says so.
   void release() {
+    stalled.clear();  // back from libusb already (not in flight): freed with the rest below
     for (auto* t : transfers)
       if (t && in_flight > 0) libusb_cancel_transfer(t);
     timeval tv{0, 20000};
@@ -307,6 +394,7 @@ void RiftStream::Impl::step(int timeout_ms) {
   if (handle || in_flight > 0) {
     timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
     libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
+    clear_stall();
   } else {
     std::this_thread::sleep_for(std::chrono::milliseconds(timeout_ms));
   }
@@ -323,6 +411,10 @@ void RiftStream::Impl::step(int timeout_ms) {
           ++stats.reconnects;
         }
         event(StreamEvent::Kind::Reconnected, "streaming again");
+      } else if (err.rfind("no Oculus Rift", 0) != 0) {  // found but refused: say why (an absent device says nothing new)
+        std::lock_guard<std::mutex> lock(mu);
+        ++stats.reconnect_failures;
+        repeating_event_locked(StreamEvent::Kind::OpenFailed, stats.reconnect_failures, "reconnecting: " + err);
       }
     }
   }

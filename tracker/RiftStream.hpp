@@ -42,7 +42,7 @@ struct RiftStreamOptions {
 // re-anchor) are reported the 1st, 10th, 100th, ... time, each saying which
 // occurrence it is; the stats count every one.
 struct StreamEvent {
-  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, ClockReanchored, ConsumerBehind, OpenFailed };
+  enum class Kind { Opened, Disconnected, Reconnected, MalformedReport, TimeWentBack, ClockReanchored, ConsumerBehind, Stalled, OpenFailed };
   Kind kind;
   double at_s;         // seconds since the stream was created (wall clock)
   std::string detail;
@@ -58,6 +58,9 @@ struct StreamStats {
   int64_t clock_reanchors = 0;         // device restarts and timestamp jumps (DeviceClock: reanchored)
   int64_t gaps = 0;                    // breaks in the samples (a reconnection, a lost run of reports) bridged by holding the pose
   int64_t dropped_unconsumed = 0;      // samples dropped because the consumer fell max_pending_s behind
+  int64_t stalls = 0;                  // endpoint halts cleared
+  int64_t transfer_errors = 0;         // transfers that failed transiently and were resubmitted
+  int64_t reconnect_failures = 0;      // a device found but refused while reconnecting
   double gap_s = 0;                    // their total length, s
   bool kernel_driver_detached = false;
 };
@@ -77,6 +80,9 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("clock_reanchors", s.clock_reanchors);
   f("gaps", s.gaps);
   f("dropped_unconsumed", s.dropped_unconsumed);
+  f("stalls", s.stalls);
+  f("transfer_errors", s.transfer_errors);
+  f("reconnect_failures", s.reconnect_failures);
   f("disconnects", s.disconnects);
   f("reconnects", s.reconnects);
   f("keep_alives", s.keep_alives);

@@ -35,7 +35,8 @@ void drop(Urb& u) {
   u.buffer = u.data = nullptr;
 }
 
-std::string descriptors_hex(tracker::RiftModel m) {
+std::string descriptors_hex(tracker::RiftModel m, RiftEmulator::Layout layout) {
+  const bool rift = layout == RiftEmulator::Layout::Rift;
   const uint16_t pid = m == tracker::RiftModel::DK1 ? tracker::kDk1Product : tracker::kDk2Product;
   const uint8_t d[] = {
       // device: USB 2.0, class per interface, 64-byte EP0, vendor 0x2833, product, one configuration
@@ -46,8 +47,8 @@ std::string descriptors_hex(tracker::RiftModel m) {
       9, 4, 0, 0, 1, 3, 0, 0, 0,
       // HID descriptor
       9, 0x21, 0x11, 0x01, 0, 1, 0x22, 0x40, 0x00,
-      // endpoint 0x81: interrupt IN, 64 bytes, every 1 ms
-      7, 5, 0x81, 3, 64, 0, 1};
+      // endpoint 0x81: interrupt IN, 64 bytes, every 1 ms (or, not a Rift: bulk OUT 0x02)
+      7, 5, static_cast<uint8_t>(rift ? 0x81 : 0x02), static_cast<uint8_t>(rift ? 3 : 2), 64, 0, 1};
   std::string s;
   char b[3];
   for (uint8_t x : d) {
@@ -65,7 +66,8 @@ struct RiftEmulator::State {
   UMockdevTestbed* testbed = nullptr;
   UMockdevIoctlBase* handler = nullptr;
   mutable std::mutex mu;
-  bool connected = true, detached = false, claimed = false;
+  bool connected = true, detached = false, claimed = false, claimed_elsewhere = false, halted = false;
+  int64_t clear_halt_count = 0;
   int cut_remaining = 0;        // reports still to cut short
   size_t report_length = tracker::kRiftReportSize;
   int claimed_count_next = 0;   // > 0: the next report's sample count
@@ -151,11 +153,15 @@ struct RiftEmulator::State {
         return reply(-1, ENOTTY);
       }
       case USBDEVFS_CLAIMINTERFACE:
-        if (!detached) return reply(-1, EBUSY);  // usbhid still has it
+        if (!detached || claimed_elsewhere) return reply(-1, EBUSY);  // usbhid, or another program, has it
         claimed = true;
         return reply(0, 0);
       case USBDEVFS_RELEASEINTERFACE:
         claimed = false;
+        return reply(0, 0);
+      case USBDEVFS_CLEAR_HALT:
+        halted = false;
+        ++clear_halt_count;
         return reply(0, 0);
       case USBDEVFS_SUBMITURB: {
         Urb u;
@@ -221,6 +227,10 @@ struct RiftEmulator::State {
         if (d != done.end()) {
           u = *d;
           done.erase(d);
+        } else if (connected && halted && i != interrupts.end()) {
+          u = *i;  // a halted endpoint fails every transfer until the halt is cleared
+          interrupts.erase(i);
+          u.status = -EPIPE;
         } else if (!connected && i != interrupts.end()) {
           u = *i;  // unplugged: what was in flight comes back failed
           interrupts.erase(i);
@@ -257,7 +267,8 @@ gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self
 }
 }  // namespace
 
-RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth) : s_(std::make_unique<State>()) {
+RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout)
+    : s_(std::make_unique<State>()) {
   s_->model = model;
   // The IMU readings of the motion, as reports with one sample each; the
   // counters start just before they wrap.
@@ -291,7 +302,7 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
                           std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") +
                           "\\n\n"
                           "H: descriptors=" +
-                          descriptors_hex(model) + "\n";
+                          descriptors_hex(model, layout) + "\n";
   if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err))
     throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot add the device"));
 }
@@ -334,6 +345,21 @@ void RiftEmulator::inject_sample_count(int count) {
   if (count < 1 || count > 255) throw std::invalid_argument("a sample count is 1..255");
   std::lock_guard<std::mutex> lock(s_->mu);
   s_->claimed_count_next = count;
+}
+
+void RiftEmulator::stall() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->halted = true;
+}
+
+void RiftEmulator::hold_interface_elsewhere() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->claimed_elsewhere = true;
+}
+
+int64_t RiftEmulator::clear_halts() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->clear_halt_count;
 }
 
 void RiftEmulator::restart_counter() {

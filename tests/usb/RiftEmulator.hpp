@@ -23,8 +23,9 @@ namespace arp::test {
 
 class RiftEmulator {
  public:
+  enum class Layout { Rift, NoInterruptIn };  // NoInterruptIn: interface 0's one endpoint is bulk OUT 0x02
   // truth: the head motion the IMU follows (samples with angular velocity, 1 kHz or finer).
-  RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth);
+  RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout = Layout::Rift);
   ~RiftEmulator();
 
   void unplug();
@@ -34,6 +35,9 @@ class RiftEmulator {
   void set_report_length(size_t bytes);      // a DK1 may send 62 bytes instead of 64
   void inject_sample_count(int count);       // the next report claims `count` samples (its own is the latest)
   void restart_counter();                    // the device restarts: its timestamp counter starts again at 0
+  void stall();                              // endpoint 0x81 halts: transfers fail (EPIPE) until a CLEAR_HALT
+  void hold_interface_elsewhere();           // another program has claimed interface 0 (EBUSY)
+  int64_t clear_halts() const;
   // Feature reports received (each as sent: report id first).
   std::vector<std::vector<uint8_t>> feature_reports() const;
   int64_t reports_sent() const;

@@ -241,3 +241,47 @@ TEST(RiftStream, AConsumerSlowerThanTheDeviceGetsTheNewestWithinTheBound) {
   none.max_pending_s = 0;
   EXPECT_THROW(RiftStream{none}, std::invalid_argument);
 }
+
+// The endpoint halts mid-stream: the halt is cleared once, the transfers
+// resubmitted, and streaming goes on without a disconnect.
+TEST(RiftStream, AStalledEndpointIsClearedAndStreamingGoesOn) {
+  const auto truth = yaw_90(4.0);
+  test::RiftEmulator dk2(RiftModel::DK2, truth);
+  RiftStream r;
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  std::vector<PoseSample> poses;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().samples >= 200; }, poses, "200 samples"));
+  dk2.stall();
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().stalls >= 1; }, poses, "the stall"));
+  const int64_t after_stall = r.stats().samples;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&] { return r.stats().samples >= after_stall + 200; }, poses, "200 samples after the stall"));
+  EXPECT_GE(dk2.clear_halts(), 1);
+  EXPECT_EQ(r.stats().disconnects, 0);
+  EXPECT_TRUE(r.connected());
+  bool said = false;
+  for (const auto& e : r.take_events()) said |= e.kind == StreamEvent::Kind::Stalled && e.detail.find("halt cleared") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+// Interface 0 claimed by another program: a clear answer, not the udev hint.
+TEST(RiftStream, AnInterfaceInUseElsewhereIsSaidSo) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(1.0));
+  dk1.hold_interface_elsewhere();
+  RiftStream r;
+  std::string err;
+  EXPECT_FALSE(r.open(err));
+  EXPECT_NE(err.find("in use by another program"), std::string::npos) << err;
+  EXPECT_EQ(err.find("udev"), std::string::npos) << err;
+}
+
+// A device with the Rift's ids but not its layout is refused with what was found.
+TEST(RiftStream, ADeviceWithoutTheInterruptEndpointIsRefused) {
+  test::RiftEmulator odd(RiftModel::DK1, yaw_90(1.0), test::RiftEmulator::Layout::NoInterruptIn);
+  RiftStream r;
+  std::string err;
+  EXPECT_FALSE(r.open(err));
+  EXPECT_NE(err.find("no interrupt IN endpoint 0x81"), std::string::npos) << err;
+  EXPECT_NE(err.find("found: 0x02 bulk"), std::string::npos) << err;
+  EXPECT_FALSE(odd.interface_claimed());
+}
