@@ -32,20 +32,39 @@ double angle_between_deg(const glm::dquat& a, const glm::dquat& b) {
   return glm::degrees(2.0 * std::acos(d));
 }
 
-Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)) {}
+Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)) {
+  if (!(p.tilt_gain >= 0 && p.tilt_gain <= 1000) || !(p.tilt_still_rate > 0) || !(p.bias_still_rate > 0) ||
+      !(p.bias_time_constant > 0) || !(p.max_bias >= 0) || !(p.still_filter_s > 0) || !(p.gravity_tolerance > 0))
+    throw std::invalid_argument("fusion parameters out of range (tracker/Fusion.hpp states each range)");
+}
 
 void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt)) return;  // a repeated or backward timestamp adds nothing
   rate_ = gyro - bias_;
   q_ = integrate(q_, rate_, dt);
-  const double a = glm::length(accel);
-  const bool still = std::abs(a - kStandardGravity) < p_.gravity_tolerance && glm::length(rate_) < p_.still_rate;
-  if (!still) return;
-  if (p_.estimate_bias) {
-    const double k = std::min(1.0, dt / p_.bias_time_constant);
-    bias_ += k * (gyro - bias_);  // still: the true rate is about zero, the reading is the bias
+  if (!lp_started_) {
+    gyro_lp_ = gyro;
+    lp_started_ = true;
+  } else {
+    gyro_lp_ += std::min(1.0, dt / p_.still_filter_s) * (gyro - gyro_lp_);
   }
-  if (p_.correct_tilt) {
+  const double a = glm::length(accel);
+  const bool gravity_only = std::abs(a - kStandardGravity) < p_.gravity_tolerance;
+  if (!gravity_only) return;
+  // Still below `rate`: slow on average (the low-passed rate) and now (the reading itself, below
+  // tilt_still_rate: the average lags, and as a fast movement reverses it passes zero while the head
+  // still turns).
+  const double average = glm::length(gyro_lp_ - bias_), now = glm::length(rate_);
+  auto still_below = [&](double rate) { return average < rate && now < p_.tilt_still_rate; };
+  if (p_.estimate_bias && still_below(p_.bias_still_rate)) {
+    const double k = std::min(1.0, dt / p_.bias_time_constant);
+    // The true rate is about zero, the reading is the bias. The raw reading, not the low-passed one,
+    // whose tail after a movement stops would be learned as bias (0.02 deg/s in the drift scenario).
+    bias_ += k * (gyro - bias_);
+    const double b = glm::length(bias_);
+    if (b > p_.max_bias) bias_ *= p_.max_bias / b;
+  }
+  if (p_.correct_tilt && still_below(p_.tilt_still_rate)) {
     const glm::dvec3 up_measured = accel / a;
     const glm::dvec3 up_predicted = glm::conjugate(q_) * glm::dvec3(0.0, 1.0, 0.0);
     const glm::dvec3 axis = glm::cross(up_measured, up_predicted);

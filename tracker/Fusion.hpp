@@ -1,19 +1,32 @@
 // Orientation fusion as in the open Rift drivers: integrate the gyroscope as
-// a quaternion; when the head is still (|accel| close to g and the corrected
-// rate small) pull the tilt toward the measured gravity by a fixed fraction of
-// the error per second, and learn the gyroscope bias by low-pass filtering
-// the still readings. Yaw has no absolute reference without the magnetometer:
-// its drift is what a residual bias leaves (docs/tracker.md has the figures).
+// a quaternion; when the head is still pull the tilt toward the measured
+// gravity by a fixed fraction of the error per second, and learn the
+// gyroscope bias from the still readings. Yaw has no absolute reference
+// without the magnetometer: its drift is what a residual bias leaves
+// (docs/tracker.md has the figures).
+//
+// The bias model. To a gyroscope and an accelerometer, a steady slow turn
+// about the vertical and a gyro bias look alike: both are a constant rate with
+// gravity unchanged. So the bias is learned only from readings slower than
+// `bias_still_rate` (a turn slower than that is taken in part for bias), only
+// slowly (time constant `bias_time_constant`: a slow turn held for T seconds
+// at rate w loses about w T^2 / (2 tau)), and bounded: its size never exceeds
+// `max_bias`. A larger real bias is not learned (its drift stays). Stillness
+// is judged on the rate low-passed over `still_filter_s`, so white gyro noise
+// does not flip it sample by sample.
 #pragma once
 #include "PoseSample.hpp"
 
 namespace arp::tracker {
 
 struct FusionParams {
-  double tilt_gain = 0.5;          // fraction of the tilt error removed per second while still
-  double bias_time_constant = 2.0; // s: low-pass time constant of the bias estimate while still
-  double still_rate = 0.1;         // rad/s: corrected rate below which the head counts as still
-  double gravity_tolerance = 0.3;  // m/s^2: | |a| - g | below which the accelerometer sees only gravity
+  double tilt_gain = 0.5;           // 1/s: fraction of the tilt error removed per second while still (0..1000)
+  double tilt_still_rate = 0.1;     // rad/s: corrected rate below which gravity corrects the tilt (> 0)
+  double bias_still_rate = 0.02;    // rad/s (1.15 deg/s): corrected rate below which the bias is learned (> 0)
+  double bias_time_constant = 120;  // s: low-pass time constant of the bias estimate while still (> 0)
+  double max_bias = 0.02;           // rad/s: the largest bias learned (its norm is clamped) (>= 0)
+  double still_filter_s = 0.05;     // s: time constant of the low-passed rate stillness is judged on (> 0)
+  double gravity_tolerance = 0.3;   // m/s^2: | |a| - g | below which the accelerometer sees only gravity (> 0)
   bool correct_tilt = true;
   bool estimate_bias = true;
 };
@@ -31,6 +44,8 @@ class Fusion {
   FusionParams p_;
   glm::dquat q_;
   glm::dvec3 bias_{0.0}, rate_{0.0};
+  glm::dvec3 gyro_lp_{0.0};  // the raw gyro, low-passed over still_filter_s
+  bool lp_started_ = false;
 };
 
 // Rotation of q by a head-frame angular velocity w held for dt seconds.

@@ -5,6 +5,7 @@
 // plus white noise. Seeded, so every figure made from it is reproducible.
 #pragma once
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "PoseSample.hpp"
@@ -28,5 +29,10 @@ constexpr double kStandardGravity = 9.80665;
 
 // Needs samples that carry angular velocity (as SyntheticMotion's do).
 std::vector<ImuReading> synthesize_imu(const std::vector<PoseSample>& truth, const ImuNoise& noise);
+
+// One reading for one truth sample, drawing from `rng` (seeded with noise.seed) in a fixed order:
+// gyro x, y, z, then accel x, y, z. synthesize_imu is this over a trace; a stream of any length
+// (an hour of samples) calls it sample by sample in constant memory.
+ImuReading imu_reading(const PoseSample& truth, const ImuNoise& noise, std::mt19937_64& rng);
 
 }  // namespace arp::tracker
