@@ -70,6 +70,7 @@ LiveFrame LiveLoop::next() {
     if (usb_) usb_->poll(got_, 1);
     else std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
+  if (usb_) usb_->poll(got_, 0);  // a late frame still takes every sample that arrived (frames are dropped, never samples)
   LiveFrame f;
   f.index = k;
   f.late = Clock::now() > due + std::chrono::duration<double>(period_s);

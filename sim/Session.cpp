@@ -260,8 +260,9 @@ void Session::build_memories() {
 }
 
 // Live: before each frame, take what the device has sent until the frame's
-// end on the wall clock (the run goes at the display's pace), placed on the
-// run's timeline; an unplug holds the last pose and the run goes on.
+// end on the wall clock (the run goes at the display's pace, or slower: then
+// it takes what has arrived), placed on the run's timeline by device time; an
+// unplug holds the last pose and the run goes on.
 void Session::build_live_input(stage::TimedInputs& in) {
   const auto wall0 = Clock::now();
   const int64_t offset_ps = start_ps_ - live_->now_ps();  // a pose arriving as the first frame starts is placed at its start
@@ -273,8 +274,13 @@ void Session::build_live_input(stage::TimedInputs& in) {
       if (wall_ps >= until_ps) break;
       live_->poll(*got, static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)));
     }
+    // A run slower than the display has no time left here: it still takes everything the device sent
+    // (placed by device time, so later frames find it), or the samples would wait in the stream's bound.
+    live_->poll(*got, 0);
     for (const auto& e : live_->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
-    live_samples_ += append_live_poses(stream_, *got, offset_ps, motion_source_);
+    const int64_t appended = append_live_poses(stream_, *got, offset_ps, motion_source_);
+    live_samples_ += appended;
+    live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // sent while the run was being set up
     got->clear();
   };
 }
@@ -476,7 +482,15 @@ RunSummary Session::run() {
   if (live_) {
     tracker::StreamStats st;
     live_->usb_stats(st);
-    r["live"] = {{"source", motion_source_}, {"samples", live_samples_}};
+    // What arrived after the last frame was taken is counted too, so every sample the device sent up to
+    // the stats is accounted for: samples + samples_before_start + samples_after_end + device_dropped_unconsumed
+    // >= device_samples.
+    std::vector<tracker::PoseSample> rest;
+    live_->poll(rest, 0);
+    r["live"] = {{"source", motion_source_},
+                 {"samples", live_samples_},
+                 {"samples_before_start", live_before_start_},
+                 {"samples_after_end", rest.size()}};
     tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });
     r["live"]["device_gap_s"] = st.gap_s;
     r["live"]["connected_at_end"] = live_->connected();

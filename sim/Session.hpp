@@ -79,7 +79,7 @@ class Session {
   std::unique_ptr<TruthProbe> probe_;
   std::unique_ptr<FrameLog> log_;
   std::string vcd_final_, vcd_tmp_base_;
-  int64_t images_ = 0, live_samples_ = 0, baseline_triangles_ = 0;
+  int64_t images_ = 0, live_samples_ = 0, live_before_start_ = 0, baseline_triangles_ = 0;
   double host_wall_s_ = 0;
 };
 

@@ -118,3 +118,34 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
     EXPECT_NE(run.output.find("live input"), std::string::npos) << run.output;
   }
 }
+
+namespace {
+// The integer after "key": in a pretty-printed JSON report (-1 if absent).
+int64_t json_int(const std::string& text, const std::string& key) {
+  const size_t at = text.find("\"" + key + "\": ");
+  return at == std::string::npos ? -1 : std::stoll(text.substr(at + key.size() + 4));
+}
+}  // namespace
+
+// A run slower than the display (the functional model at its default size renders ~15 frames a second
+// here against the display's 60): every frame is late, yet it takes what the device sent -- before, a late
+// frame took nothing (0 of 1001 samples reached the pipeline).
+TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0));
+  arp::test::TempDir d;
+  const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 20 --every 0 --report " +
+                                          d.file("slow.json"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::ifstream in(d.file("slow.json"));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string all = ss.str();
+  ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
+  const std::string rep = all.substr(all.find("\"live\""));
+  const int64_t taken = json_int(rep, "samples"), before = json_int(rep, "samples_before_start"), after = json_int(rep, "samples_after_end"),
+                sent = json_int(rep, "device_samples"), dropped = json_int(rep, "device_dropped_unconsumed");
+  ASSERT_GT(sent, 100) << rep.substr(0, 800);
+  EXPECT_EQ(dropped, 0);
+  EXPECT_GE(taken + before + after + dropped, sent);  // every sample accounted for
+  EXPECT_GT(taken, (sent - before) / 2);              // most of the run's during the run, not only after its end
+}
