@@ -6,5 +6,7 @@ namespace arp {
 
 // The largest resident set this process has had (getrusage's ru_maxrss), in bytes.
 int64_t peak_resident_bytes();
+// The resident set now (/proc/self/statm), in bytes; 0 where it cannot be read.
+int64_t current_resident_bytes();
 
 }  // namespace arp

@@ -12,6 +12,7 @@ namespace arp::sim {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr int64_t kMotionAheadPs = 1'000'000'000'000;  // generated motion is kept a second around the frame (every latch lead)
 
 const LiveSpec& checked(const LiveSpec& s) {
   if (!(s.seconds >= 0) || s.seconds > 24 * 3600) throw InputError("--seconds", "", "must be 0 (until the window closes) .. a day");
@@ -42,22 +43,32 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
       m.motion = "shake";
       m.peak = 100;
     }
-    const double span = spec_.seconds > 0 ? spec_.seconds + 1.0 : 3600.0;
-    source_ = tracker::recorded_source(m.make(0.0, span), "synthetic " + m.motion);  // the motion starts with frame 0
+    // Generated as the frames need it (a window ahead, trimmed behind): the loop starts at once and its
+    // memory stays flat however long it runs. Until stopped: a day of motion, then its last pose held.
+    const double span = (spec_.seconds > 0 ? spec_.seconds : 24 * 3600.0) + 1.0;
+    motion_ = std::make_unique<tracker::MotionGenerator>(m.generator(0.0, span));  // the motion starts with frame 0
+    source_name_ = "synthetic " + m.motion;
+    std::vector<tracker::PoseSample> first;
+    motion_->take_through(frame_start_ps(1) + kMotionAheadPs, first);
+    stream_ = dp::OrientationStream(to_orientation_samples(first), source_name_);
   }
-  source_name_ = source_->describe();
-  if (!source_->live()) {
-    source_->poll(got_, 0);
-    stream_ = dp::OrientationStream(to_orientation_samples(got_), source_name_);
-    got_.clear();
+  if (source_) {
+    source_name_ = source_->describe();
+    if (!source_->live()) {
+      source_->poll(got_, 0);
+      stream_ = dp::OrientationStream(to_orientation_samples(got_), source_name_);
+      got_.clear();
+    }
+    usb_ = source_->live() ? source_.get() : nullptr;
   }
-  usb_ = source_->live() ? source_.get() : nullptr;
   spec_.memories.fill(mem_, dp::Quat{}, memory_source_);
   wall0_ = Clock::now();
   usb_offset_ = usb_ ? -usb_->now_ps() : 0;
 }
 
 LiveLoop::~LiveLoop() = default;
+
+int64_t LiveLoop::frame_start_ps(int64_t k) const { return model_.timing().cycles_to_ps(model_.timing().frame_start_cycle(k)); }
 
 std::vector<std::string> LiveLoop::take_events() { return usb_ ? usb_->take_events() : std::vector<std::string>{}; }
 
@@ -79,6 +90,12 @@ LiveFrame LiveLoop::next() {
     append_live_poses(stream_, got_, usb_offset_, source_name_);
     got_.clear();
     f.disconnected = !usb_->connected();
+  }
+  if (motion_) {  // the generated motion's window: through the next frame and a second ahead, a second behind
+    std::vector<tracker::PoseSample> more;
+    motion_->take_through(frame_start_ps(k + 2) + kMotionAheadPs, more);
+    if (!more.empty()) stream_.append(to_orientation_samples(more), source_name_);
+    stream_.discard_before(frame_start_ps(k) - kMotionAheadPs);
   }
   RenderOptions ro;
   ro.threads = spec_.threads;

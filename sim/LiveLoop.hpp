@@ -57,7 +57,10 @@ class LiveLoop {
   LiveSpec spec_;
   FunctionalModel model_;
   int64_t frames_;
-  std::unique_ptr<tracker::PoseSource> source_;
+  int64_t frame_start_ps(int64_t k) const;
+
+  std::unique_ptr<tracker::PoseSource> source_;    // a trace or USB
+  std::unique_ptr<tracker::MotionGenerator> motion_;  // or synthetic motion, generated as the frames need it
   tracker::PoseSource* usb_ = nullptr;
   std::string source_name_, memory_source_;
   dp::OrientationStream stream_;
