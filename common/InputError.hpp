@@ -16,9 +16,11 @@ inline std::string quoted(std::string s) {
 
 class InputError : public std::runtime_error {
  public:
+  // The place is quoted (at most kQuoteChars): it can come from the input itself (a JSON key, a --set
+  // key), and a message must never become a flood.
   InputError(std::string source, std::string place, std::string reason)
-      : std::runtime_error(compose(source, place, reason)),
-        source_(std::move(source)), place_(std::move(place)), reason_(std::move(reason)) {}
+      : std::runtime_error(compose(source, quoted(place), reason)),
+        source_(std::move(source)), place_(quoted(std::move(place))), reason_(std::move(reason)) {}
   const std::string& source() const { return source_; }
   const std::string& place() const { return place_; }
   const std::string& reason() const { return reason_; }
