@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Fuzzes every parser of untrusted input with libFuzzer (clang, ASan + UBSan):
-# the targets of tests/fuzz/FuzzTargets, each for a CPU budget of SECONDS
+# the targets of tests/fuzz/FuzzTargets, each for a budget of SECONDS of wall time
 # (default 60), starting from its corpus tests/fuzz/corpus/<target> (the
 # project's own files and inputs kept from earlier runs; the model target also
 # from assimp-testmodels). The model target runs assimp in this process,
 # watched by libFuzzer's -timeout and -rss_limit_mb (arpsim itself runs it in
 # the guarded helper). Every run's executions and findings are appended to
-# tests/fuzz/fuzz-log.csv, the ledger docs/robustness.md sums.
+# tests/fuzz/fuzz-log.csv, the ledger docs/robustness.md sums (its seconds: what
+# the target ran, less than the budget when a finding stopped it; rows before
+# commit 2026-11-23 "fuzz.sh: seconds run" hold the budget).
 #
 # Usage: scripts/fuzz.sh [--merge] [SECONDS] [TARGET...]
 #   --merge   keep the new inputs that add coverage in tests/fuzz/corpus (minimised)
@@ -60,8 +62,12 @@ for t in "${targets[@]}"; do
   log=build-fuzz/$t.log
   old_findings=$(mktemp); ls "$findings" > "$old_findings"
   before=$(wc -l < "$old_findings")
-  ASAN_OPTIONS=detect_leaks=$leaks ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -detect_leaks="$leaks" "${mode[@]}" \
+  # -timeout: 30 s, not 10: a run beside a build (even at nice 19) was starved into a 16 s "hang" on a
+  # 139-byte trace that replays in milliseconds.
+  started=$(date +%s)
+  ASAN_OPTIONS=detect_leaks=$leaks ARPSIM_FUZZ_TARGET=$t "$fuzzer" -max_total_time="$budget" -max_len="$max_len" -timeout=30 -rss_limit_mb=2048 -detect_leaks="$leaks" "${mode[@]}" \
     -print_final_stats=1 -artifact_prefix="$findings/" "$work" "${extra[@]}" > "$log" 2>&1 || true
+  ran=$(($(date +%s) - started))  # the seconds it ran: less than the budget when a finding stopped it
   runs=$(awk '/stat::number_of_executed_units/ {print $2}' "$log" | tail -1)
   # (fork mode prints no final stats: its last status line has the count)
   [ -n "$runs" ] || runs=$(grep -o '^#[0-9]*' "$log" | tail -1 | tr -d '#')
@@ -79,8 +85,8 @@ for t in "${targets[@]}"; do
   fi
   found=$(($(ls "$findings" | wc -l) - before))
   rm -f "$old_findings"
-  printf '%-8s %8s %14s %9s %10s\n' "$t" "$budget" "${runs:-?}" "$found" "$contained"
-  echo "$(date -u +%F),$commit,$machine,$t,$budget,${runs:-0},$found,$contained" >> "$ledger"
+  printf '%-8s %8s %14s %9s %10s\n' "$t" "$ran" "${runs:-?}" "$found" "$contained"
+  echo "$(date -u +%F),$commit,$machine,$t,$ran,${runs:-0},$found,$contained" >> "$ledger"
   if ((found > 0)); then status=1; echo "  finding(s) in $findings (log: $log)"; fi
   if ((merge)); then  # adds to the first folder only what brings new coverage
     ARPSIM_FUZZ_TARGET=$t "$fuzzer" -merge=1 -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
