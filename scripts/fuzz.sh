@@ -89,7 +89,7 @@ for t in "${targets[@]}"; do
   echo "$(date -u +%F),$commit,$machine,$t,$ran,${runs:-0},$found,$contained" >> "$ledger"
   if ((found > 0)); then status=1; echo "  finding(s) in $findings (log: $log)"; fi
   if ((merge)); then  # adds to the first folder only what brings new coverage
-    ARPSIM_FUZZ_TARGET=$t "$fuzzer" -merge=1 -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+    ARPSIM_FUZZ_TARGET=$t "$fuzzer" -merge=1 -max_len="$max_len" -timeout=30 -rss_limit_mb=2048 \
       tests/fuzz/corpus/"$t" "$work" >> "$log" 2>&1 || true
   fi
 done

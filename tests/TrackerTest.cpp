@@ -491,6 +491,28 @@ TEST(DeviceClock, AForwardJumpReanchorsAndTimeStaysMonotonic) {
   EXPECT_EQ(e.time_ps, 302 * kMs);
 }
 
+// The report the clock was anchored at arrived 400 ms late (a busy host, a
+// burst of queued reports): the device's time then leads every later arrival.
+// One re-anchor; the reports until the new segment passes the last time are
+// held 1 ps apart (their samples kept), then time follows the arrivals.
+TEST(DeviceClock, ALateAnchorIsCorrectedOnceWithoutGoingBack) {
+  DeviceClock c(16, kMs);
+  c.map(0, 400 * kMs);
+  int held = 0;
+  int64_t last = 400 * kMs;
+  for (int64_t k = 1; k <= 1000; ++k) {
+    const auto m = c.map(static_cast<uint64_t>(k), k * kMs);
+    ASSERT_GT(m.time_ps, last) << k;
+    last = m.time_ps;
+    held += m.held;
+    if (k > 400) {
+      ASSERT_EQ(m.time_ps, k * kMs) << k;
+    }
+  }
+  EXPECT_EQ(held, 400);
+  EXPECT_EQ(c.reanchors(), 1);
+}
+
 // A counter that stops while reports keep coming: held for max_held_reports
 // reports, then re-anchored, so the pose freezes 50 ms at most.
 TEST(DeviceClock, AStuckCounterReanchorsAfterTheHeldLimit) {

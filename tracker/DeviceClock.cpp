@@ -16,13 +16,18 @@ DeviceClock::DeviceClock(int counter_bits, int64_t tick_ps, const DeviceClockLim
     throw std::invalid_argument("device clock limits: spans must be positive, max_held_reports at least 1");
 }
 
+int64_t DeviceClock::saturated(double ps) {
+  constexpr double kMax = 9.2e18;  // inside int64_t's range
+  return static_cast<int64_t>(std::llround(std::max(-kMax, std::min(kMax, ps))));
+}
+
 int64_t DeviceClock::time_of_ticks() const {
   const double device_ps = static_cast<double>(ticks_) * static_cast<double>(tick_ps_);
-  return anchor_ps_ + std::llround(device_ps * (1.0 + skew_));
+  return saturated(static_cast<double>(anchor_ps_) + device_ps * (1.0 + skew_));
 }
 
 void DeviceClock::reanchor(int64_t arrival_ps) {
-  anchor_ps_ = std::max(arrival_ps, last_time_ps_ + tick_ps_);
+  anchor_ps_ = arrival_ps;
   ticks_ = 0;
   held_run_ = 0;
   n_ = sx_ = sy_ = sxx_ = sxy_ = 0;
@@ -31,7 +36,7 @@ void DeviceClock::reanchor(int64_t arrival_ps) {
 
 DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   counter &= mask_;
-  Mapped m{0, false, false, false, 0};
+  Mapped m{0, false, false, false, false, 0};
   if (!started_) {
     started_ = true;
     anchor_ps_ = arrival_ps;
@@ -46,7 +51,7 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
         m.time_ps = last_time_ps_;
         return m;
       }
-      m.jump_ps = -static_cast<int64_t>(std::min<uint64_t>(back, uint64_t{1} << 40)) * tick_ps_;
+      m.jump_ps = saturated(-static_cast<double>(back) * static_cast<double>(tick_ps_));
       reanchor(arrival_ps);
       m.reanchored = true;
     } else {
@@ -55,7 +60,7 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
       held_run_ = 0;
       const int64_t t = time_of_ticks();
       if (static_cast<double>(t - arrival_ps) > limits_.lead_tolerance_s * 1e12) {  // the device's time ran ahead of the host's
-        m.jump_ps = t - std::max(arrival_ps, last_time_ps_ + tick_ps_);
+        m.jump_ps = t - arrival_ps;
         reanchor(arrival_ps);
         m.reanchored = true;
       }
@@ -72,8 +77,17 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   sxy_ += device_ps * y;
   const double var = sxx_ - sx_ * sx_ / n_;
   if (device_ps >= limits_.min_skew_span_s * 1e12 && var > 0) skew_ = (sxy_ - sx_ * sy_ / n_) / var - 1.0;
+  // Monotonic: after a re-anchor to an arrival before the last time given (the device had led the
+  // host), reports are held at the last time until the new segment passes it.
   m.time_ps = time_of_ticks();
-  last_time_ps_ = m.time_ps;
+  if (given_ && m.time_ps <= last_time_ps_) {
+    m.held = true;
+    m.time_ps = last_time_ps_ + 1;  // 1 ps on: still monotonic, the report's samples are not lost
+    last_time_ps_ = m.time_ps;
+  } else {
+    last_time_ps_ = m.time_ps;
+    given_ = true;
+  }
   return m;
 }
 

@@ -17,9 +17,14 @@
 //     report's arrival by more than `lead_tolerance_s` jumped (the tolerance
 //     covers the latency of the report the clock was anchored at);
 // and in the last two cases the clock re-anchors: a new segment starts at the
-// report's arrival (never before the last time given plus one tick), so the
-// timeline stays monotonic and carries on with the host's clock; the skew
-// estimate is kept until the new segment has its own.
+// report's arrival and carries on with the host's clock; the skew estimate is
+// kept until the new segment has its own. The timeline stays monotonic: when
+// the arrival is before the last time given (the device had led the host: a
+// jump, or an anchor report that arrived late), reports are `held`: each is
+// given 1 ps after the last time until the new segment passes it. Their
+// samples are kept (the stream fuses them over the device's own period), only
+// their times are compressed, once, instead of a timeline ahead of the host
+// for good.
 #pragma once
 #include <cstdint>
 
@@ -41,6 +46,7 @@ class DeviceClock {
     bool wrapped;         // the counter wrapped since the last report
     bool backwards;       // a stale report: its time is held at the last one
     bool reanchored;      // the device restarted or jumped: time carries on from the arrival
+    bool held;            // after a re-anchor behind the last time given: 1 ps after it, until the clock passes it
     int64_t jump_ps;      // when re-anchored: device time's step against the timeline's (negative: back)
   };
   // counter: the report's timestamp field; arrival_ps: when it arrived on the simulated timeline.
@@ -55,6 +61,7 @@ class DeviceClock {
  private:
   void reanchor(int64_t arrival_ps);
   int64_t time_of_ticks() const;
+  static int64_t saturated(double ps);  // rounded, clamped inside int64_t's range
 
   uint64_t mask_;
   int64_t tick_ps_;
@@ -64,6 +71,7 @@ class DeviceClock {
   int64_t ticks_ = 0;            // unwrapped device ticks since the anchor
   int64_t anchor_ps_ = 0;        // the anchor's arrival
   int64_t last_time_ps_ = 0;     // the last time given out
+  bool given_ = false;           // ... once there is one
   int held_run_ = 0;             // reports in a row without the counter advancing
   int64_t reanchors_ = 0;
   double skew_ = 0.0;

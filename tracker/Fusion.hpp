@@ -7,13 +7,14 @@
 //
 // The bias model. To a gyroscope and an accelerometer, a steady slow turn
 // about the vertical and a gyro bias look alike: both are a constant rate with
-// gravity unchanged. So the bias is learned only from readings slower than
-// `bias_still_rate` (a turn slower than that is taken in part for bias), only
-// slowly (time constant `bias_time_constant`: a slow turn held for T seconds
-// at rate w loses about w T^2 / (2 tau)), and bounded: its size never exceeds
-// `max_bias`. A larger real bias is not learned (its drift stays). Stillness
-// is judged on the rate low-passed over `still_filter_s`, so white gyro noise
-// does not flip it sample by sample.
+// gravity unchanged. So the bias is learned only while the rate averaged over
+// `still_filter_s` is below `bias_still_rate` (a turn slower than that is
+// taken in part for bias) and the reading itself below `tilt_still_rate` (the
+// average lags a movement's start and reversal; the reading alone would be
+// too noisy to gate at the bias band), only slowly (time constant
+// `bias_time_constant`: a slow turn held for T seconds at rate w loses about
+// w T^2 / (2 tau)), and bounded: its size never exceeds `max_bias`. A larger
+// real bias is not learned (its drift stays).
 #pragma once
 #include "PoseSample.hpp"
 
@@ -22,7 +23,7 @@ namespace arp::tracker {
 struct FusionParams {
   double tilt_gain = 0.5;           // 1/s: fraction of the tilt error removed per second while still (0..1000)
   double tilt_still_rate = 0.1;     // rad/s: corrected rate below which gravity corrects the tilt (> 0)
-  double bias_still_rate = 0.02;    // rad/s (1.15 deg/s): corrected rate below which the bias is learned (> 0)
+  double bias_still_rate = 0.02;    // rad/s (1.15 deg/s): averaged corrected rate below which the bias is learned (> 0)
   double bias_time_constant = 120;  // s: low-pass time constant of the bias estimate while still (> 0)
   double max_bias = 0.02;           // rad/s: the largest bias learned (its norm is clamped) (>= 0)
   double still_filter_s = 0.05;     // s: time constant of the low-passed rate stillness is judged on (> 0)

@@ -7,10 +7,12 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <unordered_set>
 
 #include "DeviceClock.hpp"
 #include "RiftProtocol.hpp"
@@ -51,11 +53,16 @@ struct RiftStream::Impl {
   std::condition_variable arrived;
   std::thread pump;
   std::atomic<bool> stop{false};
+  // Transfers of this connection (all owned: freed by release()), those libusb holds now, and those
+  // back with STALL waiting for clear_stall(). Touched only on the pump thread.
   std::vector<libusb_transfer*> transfers;
-  std::vector<std::vector<uint8_t>> buffers;
-  int in_flight = 0;
+  std::unordered_set<libusb_transfer*> flying;
+  std::vector<libusb_transfer*> stalled;
+  // Transfers of an earlier connection libusb never gave back (see release()): freed when they come
+  // back, their handles closed when none is left.
+  std::unordered_set<libusb_transfer*> abandoned;
+  std::vector<libusb_device_handle*> abandoned_handles;
   int transfer_errors_in_a_row = 0;
-  std::vector<libusb_transfer*> stalled;  // came back STALL, waiting for clear_stall()
   uint16_t command_id = 1;
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   double last_keep_alive_s = -1e9, last_attempt_s = -1e9;
@@ -109,7 +116,11 @@ struct RiftStream::Impl {
   // (timeout, overflow, error) -> resubmit, up to kMaxTransferErrors in a row; no device -> unplugged.
   static constexpr int kMaxTransferErrors = 20;
   void completed(libusb_transfer* t) {
-    --in_flight;
+    if (abandoned.erase(t)) {  // an earlier connection's, back at last: nothing more to do with it
+      libusb_free_transfer(t);
+      return;
+    }
+    flying.erase(t);
     switch (t->status) {
       case LIBUSB_TRANSFER_COMPLETED:
         transfer_errors_in_a_row = 0;
@@ -122,14 +133,14 @@ struct RiftStream::Impl {
         lost("the device is gone");
         return;
       case LIBUSB_TRANSFER_STALL:
-        stalled.push_back(t);
+        if (is_connected) stalled.push_back(t);  // (after a loss release() frees it with the rest)
         return;
       default: {
         {
           std::lock_guard<std::mutex> lock(mu);
           ++stats.transfer_errors;
         }
-        if (++transfer_errors_in_a_row > kMaxTransferErrors) {
+        if (++transfer_errors_in_a_row >= kMaxTransferErrors) {
           lost(std::to_string(kMaxTransferErrors) + " transfers in a row failed (" + libusb_error_name(t->status) + ")");
           return;
         }
@@ -141,7 +152,7 @@ struct RiftStream::Impl {
   void resubmit(libusb_transfer* t) {
     if (!is_connected) return;
     const int rc = libusb_submit_transfer(t);
-    if (rc == 0) ++in_flight;
+    if (rc == 0) flying.insert(t);
     else lost(std::string("resubmitting a transfer failed: ") + libusb_strerror(rc));
   }
 
@@ -168,11 +179,10 @@ struct RiftStream::Impl {
 
   void lost(const std::string& why) {
     if (!is_connected.exchange(false)) return;
-    {
-      std::lock_guard<std::mutex> lock(mu);
-      ++stats.disconnects;
-    }
-    event(StreamEvent::Kind::Disconnected, why + "; holding the last pose, retrying");
+    // Repeating: a device that connects and fails again cycles every reconnect_every_s.
+    std::lock_guard<std::mutex> lock(mu);
+    ++stats.disconnects;
+    repeating_event_locked(StreamEvent::Kind::Disconnected, stats.disconnects, why + "; holding the last pose, retrying");
   }
 
   void report(const uint8_t* data, size_t n) {
@@ -198,11 +208,13 @@ struct RiftStream::Impl {
     }
     if (m.reanchored) {
       ++stats.clock_reanchors;
+      if (m.held) ++stats.clock_held_reports;
       char what[120];
       std::snprintf(what, sizeof what, "the device's timestamp jumped %+.1f ms (a restart or a glitch); time carries on from the host clock",
                     static_cast<double>(m.jump_ps) * 1e-9);
       repeating_event_locked(StreamEvent::Kind::ClockReanchored, stats.clock_reanchors, what);
     }
+    if (m.held && !m.reanchored) ++stats.clock_held_reports;
     constexpr int64_t kSamplePs = 1'000'000'000;  // 1000 Hz
     // Longer than this between two samples is a break (a reconnection, a re-anchor): nothing is known
     // of the head in between, so the pose is held across it rather than the gyro integrated over it.
@@ -210,19 +222,21 @@ struct RiftStream::Impl {
     bool first_after_reanchor = m.reanchored;
     for (int i = 0; i < r.sample_count; ++i) {
       const auto& s = r.samples[static_cast<size_t>(i)];
-      const int64_t t = m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
+      // Held (the clock catching up after a re-anchor): the samples follow the last one 1 ps apart and
+      // are integrated over the device's period, so no motion is lost while the times are compressed.
+      const int64_t t = m.held ? last_sample_ps + 1 : m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
       if (fusion_started && t <= last_sample_ps) continue;  // already fused (overlapping counts)
       const glm::dvec3 gyro(gyro_rad_s(s.gyro[0]), gyro_rad_s(s.gyro[1]), gyro_rad_s(s.gyro[2]));
       const glm::dvec3 accel(accel_m_s2(s.accel[0]), accel_m_s2(s.accel[1]), accel_m_s2(s.accel[2]));
-      int64_t dt_ps = fusion_started ? t - last_sample_ps : kSamplePs;
-      if (first_after_reanchor) {
-        dt_ps = kSamplePs;  // the timeline moved to the arrival; the device sampled at its own period
-        first_after_reanchor = false;
-      } else if (dt_ps > kGapPs) {
+      int64_t dt_ps = fusion_started && !m.held ? t - last_sample_ps : kSamplePs;
+      if (dt_ps > kGapPs) {
         ++stats.gaps;
         stats.gap_s += static_cast<double>(dt_ps) * 1e-12;
         dt_ps = kSamplePs;  // this sample's own period only
+      } else if (first_after_reanchor) {
+        dt_ps = kSamplePs;  // the timeline moved to the arrival; the device sampled at its own period
       }
+      first_after_reanchor = false;
       fusion.update(gyro, accel, static_cast<double>(dt_ps) * 1e-12);
       fusion_started = true;
       last_sample_ps = t;
@@ -280,11 +294,13 @@ struct RiftStream::Impl {
       return false;
     }
     model = found;
+    bool detached_here = false;
     auto fail = [&](const std::string& what, int code) {
       error = what + " on " + where + ": " + libusb_strerror(code) +
               (code == LIBUSB_ERROR_ACCESS ? std::string("; ") + kUdevRulesHint
                : code == LIBUSB_ERROR_BUSY ? std::string("; interface 0 is in use by another program (another driver or tracker tool): close it")
                                            : std::string());
+      if (detached_here) libusb_attach_kernel_driver(handle, 0);  // leave the device as it was found
       libusb_close(handle);
       handle = nullptr;
       return false;
@@ -320,6 +336,7 @@ struct RiftStream::Impl {
     rc = libusb_kernel_driver_active(handle, 0);
     if (rc == 1) {
       if ((rc = libusb_detach_kernel_driver(handle, 0)) != 0) return fail("detaching the kernel driver", rc);
+      detached_here = true;
       std::lock_guard<std::mutex> lock(mu);
       stats.kernel_driver_detached = true;
     } else if (rc < 0 && rc != LIBUSB_ERROR_NOT_SUPPORTED) {
@@ -336,19 +353,30 @@ struct RiftStream::Impl {
     clock = std::make_unique<DeviceClock>(model == RiftModel::DK1 ? 16 : 32, model == RiftModel::DK1 ? 1'000'000'000 : 1'000'000);
     is_connected = true;
     const int want = std::max(1, opt.transfers_in_flight);
-    transfers.assign(static_cast<size_t>(want), nullptr);
-    buffers.assign(static_cast<size_t>(want), std::vector<uint8_t>(kRiftReportSize));
+    transfers.clear();
+    stalled.clear();
     for (int i = 0; i < want; ++i) {
+      // Each transfer owns its buffer (freed with it): an abandoned transfer may still be written into.
       libusb_transfer* t = libusb_alloc_transfer(0);
-      transfers[static_cast<size_t>(i)] = t;
-      libusb_fill_interrupt_transfer(t, handle, 0x81, buffers[static_cast<size_t>(i)].data(), static_cast<int>(kRiftReportSize), on_transfer, this, 0);
+      auto* buffer = static_cast<unsigned char*>(std::malloc(kRiftReportSize));
+      if (!t || !buffer) {
+        if (t) libusb_free_transfer(t);
+        std::free(buffer);
+        is_connected = false;
+        release();
+        error = std::string("out of memory for the transfers on ") + where;
+        return false;
+      }
+      transfers.push_back(t);
+      libusb_fill_interrupt_transfer(t, handle, 0x81, buffer, static_cast<int>(kRiftReportSize), on_transfer, this, 0);
+      t->flags |= LIBUSB_TRANSFER_FREE_BUFFER;
       if ((rc = libusb_submit_transfer(t)) != 0) {
         is_connected = false;
         release();  // what was submitted comes back cancelled; the handle is closed
         error = std::string("submitting a transfer on ") + where + ": " + libusb_strerror(rc);
         return false;
       }
-      ++in_flight;
+      flying.insert(t);
     }
     transfer_errors_in_a_row = 0;
     return true;
@@ -356,31 +384,40 @@ struct RiftStream::Impl {
 
   // After a loss: cancel the transfers and wait for every one to come back
   // (libusb completes a cancelled transfer, or one on a vanished device, with
-  // a status), then let go of the handle. A transfer is freed only once it is
-  // back: freeing one still in flight lets libusb write into freed memory. If
-  // the backend never returns one (1 s), the transfers are left allocated --
-  // a small leak, never a use after free -- and the event says so.
+  // a status), then free them and let go of the handle. A transfer is freed
+  // only once it is back: freeing one libusb still holds lets it write into
+  // freed memory. One the backend does not give back within a second is
+  // abandoned: completed() frees it when it does come back (and does nothing
+  // else with it), and its handle is closed once none is left.
   void release() {
-    stalled.clear();  // back from libusb already (not in flight): freed with the rest below
-    for (auto* t : transfers)
-      if (t && in_flight > 0) libusb_cancel_transfer(t);
-    timeval tv{0, 20000};
-    for (int k = 0; k < 50 && in_flight > 0; ++k) libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
-    if (in_flight > 0) {
-      event(StreamEvent::Kind::Disconnected, std::to_string(in_flight) + " transfer(s) never came back from libusb; left allocated");
-      for (auto*& t : transfers) t = nullptr;
-      in_flight = 0;
-      handle = nullptr;  // not closed either: closing frees what the transfers still point to
-      return;
+    for (auto* t : flying) libusb_cancel_transfer(t);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    while (!flying.empty() && std::chrono::steady_clock::now() < deadline) {
+      timeval tv{0, 20000};
+      libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
     }
-    for (auto*& t : transfers) {
-      if (t) libusb_free_transfer(t);
-      t = nullptr;
+    stalled.clear();  // back already: freed below with the rest
+    for (auto* t : transfers) {
+      if (flying.count(t)) abandoned.insert(t);
+      else libusb_free_transfer(t);
+    }
+    transfers.clear();
+    if (!flying.empty()) {
+      event(StreamEvent::Kind::Disconnected,
+            std::to_string(flying.size()) + " transfer(s) not back from libusb after 1 s; freed when they are");
+      flying.clear();
+      if (handle) abandoned_handles.push_back(handle);  // closing it would free what those transfers use
+      handle = nullptr;
+      return;
     }
     if (handle) {
       libusb_release_interface(handle, 0);
       libusb_close(handle);
       handle = nullptr;
+    }
+    if (abandoned.empty()) {
+      for (auto* h : abandoned_handles) libusb_close(h);
+      abandoned_handles.clear();
     }
   }
 };
@@ -391,7 +428,7 @@ RiftStream::RiftStream(const RiftStreamOptions& o) : p_(std::make_unique<Impl>(o
 
 // One round of device service: events, keep-alive, reconnection.
 void RiftStream::Impl::step(int timeout_ms) {
-  if (handle || in_flight > 0) {
+  if (handle || !flying.empty() || !abandoned.empty()) {
     timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
     libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
     clear_stall();
@@ -406,11 +443,9 @@ void RiftStream::Impl::step(int timeout_ms) {
       last_attempt_s = now_s();
       std::string err;
       if (connect(err)) {
-        {
-          std::lock_guard<std::mutex> lock(mu);
-          ++stats.reconnects;
-        }
-        event(StreamEvent::Kind::Reconnected, "streaming again");
+        std::lock_guard<std::mutex> lock(mu);
+        ++stats.reconnects;
+        repeating_event_locked(StreamEvent::Kind::Reconnected, stats.reconnects, "streaming again");
       } else if (err.rfind("no Oculus Rift", 0) != 0) {  // found but refused: say why (an absent device says nothing new)
         std::lock_guard<std::mutex> lock(mu);
         ++stats.reconnect_failures;
@@ -426,9 +461,19 @@ RiftStream::~RiftStream() {
     p_->pump.join();
   }
   if (p_->ctx) {
-    p_->is_connected = false;
-    p_->release();
-    libusb_exit(p_->ctx);
+    Impl& s = *p_;
+    s.is_connected = false;
+    s.release();
+    // Abandoned transfers get one more second to come back; what still has not is left to the process.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    while (!s.abandoned.empty() && std::chrono::steady_clock::now() < deadline) {
+      timeval tv{0, 20000};
+      libusb_handle_events_timeout_completed(s.ctx, &tv, nullptr);
+    }
+    if (s.abandoned.empty()) {
+      for (auto* h : s.abandoned_handles) libusb_close(h);
+      libusb_exit(s.ctx);
+    }
   }
 }
 
@@ -477,6 +522,11 @@ RiftModel RiftStream::model() const { return p_->model; }
 StreamStats RiftStream::stats() const {
   std::lock_guard<std::mutex> lock(p_->mu);
   return p_->stats;
+}
+
+RiftStream::Snapshot RiftStream::snapshot() const {
+  std::lock_guard<std::mutex> lock(p_->mu);
+  return {p_->stats, p_->last};
 }
 
 PoseSample RiftStream::last_pose() const {

@@ -13,7 +13,8 @@
 //
 // By default a background thread services the device continuously (as the
 // kernel would queue reports), so a consumer that is busy rendering loses
-// nothing; poll() then only collects what was fused. With
+// nothing within max_pending_s (beyond it the oldest are dropped, counted);
+// poll() then only collects what was fused. With
 // `background_thread = false` everything happens inside poll() instead.
 #pragma once
 #include <memory>
@@ -56,6 +57,7 @@ struct StreamStats {
   int64_t samples_lost_on_device = 0;  // counted by the device beyond what its reports held
   int64_t time_went_back = 0;          // stale reports skipped (DeviceClock: backwards)
   int64_t clock_reanchors = 0;         // device restarts and timestamp jumps (DeviceClock: reanchored)
+  int64_t clock_held_reports = 0;      // reports skipped while the clock caught up after a re-anchor (DeviceClock: held)
   int64_t gaps = 0;                    // breaks in the samples (a reconnection, a lost run of reports) bridged by holding the pose
   int64_t dropped_unconsumed = 0;      // samples dropped because the consumer fell max_pending_s behind
   int64_t stalls = 0;                  // endpoint halts cleared
@@ -78,6 +80,7 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("samples_lost_on_device", s.samples_lost_on_device);
   f("time_went_back", s.time_went_back);
   f("clock_reanchors", s.clock_reanchors);
+  f("clock_held_reports", s.clock_held_reports);
   f("gaps", s.gaps);
   f("dropped_unconsumed", s.dropped_unconsumed);
   f("stalls", s.stalls);
@@ -108,6 +111,12 @@ class RiftStream {
   bool connected() const;
   RiftModel model() const;
   StreamStats stats() const;
+  // The stats and the last pose taken together (under one lock: the pump fuses between two calls).
+  struct Snapshot {
+    StreamStats stats;
+    PoseSample last;
+  };
+  Snapshot snapshot() const;
   std::vector<StreamEvent> take_events();
   // The last fused pose (held while disconnected); time 0 and identity before the first.
   PoseSample last_pose() const;
