@@ -52,6 +52,8 @@ class LiveLoop {
   // Tracker events since the last call (unplug, replug, ...).
   std::vector<std::string> take_events();
   int64_t late_frames() const { return late_; }
+  // Orientation samples held in memory now (the window around the frame, not the whole motion).
+  size_t samples_held() const { return stream_.held(); }
 
  private:
   LiveSpec spec_;

@@ -73,6 +73,7 @@ class OrientationStream {
 
   // Indices count from the stream's first sample ever, also after discard_before.
   size_t size() const { return base_ + samples_.size(); }
+  size_t held() const { return samples_.size(); }  // in memory now: what discard_before left
   const OrientationSample& operator[](size_t i) const { return samples_[i - base_]; }
   size_t index_at(int64_t t_ps) const;
   // A long run's window: drops the samples no reader needs any more -- those

@@ -147,5 +147,9 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   ASSERT_GT(sent, 100) << rep.substr(0, 800);
   EXPECT_EQ(dropped, 0);
   EXPECT_GE(taken + before + after + dropped, sent);  // every sample accounted for
-  EXPECT_GT(taken, (sent - before) / 2);              // most of the run's during the run, not only after its end
+  // Received during the run, not only by the drain after its end: what is left for the drain is what the
+  // stream fused during the last frame and the report (before, a late frame took nothing, and the drain
+  // would hold everything fused after the first frame). Holds at any pace: a starved stream fuses late,
+  // but its samples still come in frame by frame.
+  EXPECT_LT(after * 4, taken + before + after) << "taken " << taken << ", before the start " << before << ", after the end " << after;
 }
