@@ -19,11 +19,13 @@ using namespace arp::tracker;
 
 namespace {
 
-std::vector<PoseSample> yaw_90(double seconds) {
-  SamplingSpec s;
-  s.rate_hz = 1000;
-  s.duration_s = seconds;
-  return constant_rotation({0, 1, 0}, 90.0, s);
+using test::yaw_90;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 }  // namespace
@@ -105,10 +107,7 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
     unplug_for_a_while();
     child.join();
     ASSERT_EQ(run.status, 0) << run.output;
-    std::ifstream in(d.file("live.json"));
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string rep = ss.str();
+    const std::string rep = read_text(d.file("live.json"));
     const size_t live_at = rep.find("\"live\"");
     ASSERT_NE(live_at, std::string::npos);
     EXPECT_NE(rep.find("\"device_disconnects\": 1"), std::string::npos) << rep.substr(live_at, 400) << run.output;
@@ -136,10 +135,7 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 20 --every 0 --report " +
                                           d.file("slow.json"));
   ASSERT_EQ(run.status, 0) << run.output;
-  std::ifstream in(d.file("slow.json"));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string all = ss.str();
+  const std::string all = read_text(d.file("slow.json"));
   ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
   const std::string rep = all.substr(all.find("\"live\""));
   const int64_t taken = json_int(rep, "samples"), before = json_int(rep, "samples_before_start"), after = json_int(rep, "samples_after_end"),

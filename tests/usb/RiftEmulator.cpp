@@ -16,6 +16,7 @@
 
 #include "tracker/RiftProtocol.hpp"
 #include "tracker/SyntheticImu.hpp"
+#include "tracker/SyntheticMotion.hpp"
 #include "tracker/UsbTrackers.hpp"
 
 namespace arp::test {
@@ -266,6 +267,13 @@ gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self
   return static_cast<RiftEmulator::State*>(self)->handle(client);
 }
 }  // namespace
+
+std::vector<tracker::PoseSample> yaw_90(double seconds) {
+  tracker::SamplingSpec s;
+  s.rate_hz = 1000;
+  s.duration_s = seconds;
+  return tracker::constant_rotation({0, 1, 0}, 90.0, s);
+}
 
 RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout)
     : s_(std::make_unique<State>()) {

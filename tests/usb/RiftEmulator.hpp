@@ -21,6 +21,9 @@
 
 namespace arp::test {
 
+// The motion the USB tests' devices follow: a yaw at 90 deg/s, sampled at 1 kHz for `seconds`.
+std::vector<tracker::PoseSample> yaw_90(double seconds);
+
 class RiftEmulator {
  public:
   enum class Layout { Rift, NoInterruptIn };  // NoInterruptIn: interface 0's one endpoint is bulk OUT 0x02

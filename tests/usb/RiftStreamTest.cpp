@@ -26,12 +26,7 @@ using namespace arp::tracker;
 
 namespace {
 
-std::vector<PoseSample> yaw_90(double seconds) {
-  SamplingSpec s;
-  s.rate_hz = 1000;
-  s.duration_s = seconds;
-  return constant_rotation({0, 1, 0}, 90.0, s);
-}
+using test::yaw_90;
 
 // Polls for `seconds` of wall time, collecting poses.
 void stream_for(RiftStream& r, double seconds, std::vector<PoseSample>& out) {
