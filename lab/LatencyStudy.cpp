@@ -18,6 +18,7 @@
 #include "common/Units.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
+#include "tracker/MotionSummary.hpp"
 #include "tracker/TraceFile.hpp"
 #include "common/StrictJson.hpp"
 
@@ -189,6 +190,9 @@ std::string LatencyStudy::run() {
     motion = tracker::read_trace_csv(a.trace);
     motion_name = a.trace;
     if (motion.size() < 2) throw InputError(a.trace, "", "the trace needs at least two samples");
+    const tracker::MotionSummary ms = tracker::summarize_motion(motion);
+    note("trace " + a.trace + ": " + tracker::describe(ms)[0]);
+    for (const auto& w : tracker::motion_warnings(ms)) note("warning: " + w);
     // Played from its first sample at time zero.
     const int64_t t0 = motion.front().time_ps;
     for (auto& s : motion) s.time_ps -= t0;

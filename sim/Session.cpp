@@ -20,6 +20,7 @@
 #include "common/Units.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
+#include "tracker/MotionSummary.hpp"
 #include "tracker/TraceFile.hpp"
 
 namespace arp::sim {
@@ -134,6 +135,12 @@ void Session::build_motion() {
     std::vector<tracker::PoseSample> poses =
         tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, plus_saturated(end_ps_, kPsPerSecond / 100)});
     motion_source_ = spec_.trace;
+    // Told before the run: what the window of the trace looks like, and what a human head would not do.
+    trace_summary_ = tracker::summarize_motion(poses);
+    const auto d = tracker::describe(*trace_summary_);
+    motion_notes_.push_back("trace " + spec_.trace + " over the run's window: " + d[0]);
+    motion_notes_.push_back("  " + d[1]);
+    for (const auto& w : tracker::motion_warnings(*trace_summary_)) motion_notes_.push_back("warning: " + w);
     more_poses_ = [poses = std::move(poses)](int64_t, std::vector<tracker::PoseSample>& out) mutable {
       out = std::move(poses);
       poses.clear();
@@ -471,6 +478,20 @@ RunSummary Session::run() {
                   seconds_of(last_pose_ps_));
     s.notes.push_back(b);
   }
+  // A sparse trace's own sample period is part of every latency measured: say so when it is a large part.
+  if (trace_summary_ && trace_summary_->median_period_s > 0 && res.frames) {
+    const double hold_ps = trace_summary_->median_period_s * 0.5e12, median = static_cast<double>(s.latency_median_ps);
+    if (hold_ps >= 0.25 * median) {
+      char b[400];
+      std::snprintf(b, sizeof b,
+                    "  note: the trace's samples are %.3f ms apart (%.1f Hz): a pixel's sample is on average %.3f ms old "
+                    "before the pipeline adds its own, %s of the median latency %.3f ms (resample the trace, "
+                    "`arpsim tracker import --resample`, or record faster to measure the pipeline alone)",
+                    trace_summary_->median_period_s * 1e3, trace_summary_->rate_hz(), hold_ps * 1e-9,
+                    hold_ps >= 0.5 * median ? "most" : "a large part", median * 1e-9);
+      s.notes.push_back(b);
+    }
+  }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
@@ -479,6 +500,13 @@ RunSummary Session::run() {
   r["motion"] = motion_source_;
   r["cube_map"] = memory_source_;
   r["images"] = images_;
+  if (trace_summary_) {
+    const tracker::MotionSummary& m = *trace_summary_;
+    r["trace"] = {{"samples", m.samples},           {"rate_hz", m.rate_hz()},       {"gaps", m.gaps},
+                  {"longest_gap_s", m.longest_gap_s}, {"bursts", m.bursts},           {"same_time", m.same_time},
+                  {"repeats", m.repeats},            {"peak_speed_dps", m.peak_speed_dps}, {"p99_speed_dps", m.p99_speed_dps},
+                  {"max_tilt_deg", m.max_tilt_deg},  {"warnings", tracker::motion_warnings(m)}};
+  }
   if (live_) {
     tracker::StreamStats st;
     live_->usb_stats(st);

@@ -7,6 +7,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "host/regions/RegionScheduler.hpp"
 #include "host/regions/Segmentation.hpp"
 #include "rtl_model/systemc/TimedRun.hpp"
+#include "tracker/MotionSummary.hpp"
 #include "tracker/PoseSource.hpp"
 
 namespace arp::sim {
@@ -46,6 +48,9 @@ class Session {
   scm::Fidelity fidelity() const { return fidelity_; }
   const std::string& motion_source() const { return motion_source_; }
   const std::string& memory_source() const { return memory_source_; }
+  // What the motion looks like, for the command to print before the run: a
+  // trace's summary over the run's window and its warnings (empty otherwise).
+  const std::vector<std::string>& motion_notes() const { return motion_notes_; }
 
  private:
   void build_motion();
@@ -67,6 +72,8 @@ class Session {
   bool motion_started_ = false, motion_done_ = false;
   int64_t last_pose_ps_ = 0;
   std::string motion_source_ = "still head", memory_source_;
+  std::optional<tracker::MotionSummary> trace_summary_;
+  std::vector<std::string> motion_notes_;
   std::unique_ptr<host::WalkPath> walk_;
   std::unique_ptr<tracker::PoseSource> live_;
   dp::OrientationStream stream_;

@@ -616,7 +616,8 @@ TEST(DatasetImport, UnitsAxesAndBadLines) {
   }
   DatasetLayout unity;
   unity.time_unit = DatasetLayout::TimeUnit::Milliseconds;
-  unity.axes = DatasetLayout::Axes::Unity;
+  std::string why;
+  ASSERT_TRUE(parse_axes("unity", unity.axes, why)) << why;
   const auto s = read_head_motion_dataset(d.file("unity.txt"), unity);
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s[0].time_ps, 0);
@@ -634,7 +635,7 @@ TEST(DatasetImport, UnitsAxesAndBadLines) {
     f << "0 0 0 0 0 1\n0.01 1 0 " << std::sin(0.25) << " 0 " << std::cos(0.25) << "\n";
   }
   DatasetLayout xyzw;
-  xyzw.scalar_last = true;
+  ASSERT_TRUE(parse_columns("t=1,frame=2,qx=3,qy=4,qz=5,qw=6", xyzw.columns, why)) << why;
   EXPECT_NEAR(angle_between_deg(read_head_motion_dataset(d.file("xyzw.txt"), xyzw)[1].orientation,
                                 glm::angleAxis(0.5, glm::dvec3(0, 1, 0))),
               0.0, 1e-3);  // six digits in the file
@@ -644,8 +645,8 @@ TEST(DatasetImport, UnitsAxesAndBadLines) {
       {"0 0 1 0 0 0\n0.1 1 one 0 0 0\n", "line 2: quaternion 'one' is not a finite number"},
       {"0 0 1 0 0 0\n0.1 1 0 0 0 0\n", "line 2: the quaternion is zero"},
       {"0 0 1 0 0 0\n0.1 1 2 0 0 0\n", "line 2: the quaternion is not unit length"},
-      {"0 0 1 0 0 0\n0 1 1 0 0 0\n", "line 2: timestamp 0 does not come after"},
-      {"0 0 1 0 0 0\n0.1 1.5 1 0 0 0\n", "line 2: frameId '1.5' is not a non-negative integer"},
+      {"0.1 0 1 0 0 0\n0 1 1 0 0 0\n", "line 2: timestamp 0 goes back"},
+      {"0 0 1 0 0 0\n0.1 1.5 1 0 0 0\n", "line 2: frame id '1.5' is not a non-negative integer"},
       {"0 0 1 0 0 0\n0.1 1 nan 0 0 0\n", "line 2: quaternion 'nan' is not a finite number"},
       {"0 0 1 0 0 0\n", "fewer than two samples"}};
   for (const auto& [text, want] : bad) {

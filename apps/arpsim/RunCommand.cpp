@@ -26,6 +26,7 @@ int run(RunArgs& a) {
   a.spec.host.segmentation = !a.no_segmentation;
   const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop after the frame in flight, keep what is finished
   sim::Session session(a.spec);
+  for (const auto& l : session.motion_notes()) std::fprintf(stderr, "arpsim run: %s\n", l.c_str());
   ProgressLine progress("run " + scm::to_string(session.fidelity()), !a.quiet);
   session.on_progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
   session.stop_when = interrupt_signal;

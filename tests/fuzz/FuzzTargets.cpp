@@ -22,6 +22,8 @@
 #include "host/scene/SceneFile.hpp"
 #include "sim/ConfigFile.hpp"
 #include "tracker/DatasetImport.hpp"
+#include "tracker/MotionSummary.hpp"
+#include "tracker/TraceEdit.hpp"
 #include "tracker/TraceFile.hpp"
 
 namespace arp::fuzz {
@@ -131,12 +133,25 @@ int trace_one(const uint8_t* data, size_t size) {
 // The first byte picks the layout (time unit, axes, quaternion order).
 int dataset_one(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
+  // The first byte picks the time unit, the axes, quaternion (w first or last) or Euler angles, and named columns.
   tracker::DatasetLayout layout;
   layout.time_unit = static_cast<tracker::DatasetLayout::TimeUnit>(data[0] & 3);
-  layout.axes = (data[0] & 4) ? tracker::DatasetLayout::Axes::Unity : tracker::DatasetLayout::Axes::OpenGl;
-  layout.scalar_last = (data[0] & 8) != 0;
+  static const char* const kAxes[] = {"gl", "unity", "corbillon", "-y,+z,-x"};
+  std::string why;
+  tracker::parse_axes(kAxes[(data[0] >> 2) & 3], layout.axes, why);
+  static const char* const kColumns[] = {"t=1,frame=2,qw=3,qx=4,qy=5,qz=6", "t=1,frame=2,qx=3,qy=4,qz=5,qw=6",
+                                         "t=1,ry=2,rx=3,rz=4", "t=time,qw=w,qx=x,qy=y,qz=z"};
+  tracker::parse_columns(kColumns[(data[0] >> 4) & 3], layout.columns, why);
+  layout.angle_unit = (data[0] & 64) ? tracker::DatasetLayout::AngleUnit::Radians : tracker::DatasetLayout::AngleUnit::Degrees;
   const std::string p = scratch().write(data + 1, size - 1, ".txt");
-  return guarded("dataset", [&] { tracker::read_head_motion_dataset(p, layout); });
+  return guarded("dataset", [&] {
+    auto samples = tracker::read_head_motion_dataset(p, layout);
+    const auto s = tracker::summarize_motion(samples);
+    tracker::describe(s);
+    tracker::motion_warnings(s);
+    tracker::drop_repeats(samples);
+    if (samples.size() >= 2 && samples.back().time_ps - samples.front().time_ps < 1'000'000'000'000) tracker::resample(samples, 250.0);
+  });
 }
 
 int vcd_one(const uint8_t* data, size_t size) {

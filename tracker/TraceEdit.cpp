@@ -1,0 +1,50 @@
+#include "TraceEdit.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace arp::tracker {
+
+size_t drop_repeats(std::vector<PoseSample>& v) {
+  if (v.empty()) return 0;
+  size_t kept = 1;
+  for (size_t i = 1; i < v.size(); ++i) {
+    const PoseSample& last = v[kept - 1];
+    if (v[i].orientation == last.orientation && v[i].has_position == last.has_position && v[i].position == last.position)
+      continue;
+    v[kept++] = v[i];
+  }
+  const size_t dropped = v.size() - kept;
+  v.resize(kept);
+  return dropped;
+}
+
+std::vector<PoseSample> resample(const std::vector<PoseSample>& v, double hz) {
+  if (!(hz > 0) || !std::isfinite(hz)) throw std::invalid_argument("resample: the rate must be positive and finite");
+  std::vector<PoseSample> out;
+  if (v.empty()) return out;
+  const int64_t t0 = v.front().time_ps, t1 = v.back().time_ps;
+  const double step_ps = 1e12 / hz;
+  if (static_cast<double>(t1 - t0) / step_ps > 1e8)
+    throw std::invalid_argument("resample: more than 100 million samples at this rate");
+  size_t j = 0;  // v[j] <= t < v[j + 1]
+  for (int64_t k = 0;; ++k) {
+    const double td = static_cast<double>(t0) + static_cast<double>(k) * step_ps;
+    if (td > static_cast<double>(t1)) break;
+    const int64_t t = static_cast<int64_t>(std::llround(td));
+    while (j + 1 < v.size() && v[j + 1].time_ps <= t) ++j;
+    PoseSample p = v[j];
+    p.time_ps = t;
+    p.has_angular_velocity = false;
+    if (j + 1 < v.size() && v[j + 1].time_ps > v[j].time_ps) {
+      const PoseSample& b = v[j + 1];
+      const double f = static_cast<double>(t - v[j].time_ps) / static_cast<double>(b.time_ps - v[j].time_ps);
+      p.orientation = glm::normalize(glm::slerp(v[j].orientation, b.orientation, f));  // GLM's slerp goes the short way
+      if (p.has_position && b.has_position) p.position = v[j].position + f * (b.position - v[j].position);
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace arp::tracker
