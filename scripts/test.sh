@@ -3,7 +3,9 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer build; then the threaded
 # tracker path (the libusb stream against the emulated devices) once more
 # under ThreadSanitizer, building only what those tests link. Fails on the
-# first error.
+# first error. The sanitizer builds compile at -O1 with line tables only
+# (-g1): the sanitizers' reports keep function, file and line, and the build
+# takes less than half the time of -O2 -g (RunCommand.cpp: 16 s against 37 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -13,11 +15,14 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
 (cd build && ctest --output-on-failure -j"$jobs")
 echo "== ASan + UBSan build =="
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARPSIM_SANITIZE=ON -DARPSIM_BUILD_BENCH=OFF >/dev/null
+sanitizer_flags="-O1 -g1 -DNDEBUG"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$sanitizer_flags" \
+  -DARPSIM_SANITIZE=ON -DARPSIM_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan -j"$jobs"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --output-on-failure -j"$jobs")
 echo "== ThreadSanitizer build (the tracker's threaded path) =="
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARPSIM_SANITIZE_THREAD=ON -DARPSIM_BUILD_BENCH=OFF >/dev/null
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$sanitizer_flags" \
+  -DARPSIM_SANITIZE_THREAD=ON -DARPSIM_BUILD_BENCH=OFF >/dev/null
 cmake --build build-tsan -j"$jobs" --target arp_usb_tests
 (cd build-tsan && TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/../tests/usb/tsan.supp" ctest --output-on-failure --no-tests=error -j"$jobs" -R '^RiftStream\.')
