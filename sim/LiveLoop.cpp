@@ -34,9 +34,8 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
   // The head motion, from one pose source: all of it up front (trace, synthetic) or as it arrives (usb).
   if (!spec_.trace.empty()) {
     source_ = tracker::trace_file_source(spec_.trace);
-  } else if (!spec_.live.empty()) {
-    std::string err;
-    if (!(source_ = tracker::usb_source(err))) throw InputError("--live usb", "", err);
+  } else if (!spec_.live.empty() || !spec_.device.empty()) {
+    source_ = tracker::live_source(spec_.live, spec_.device);
   } else {
     tracker::MotionSpec m = spec_.motion;
     if (!m.given()) {

@@ -22,6 +22,7 @@ struct LiveSpec {
   MemoryContents memories;
   tracker::MotionSpec motion;  // default: a 100 deg/s head shake
   std::string trace, live;     // --trace FILE, --live usb
+  std::string device;          // --device SERIAL|BUS:ADDR: which tracker
   double seconds = 0;          // 0: until stopped
   int threads = 0;
 };

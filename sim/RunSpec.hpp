@@ -48,6 +48,7 @@ struct RunSpec {
   tracker::MotionSpec motion;                    // --motion ...
   std::string trace;                             // --trace FILE
   std::string live;                              // --live usb
+  std::string device;                            // --device SERIAL|BUS:ADDR: which tracker
   HostSpec host;
   int64_t first_frame = 0, frames = 60;
   std::vector<std::string> stalls;               // --stall STAGE:CLOCK:CYCLES

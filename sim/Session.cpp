@@ -171,12 +171,7 @@ void Session::build_motion() {
     };
   }
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
-  if (!spec_.live.empty()) {
-    std::string err;
-    live_ = tracker::usb_source(err);
-    if (!live_) throw InputError("--live usb", "", err);
-    motion_source_ = "live " + live_->describe();
-  }
+  if ((live_ = tracker::live_source(spec_.live, spec_.device))) motion_source_ = "live " + live_->describe();
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
   extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));
@@ -278,7 +273,13 @@ void Session::build_live_input(stage::TimedInputs& in) {
     const int64_t until_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1)) - start_ps_;
     for (;;) {
       const auto wall_ps = static_cast<int64_t>(std::chrono::duration<double>(Clock::now() - wall0).count() * 1e12);
-      if (wall_ps >= until_ps) break;
+      if (wall_ps >= until_ps) {
+        // Behind: the frame ends earlier on the run's timeline than the device's clock has gone.
+        live_behind_ps_ = wall_ps - until_ps;
+        live_behind_max_ps_ = std::max(live_behind_max_ps_, live_behind_ps_);
+        break;
+      }
+      live_behind_ps_ = 0;
       live_->poll(*got, static_cast<int>(std::min<int64_t>(5, (until_ps - wall_ps) / 1'000'000'000 + 1)));
     }
     // A run slower than the display has no time left here: it still takes everything the device sent
@@ -290,6 +291,22 @@ void Session::build_live_input(stage::TimedInputs& in) {
     live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // sent while the run was being set up
     got->clear();
   };
+}
+
+// "; 2.4 s behind the tracker" once a live run lags by more than a frame, and past the stream's bound
+// how many samples it has dropped; empty while it keeps up.
+std::string Session::live_lag_text() const {
+  const double behind_s = static_cast<double>(live_behind_ps_) * 1e-12;
+  if (behind_s * timing_.refresh_hz() < 1.0) return "";
+  char b[160];
+  tracker::StreamStats st;
+  live_->usb_stats(st);
+  if (st.dropped_unconsumed > 0)
+    std::snprintf(b, sizeof b, "; %.1f s behind the tracker, past the %g s it keeps: %" PRId64 " samples dropped", behind_s,
+                  tracker::RiftStreamOptions{}.max_pending_s, st.dropped_unconsumed);
+  else
+    std::snprintf(b, sizeof b, "; %.1f s behind the tracker (it keeps %g s)", behind_s, tracker::RiftStreamOptions{}.max_pending_s);
+  return b;
 }
 
 // Every output is checked before anything is simulated: folders made, files writable.
@@ -389,6 +406,8 @@ RunSummary Session::run() {
   opt.threads = spec_.threads;
   opt.speculate = spec_.speculate;
   opt.progress = on_progress;
+  if (live_ && on_progress)  // a live run slower than the display says how far behind the tracker it is
+    opt.progress = [this](double f, const std::string& what) { on_progress(f, what + live_lag_text()); };
   int stop_signal = 0;
   if (stop_when) opt.stop = [this, &stop_signal] { return (stop_signal = stop_when()) != 0; };
   build_outputs(opt);
@@ -492,6 +511,22 @@ RunSummary Session::run() {
       s.notes.push_back(b);
     }
   }
+  if (live_) {
+    tracker::StreamStats st;
+    live_->usb_stats(st);
+    char b[300];
+    if (st.dropped_unconsumed > 0) {
+      std::snprintf(b, sizeof b,
+                    "  note: the run fell up to %.1f s behind the tracker, past the %g s of samples the stream keeps: the "
+                    "oldest %" PRId64 " samples were dropped (live.device_dropped_unconsumed)",
+                    static_cast<double>(live_behind_max_ps_) * 1e-12, tracker::RiftStreamOptions{}.max_pending_s, st.dropped_unconsumed);
+      s.notes.push_back(b);
+    } else if (live_behind_max_ps_ * timing_.refresh_hz() >= 1e12) {
+      std::snprintf(b, sizeof b, "  note: the run fell up to %.1f s behind the tracker; every sample was still taken (the stream keeps %g s)",
+                    static_cast<double>(live_behind_max_ps_) * 1e-12, tracker::RiftStreamOptions{}.max_pending_s);
+      s.notes.push_back(b);
+    }
+  }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
@@ -521,6 +556,8 @@ RunSummary Session::run() {
                  {"samples_after_end", rest.size()}};
     tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });
     r["live"]["device_gap_s"] = st.gap_s;
+    r["live"]["behind_max_s"] = static_cast<double>(live_behind_max_ps_) * 1e-12;
+    r["live"]["behind_at_end_s"] = static_cast<double>(live_behind_ps_) * 1e-12;
     r["live"]["connected_at_end"] = live_->connected();
   }
   if (host_) {

@@ -87,6 +87,8 @@ class Session {
   std::unique_ptr<FrameLog> log_;
   std::string vcd_final_, vcd_tmp_base_;
   int64_t images_ = 0, live_samples_ = 0, live_before_start_ = 0, baseline_triangles_ = 0;
+  int64_t live_behind_ps_ = 0, live_behind_max_ps_ = 0;  // how far the run's frames lag the tracker's clock
+  std::string live_lag_text() const;
   double host_wall_s_ = 0;
 };
 

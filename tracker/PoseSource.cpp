@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "TraceFile.hpp"
+#include "common/InputError.hpp"
 
 namespace arp::tracker {
 
@@ -66,6 +67,20 @@ std::unique_ptr<PoseSource> trace_file_source(const std::string& path) { return 
 
 std::unique_ptr<PoseSource> dataset_source(const std::string& path, const DatasetLayout& layout) {
   return recorded_source(read_head_motion_dataset(path, layout), path);
+}
+
+std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device) {
+  if (live.empty()) {
+    if (!device.empty()) throw InputError("--device", device, "chooses the tracker of --live usb; give --live usb too");
+    return nullptr;
+  }
+  if (live != "usb") throw InputError("--live", live, "the live source is usb (an Oculus Rift DK1/DK2)");
+  RiftStreamOptions o;
+  o.device = device;
+  std::string err;
+  auto s = usb_source(err, o);
+  if (!s) throw InputError("--live usb", "", err);
+  return s;
 }
 
 std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options) {

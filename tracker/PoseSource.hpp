@@ -37,7 +37,11 @@ class PoseSource {
 std::unique_ptr<PoseSource> recorded_source(std::vector<PoseSample> samples, std::string name);
 std::unique_ptr<PoseSource> trace_file_source(const std::string& path);
 std::unique_ptr<PoseSource> dataset_source(const std::string& path, const DatasetLayout& layout);
-// The first DK1/DK2 on USB; nullptr with the reason in `error` when it cannot be opened.
+// The DK1/DK2 on USB that options.device names (or the only one); nullptr with the reason in `error`
+// when it cannot be opened.
 std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options = {});
+// What --live names ("usb"; empty: none, and then --device must be empty too), opened: InputError naming
+// the option and the reason otherwise.
+std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device);
 
 }  // namespace arp::tracker

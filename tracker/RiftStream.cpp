@@ -48,6 +48,7 @@ struct RiftStream::Impl {
   std::atomic<RiftModel> model{RiftModel::DK1};
   std::atomic<bool> is_connected{false};
   bool ever_opened = false;
+  std::string streamed_serial;  // of the tracker streamed first: reconnections take only it (connect() only)
   // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
   mutable std::mutex mu;
   std::condition_variable arrived;
@@ -268,21 +269,20 @@ struct RiftStream::Impl {
       error = std::string("libusb could not list devices: ") + libusb_strerror(static_cast<int>(n));
       return false;
     }
-    libusb_device* dev = nullptr;
-    RiftModel found = RiftModel::DK1;
-    for (ssize_t i = 0; i < n && !dev; ++i) {
-      libusb_device_descriptor d{};
-      if (libusb_get_device_descriptor(list[i], &d) != 0 || d.idVendor != kOculusVendor) continue;
-      if (d.idProduct == kDk1Product || d.idProduct == kDk2Product) {
-        dev = list[i];
-        found = d.idProduct == kDk1Product ? RiftModel::DK1 : RiftModel::DK2;
-      }
-    }
-    if (!dev) {
+    // The tracker asked for (--device), or the only one; after the first connection, the same one again
+    // by its serial number (a replug moves its address; another tracker must not take its place).
+    const std::vector<FoundTracker> all = find_trackers(list, static_cast<long>(n), false);
+    std::vector<UsbTrackerInfo> infos;
+    for (const auto& f : all) infos.push_back(f.info);
+    const int k = choose_tracker(infos, streamed_serial.empty() ? opt.device : streamed_serial, error);
+    if (k < 0) {
       libusb_free_device_list(list, 1);
-      error = "no Oculus Rift DK1/DK2 on USB (vendor 0x2833, products 0x0001/0x0021)";
+      if (!streamed_serial.empty()) error = "waiting for the tracker streamed before (serial " + streamed_serial + "): " + error;
       return false;
     }
+    libusb_device* dev = all[static_cast<size_t>(k)].device;
+    const RiftModel found = all[static_cast<size_t>(k)].info.model;
+    const std::string serial = all[static_cast<size_t>(k)].info.serial;
     char where[64];
     std::snprintf(where, sizeof where, "/dev/bus/usb/%03d/%03d", libusb_get_bus_number(dev), libusb_get_device_address(dev));
     int rc = libusb_open(dev, &handle);
@@ -352,6 +352,7 @@ struct RiftStream::Impl {
     // the counter may have restarted; the timeline carries on from the arrival.
     clock = std::make_unique<DeviceClock>(model == RiftModel::DK1 ? 16 : 32, model == RiftModel::DK1 ? 1'000'000'000 : 1'000'000);
     is_connected = true;
+    if (streamed_serial.empty()) streamed_serial = serial;
     const int want = std::max(1, opt.transfers_in_flight);
     transfers.clear();
     stalled.clear();

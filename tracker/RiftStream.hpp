@@ -28,6 +28,7 @@
 namespace arp::tracker {
 
 struct RiftStreamOptions {
+  std::string device;                // which tracker: its serial number or BUS:ADDR; empty: the only one attached
   uint16_t keep_alive_ms = 10000;    // the interval the device is told
   double keep_alive_resend_s = 3.0;  // how often it is re-sent
   int transfers_in_flight = 4;

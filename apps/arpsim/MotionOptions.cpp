@@ -2,6 +2,11 @@
 
 namespace arp::app {
 
+void add_device_option(CLI::App& cmd, std::string& device) {
+  cmd.add_option("--device", device,
+                 "Which tracker, when several are attached: its serial number or BUS:ADDR (as `arpsim tracker list` shows them)");
+}
+
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required) {
   auto* o = cmd.add_option("--motion", m.motion, "Synthetic motion: rotate (constant rate), shake (sinusoid), pendulum")
                 ->check(CLI::IsMember({"rotate", "shake", "pendulum"}));

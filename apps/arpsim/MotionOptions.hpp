@@ -9,5 +9,7 @@ namespace arp::app {
 
 // `required`: --motion must be given.
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required);
+// --device SERIAL|BUS:ADDR: which USB tracker (tracker record, --live usb).
+void add_device_option(CLI::App& cmd, std::string& device);
 
 }  // namespace arp::app

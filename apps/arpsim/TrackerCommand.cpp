@@ -35,14 +35,14 @@ int run_list() {
     return 0;
   }
   for (const auto& t : scan.trackers)
-    std::printf("%s  bus %03d address %03d  %s\n", t.model == tracker::RiftModel::DK1 ? "Oculus Rift DK1" : "Oculus Rift DK2",
-                t.bus, t.address, t.can_open ? "ready" : t.problem.c_str());
+    std::printf("Oculus Rift %s  %s  (--device %s)\n", tracker::describe(t).c_str(), t.can_open ? "ready" : t.problem.c_str(),
+                t.serial.empty() ? (std::to_string(t.bus) + ":" + std::to_string(t.address)).c_str() : t.serial.c_str());
   return 0;
 }
 
 
 struct RecordArgs {
-  std::string out;
+  std::string out, device;
   double seconds = 10.0;
   bool quiet = false;
 };
@@ -54,7 +54,9 @@ int run_record(const RecordArgs& a) {
   if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw InputError("--seconds", "", "must be more than 0 and at most a day");
   check_output_paths({{"file", a.out}}, {});
   std::string err;
-  const auto source = tracker::usb_source(err);
+  tracker::RiftStreamOptions options;
+  options.device = a.device;
+  const auto source = tracker::usb_source(err, options);
   if (!source) {
     std::fprintf(stderr, "arpsim tracker record: %s\n", err.c_str());
     return 1;
@@ -169,6 +171,7 @@ Runner add_tracker_command(CLI::App& app) {
   record->add_option("--seconds", r->seconds, "How long to record")->capture_default_str();
   record->add_option("file", r->out, "Trace file to write")->required();
   record->add_flag("--quiet,-q", r->quiet, "No progress line");
+  add_device_option(*record, r->device);
   auto im = std::make_shared<ImportArgs>();
   CLI::App* import = cmd->add_subcommand(
       "import", "Convert a head-motion dataset (one sample per line; columns, axes and units stated) into a trace file, "

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -124,6 +126,10 @@ int64_t json_int(const std::string& text, const std::string& key) {
   const size_t at = text.find("\"" + key + "\": ");
   return at == std::string::npos ? -1 : std::stoll(text.substr(at + key.size() + 4));
 }
+double json_double(const std::string& text, const std::string& key) {
+  const size_t at = text.find("\"" + key + "\": ");
+  return at == std::string::npos ? -1.0 : std::stod(text.substr(at + key.size() + 4));
+}
 }  // namespace
 
 // A run slower than the display (the functional model at its default size renders ~15 frames a second
@@ -148,4 +154,48 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   // would hold everything fused after the first frame). Holds at any pace: a starved stream fuses late,
   // but its samples still come in frame by frame.
   EXPECT_LT(after * 4, taken + before + after) << "taken " << taken << ", before the start " << before << ", after the end " << after;
+  // How far behind the tracker it fell is reported, and said when it is more than a frame (whatever the pace:
+  // a machine that keeps up reports less than a frame and no note).
+  const double behind = json_double(rep, "behind_max_s");
+  ASSERT_GE(behind, 0.0) << rep.substr(0, 800);
+  EXPECT_GE(json_double(rep, "behind_max_s"), json_double(rep, "behind_at_end_s"));
+  const bool said = run.output.find("behind the tracker; every sample was still taken") != std::string::npos;
+  if (std::abs(behind * 60.0 - 1.0) > 0.05) {  // the default display's frame is 1/60 s (not judged right at the edge)
+    EXPECT_EQ(said, behind * 60.0 >= 1.0) << "behind " << behind << " s\n" << run.output;
+  }
+}
+
+// Two trackers on the command line: the list tells them apart and says what to
+// pass; a recording or a live run without a choice is refused, listing them.
+TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {2, "DK1-A"});
+  test::RiftEmulator dk2(RiftModel::DK2, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {3, "DK2-B"});
+  const std::string arpsim = ARPSIM_BINARY;
+  arp::test::TempDir d;
+  const auto list = arp::test::run_command(arpsim + " tracker list");
+  EXPECT_EQ(list.status, 0) << list.output;
+  EXPECT_NE(list.output.find("Oculus Rift DK1 bus 001 address 002 serial DK1-A  ready  (--device DK1-A)\n"
+                             "Oculus Rift DK2 bus 001 address 003 serial DK2-B  ready  (--device DK2-B)"),
+            std::string::npos)
+      << list.output;
+  const auto unchosen = arp::test::run_command(arpsim + " tracker record -q --seconds 0.2 " + d.file("a.csv"));
+  EXPECT_EQ(unchosen.status, 1) << unchosen.output;
+  EXPECT_NE(unchosen.output.find("2 trackers attached"), std::string::npos) << unchosen.output;
+  EXPECT_FALSE(std::filesystem::exists(d.file("a.csv")));
+  const auto chosen = arp::test::run_command(arpsim + " tracker record -q --seconds 0.3 --device DK2-B " + d.file("b.csv"));
+  ASSERT_EQ(chosen.status, 0) << chosen.output;
+  EXPECT_NE(chosen.output.find("DK2"), std::string::npos) << chosen.output;
+  EXPECT_GT(read_trace_csv(d.file("b.csv")).size(), 10u);
+  const struct {
+    std::string args, says;
+  } bad[] = {
+      {"run -q --frames 1 --device DK1-A", "--device: DK1-A: chooses the tracker of --live usb"},
+      {"run -q --frames 1 --live usb", "2 trackers attached"},
+      {"run -q --frames 1 --live usb --device 9:9", "no tracker is '9:9'"},
+  };
+  for (const auto& b : bad) {
+    const auto r = arp::test::run_command(arpsim + " " + b.args + " --every 0");
+    EXPECT_EQ(r.status, 2) << b.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(b.says), std::string::npos) << b.args << "\n" << r.output;
+  }
 }

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <algorithm>
+#include <cstdio>
 #include <deque>
 #include <mutex>
 #include <stdexcept>
@@ -41,7 +43,8 @@ std::string descriptors_hex(tracker::RiftModel m, RiftEmulator::Layout layout) {
   const uint16_t pid = m == tracker::RiftModel::DK1 ? tracker::kDk1Product : tracker::kDk2Product;
   const uint8_t d[] = {
       // device: USB 2.0, class per interface, 64-byte EP0, vendor 0x2833, product, one configuration
-      18, 1, 0x00, 0x02, 0, 0, 0, 64, 0x33, 0x28, static_cast<uint8_t>(pid & 0xff), static_cast<uint8_t>(pid >> 8), 0x00, 0x01, 1, 2, 0, 1,
+      // (strings: 1 manufacturer, 2 product, 3 serial number)
+      18, 1, 0x00, 0x02, 0, 0, 0, 64, 0x33, 0x28, static_cast<uint8_t>(pid & 0xff), static_cast<uint8_t>(pid >> 8), 0x00, 0x01, 1, 2, 3, 1,
       // configuration: 34 bytes in all, one interface
       9, 2, 34, 0, 1, 1, 0, 0x80, 50,
       // interface 0: HID, one endpoint
@@ -59,10 +62,45 @@ std::string descriptors_hex(tracker::RiftModel m, RiftEmulator::Layout layout) {
   return s;
 }
 
+// A string descriptor: index 0 is the language list (US English), then UTF-16LE text.
+std::vector<uint8_t> string_descriptor(int index, const std::string& serial, tracker::RiftModel m) {
+  if (index == 0) return {4, 3, 0x09, 0x04};
+  const std::string text = index == 1   ? "Oculus VR, Inc."
+                           : index == 2 ? (m == tracker::RiftModel::DK1 ? "Tracker DK" : "Rift DK2")
+                           : index == 3 ? serial
+                                        : "";
+  if (text.empty()) return {};
+  std::vector<uint8_t> d{static_cast<uint8_t>(2 + 2 * text.size()), 3};
+  for (char c : text) {
+    d.push_back(static_cast<uint8_t>(c));
+    d.push_back(0);
+  }
+  return d;
+}
+
+// One testbed for every emulator alive (umockdev's preload library reads one
+// testbed directory), made with the first and freed with the last.
+std::mutex g_testbed_mu;
+UMockdevTestbed* g_testbed = nullptr;
+int g_testbed_users = 0;
+
+UMockdevTestbed* acquire_testbed() {
+  std::lock_guard<std::mutex> lock(g_testbed_mu);
+  if (g_testbed_users++ == 0) g_testbed = umockdev_testbed_new();
+  return g_testbed;
+}
+
+void release_testbed() {
+  std::lock_guard<std::mutex> lock(g_testbed_mu);
+  if (--g_testbed_users == 0) g_clear_object(&g_testbed);
+}
+
 }  // namespace
 
 struct RiftEmulator::State {
   tracker::RiftModel model;
+  RiftEmulator::Identity id;
+  std::string syspath, devnode;
   std::vector<std::array<uint8_t, tracker::kRiftReportSize>> reports;
   UMockdevTestbed* testbed = nullptr;
   UMockdevIoctlBase* handler = nullptr;
@@ -132,9 +170,10 @@ struct RiftEmulator::State {
         return reply(0, 0);
       }
       case USBDEVFS_GETDRIVER: {
-        if (detached) return reply(-1, ENODATA);
+        if (detached && !claimed_elsewhere) return reply(-1, ENODATA);
         UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_getdriver), nullptr);
-        std::strcpy(reinterpret_cast<usbdevfs_getdriver*>(d->data)->driver, "usbhid");
+        // Another program streaming through libusb shows as the usbfs driver.
+        std::strcpy(reinterpret_cast<usbdevfs_getdriver*>(d->data)->driver, claimed_elsewhere ? "usbfs" : "usbhid");
         umockdev_ioctl_data_unref(d);
         return reply(0, 0);
       }
@@ -188,6 +227,14 @@ struct RiftEmulator::State {
             }
             features.push_back(std::move(rep));
             u.actual = length;
+          } else if (setup[0] == 0x80 && setup[1] == 6 && setup[3] == 3) {  // GET_DESCRIPTOR (string)
+            const std::vector<uint8_t> d = string_descriptor(setup[2], id.serial, model);
+            if (d.empty()) {
+              u.status = -EPIPE;
+            } else {
+              u.actual = std::min(length, static_cast<int>(d.size()));
+              std::memcpy(u.buffer->data + 8, d.data(), static_cast<size_t>(u.actual));
+            }
           } else {
             u.status = -EPIPE;  // anything else stalls
           }
@@ -276,8 +323,13 @@ std::vector<tracker::PoseSample> yaw_90(double seconds) {
 }
 
 RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout)
+    : RiftEmulator(model, std::move(truth), layout, Identity{}) {}
+
+RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout, Identity id)
     : s_(std::make_unique<State>()) {
+  if (id.address < 2 || id.address > 127) throw std::invalid_argument("a USB address for the emulator is 2..127");
   s_->model = model;
+  s_->id = id;
   // The IMU readings of the motion, as reports with one sample each; the
   // counters start just before they wrap.
   const auto imu = tracker::synthesize_imu(truth, tracker::ImuNoise{});
@@ -295,24 +347,31 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
     }
     s_->reports.push_back(tracker::encode_report(r));
   }
-  s_->testbed = umockdev_testbed_new();
+  char num[8];
+  std::snprintf(num, sizeof num, "%03d", id.address);
+  s_->devnode = std::string("/dev/bus/usb/001/") + num;
+  s_->syspath = "/sys/devices/pci0000:00/usb1/1-" + std::to_string(id.address - 1);
+  s_->testbed = acquire_testbed();
   s_->handler = umockdev_ioctl_base_new();
   g_signal_connect_after(s_->handler, "handle-ioctl", G_CALLBACK(on_ioctl), s_.get());
   GError* err = nullptr;
-  if (!umockdev_testbed_attach_ioctl(s_->testbed, "/dev/bus/usb/001/002", s_->handler, &err))
+  if (!umockdev_testbed_attach_ioctl(s_->testbed, s_->devnode.c_str(), s_->handler, &err)) {
+    g_clear_object(&s_->handler);
+    release_testbed();
     throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot attach the ioctl handler"));
-  const std::string dev = "P: /devices/pci0000:00/usb1/1-1\n"
-                          "N: bus/usb/001/002\n"
-                          "E: SUBSYSTEM=usb\nE: DEVTYPE=usb_device\nE: DRIVER=usb\nE: BUSNUM=001\nE: DEVNUM=002\n"
-                          "E: DEVNAME=/dev/bus/usb/001/002\n"
-                          "A: busnum=1\\n\nA: devnum=2\\n\nA: speed=12\\n\nA: bConfigurationValue=1\\n\n"
-                          "A: idVendor=2833\\n\nA: idProduct=" +
-                          std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") +
-                          "\\n\n"
-                          "H: descriptors=" +
-                          descriptors_hex(model, layout) + "\n";
-  if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err))
+  }
+  const std::string dev = "P: " + s_->syspath.substr(4) + "\n" + "N: bus/usb/001/" + num + "\n" +
+                          "E: SUBSYSTEM=usb\nE: DEVTYPE=usb_device\nE: DRIVER=usb\nE: BUSNUM=001\nE: DEVNUM=" + num + "\n" +
+                          "E: DEVNAME=" + s_->devnode + "\n" +
+                          "A: busnum=1\\n\nA: devnum=" + std::to_string(id.address) + "\\n\nA: speed=12\\n\nA: bConfigurationValue=1\\n\n" +
+                          "A: idVendor=2833\\n\nA: idProduct=" + std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") + "\\n\n" +
+                          "A: serial=" + id.serial + "\\n\n" + "H: descriptors=" + descriptors_hex(model, layout) + "\n";
+  if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err)) {
+    umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
+    g_clear_object(&s_->handler);
+    release_testbed();
     throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot add the device"));
+  }
 }
 
 RiftEmulator::~RiftEmulator() {
@@ -321,8 +380,11 @@ RiftEmulator::~RiftEmulator() {
     for (auto& u : s_->done) drop(u);
     for (auto& u : s_->interrupts) drop(u);
   }
+  umockdev_testbed_remove_device(s_->testbed, s_->syspath.c_str());
+  umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
   g_clear_object(&s_->handler);
-  g_clear_object(&s_->testbed);
+  s_->testbed = nullptr;
+  release_testbed();
 }
 
 void RiftEmulator::unplug() {
@@ -363,6 +425,7 @@ void RiftEmulator::stall() {
 void RiftEmulator::hold_interface_elsewhere() {
   std::lock_guard<std::mutex> lock(s_->mu);
   s_->claimed_elsewhere = true;
+  s_->detached = true;  // the other program took it from usbhid
 }
 
 int64_t RiftEmulator::clear_halts() const {

@@ -6,7 +6,9 @@
 // from a synthetic head motion (the DK1's 16-bit millisecond counter starts
 // just before its wrap), the device stopping when its keep-alive runs out,
 // and on request: malformed reports, 62-byte reports, a sample count larger
-// than a report holds, a restarted counter, unplugging and replugging.
+// than a report holds, a restarted counter, unplugging and replugging. Each
+// device has a bus address and a serial number (its string descriptor 3);
+// several emulators alive at once are several devices on one bus.
 //
 // The process (and any child it starts) must run under umockdev's preload
 // library (ctest runs the USB tests through umockdev-wrapper).
@@ -14,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "tracker/OculusReport.hpp"
@@ -27,8 +30,13 @@ std::vector<tracker::PoseSample> yaw_90(double seconds);
 class RiftEmulator {
  public:
   enum class Layout { Rift, NoInterruptIn };  // NoInterruptIn: interface 0's one endpoint is bulk OUT 0x02
+  struct Identity {
+    int address = 2;                    // on bus 001; 2..127, one per emulator alive
+    std::string serial = "ARPSIM0001";  // ASCII
+  };
   // truth: the head motion the IMU follows (samples with angular velocity, 1 kHz or finer).
   RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout = Layout::Rift);
+  RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout, Identity id);
   ~RiftEmulator();
 
   void unplug();
@@ -39,7 +47,7 @@ class RiftEmulator {
   void inject_sample_count(int count);       // the next report claims `count` samples (its own is the latest)
   void restart_counter();                    // the device restarts: its timestamp counter starts again at 0
   void stall();                              // endpoint 0x81 halts: transfers fail (EPIPE) until a CLEAR_HALT
-  void hold_interface_elsewhere();           // another program has claimed interface 0 (EBUSY)
+  void hold_interface_elsewhere();           // another program detached usbhid and claimed interface 0 (EBUSY)
   int64_t clear_halts() const;
   // Feature reports received (each as sent: report id first).
   std::vector<std::vector<uint8_t>> feature_reports() const;

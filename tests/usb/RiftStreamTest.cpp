@@ -20,6 +20,7 @@
 #include "tracker/RiftStream.hpp"
 #include "tracker/SyntheticMotion.hpp"
 #include "tracker/TraceFile.hpp"
+#include "tracker/UsbTrackers.hpp"
 
 using namespace arp;
 using namespace arp::tracker;
@@ -288,4 +289,100 @@ TEST(RiftStream, ADeviceWithoutTheInterruptEndpointIsRefused) {
   EXPECT_NE(err.find("no interrupt IN endpoint 0x81"), std::string::npos) << err;
   EXPECT_NE(err.find("found: 0x02 bulk"), std::string::npos) << err;
   EXPECT_FALSE(odd.interface_claimed());
+}
+
+// Two trackers attached: told apart by bus, address and serial number; none
+// taken silently; each chosen by its serial number or its BUS:ADDR.
+TEST(RiftStream, TwoTrackersAreToldApartAndChosenBySerialOrAddress) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {2, "DK1-A"});
+  test::RiftEmulator dk2(RiftModel::DK2, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {3, "DK2-B"});
+  const UsbScan scan = scan_usb_trackers();
+  ASSERT_TRUE(scan.usb_available) << scan.usb_error;
+  ASSERT_EQ(scan.trackers.size(), 2u);
+  EXPECT_EQ(describe(scan.trackers[0]) + "; " + describe(scan.trackers[1]),
+            "DK1 bus 001 address 002 serial DK1-A; DK2 bus 001 address 003 serial DK2-B");
+  EXPECT_TRUE(scan.trackers[0].can_open && scan.trackers[1].can_open);
+
+  std::string err;
+  {
+    RiftStream none;
+    EXPECT_FALSE(none.open(err));
+    EXPECT_NE(err.find("2 trackers attached (DK1 bus 001 address 002 serial DK1-A; DK2 bus 001 address 003 serial DK2-B): "
+                       "choose one with --device"),
+              std::string::npos)
+        << err;
+    EXPECT_FALSE(dk1.interface_claimed() || dk2.interface_claimed());
+  }
+  const struct {
+    std::string device;
+    RiftModel model;
+  } picks[] = {{"DK2-B", RiftModel::DK2}, {"1:2", RiftModel::DK1}, {"001:003", RiftModel::DK2}};
+  for (const auto& p : picks) {
+    RiftStreamOptions o;
+    o.device = p.device;
+    RiftStream r(o);
+    ASSERT_TRUE(r.open(err)) << p.device << ": " << err;
+    EXPECT_EQ(r.model(), p.model) << p.device;
+    EXPECT_EQ((p.model == RiftModel::DK1 ? dk1 : dk2).interface_claimed(), true) << p.device;
+    EXPECT_FALSE((p.model == RiftModel::DK1 ? dk2 : dk1).interface_claimed()) << p.device;
+    std::vector<PoseSample> got;
+    stream_until(r, [&] { return got.size() >= 20; }, got, "samples");
+  }
+  for (const char* bad : {"DK3", "1:9", "2:2", "1:", ":2", "x:y"}) {
+    RiftStreamOptions o;
+    o.device = bad;
+    RiftStream r(o);
+    EXPECT_FALSE(r.open(err)) << bad;
+    EXPECT_NE(err.find("no tracker is '" + std::string(bad) + "' (attached: DK1 bus 001 address 002 serial DK1-A; DK2"),
+              std::string::npos)
+        << err;
+  }
+}
+
+// A tracker another program streams is listed as such, not as ready.
+TEST(RiftStream, TheListSaysWhichTrackerIsInUse) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(1.0), test::RiftEmulator::Layout::Rift, {2, "FREE"});
+  test::RiftEmulator dk2(RiftModel::DK2, yaw_90(1.0), test::RiftEmulator::Layout::Rift, {5, "TAKEN"});
+  dk2.hold_interface_elsewhere();
+  const UsbScan scan = scan_usb_trackers();
+  ASSERT_EQ(scan.trackers.size(), 2u);
+  EXPECT_TRUE(scan.trackers[0].can_open) << scan.trackers[0].problem;
+  EXPECT_EQ(scan.trackers[0].serial, "FREE");
+  EXPECT_FALSE(scan.trackers[1].can_open);
+  EXPECT_EQ(scan.trackers[1].serial, "TAKEN");
+  EXPECT_EQ(scan.trackers[1].address, 5);
+  EXPECT_NE(scan.trackers[1].problem.find("in use by another program"), std::string::npos) << scan.trackers[1].problem;
+  EXPECT_FALSE(dk1.interface_claimed());  // listing claimed and released it
+}
+
+// After the first connection the stream reconnects only to the tracker it
+// streamed: another one plugged in while it is away does not take its place.
+TEST(RiftStream, AReconnectionTakesOnlyTheSameTracker) {
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0), test::RiftEmulator::Layout::Rift, {2, "FIRST"});
+  test::RiftEmulator dk2(RiftModel::DK2, yaw_90(30.0), test::RiftEmulator::Layout::Rift, {3, "OTHER"});
+  dk2.unplug();  // not there yet
+  RiftStreamOptions o;
+  o.reconnect_every_s = 0.02;
+  RiftStream r(o);
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;  // the only tracker attached
+  EXPECT_EQ(r.model(), RiftModel::DK1);
+  std::vector<PoseSample> poses;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().samples >= 50; }, poses, "50 samples"));
+  dk1.unplug();
+  dk2.replug();
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().reconnect_failures >= 3; }, poses, "three refused reconnections"));
+  EXPECT_FALSE(r.connected());
+  EXPECT_FALSE(dk2.interface_claimed());
+  bool named = false;
+  for (const auto& e : r.take_events())
+    named |= e.kind == StreamEvent::Kind::OpenFailed &&
+             e.detail.find("waiting for the tracker streamed before (serial FIRST): no tracker is 'FIRST' (attached: DK2 bus 001 "
+                           "address 003 serial OTHER)") != std::string::npos;
+  EXPECT_TRUE(named);
+  dk1.replug();
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.connected(); }, poses, "the same tracker back"));
+  EXPECT_EQ(r.model(), RiftModel::DK1);
+  EXPECT_TRUE(dk1.interface_claimed());
+  EXPECT_FALSE(dk2.interface_claimed());
 }
