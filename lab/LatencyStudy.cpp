@@ -131,6 +131,7 @@ int64_t LatencyStudy::steps() const {
 std::string LatencyStudy::run() {
   const LatencySpec& a = s_;
   auto step = [this](const std::string& what) {
+    if (stop_requested && stop_requested()) throw StudyStopped(what);
     if (on_step) on_step(what);
   };
   auto note = [this](const std::string& n) {

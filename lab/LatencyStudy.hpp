@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,11 @@ struct LatencySpec {
   bool no_field_sync = false;
 };
 
+// Thrown by run() when stop_requested said so: `what()` names the step not run.
+struct StudyStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class LatencyStudy {
  public:
   // InputError naming the option for a bad value, before anything is written.
@@ -40,6 +46,10 @@ class LatencyStudy {
   // Steps of the progress: architectures, sweep points, apparatus, tables.
   int64_t steps() const;
   std::function<void(const std::string&)> on_step;
+  // Polled before each step: true ends the study there (run() throws StudyStopped). Every file written
+  // until then is whole (each is written through a temporary and a rename); table.md and summary.json,
+  // written last, are not written.
+  std::function<bool()> stop_requested;
   // Runs everything and writes into spec.out_dir; returns the markdown table.
   std::string run();
   // What the user should be told besides the table (plots not made, ...).

@@ -131,3 +131,75 @@ TEST(RunInterruption, SigintAndSigtermStopTheCommandCleanly) {
     EXPECT_EQ(temporaries_in(d.path()), 0u) << level;
   }
 }
+
+#include "lab/LatencyStudy.hpp"
+
+// The latency laboratory stops before the step after a stop request: the
+// steps before it wrote whole files, the table and summary (written last) are
+// not written, and nothing temporary is left.
+TEST(LatencyInterruption, AStopRequestEndsTheStudyBeforeTheNextStep) {
+  TempDir d;
+  lab::LatencySpec spec;
+  spec.out_dir = d.file("lab");
+  spec.frames = 30;
+  spec.no_apparatus = true;
+  lab::LatencyStudy study(spec);
+  const int64_t steps = study.steps();
+  ASSERT_GT(steps, 10);
+  int polls = 0;
+  std::vector<std::string> done;
+  study.on_step = [&done](const std::string& what) { done.push_back(what); };
+  study.stop_requested = [&polls, steps] { return ++polls > steps - 3; };  // stop in the sweeps, after the architectures
+  try {
+    study.run();
+    FAIL() << "the study ran to its end";
+  } catch (const lab::StudyStopped& e) {
+    EXPECT_EQ(done.size(), static_cast<size_t>(steps - 3));
+    EXPECT_FALSE(std::string(e.what()).empty());
+  }
+  EXPECT_TRUE(fs::exists(d.file("lab/error-over-time.csv")));  // written after the architectures
+  EXPECT_FALSE(fs::exists(d.file("lab/table.md")));
+  EXPECT_FALSE(fs::exists(d.file("lab/summary.json")));
+  EXPECT_EQ(temporaries_in(d.path()), 0u);
+}
+
+// `arpsim latency` asked to stop by SIGINT once its first step is done: exit
+// 130, a message naming what was not run, no table, no temporaries.
+TEST(LatencyInterruption, SigintStopsTheCommandCleanly) {
+  TempDir d;
+  std::vector<std::string> args = {ARPSIM_BINARY, "latency", "--frames", "600", "--no-apparatus", "--out-dir", d.file("lab")};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int err[2];
+  ASSERT_EQ(::pipe(err), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::dup2(err[1], STDERR_FILENO);
+    ::close(err[0]);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  ::close(err[1]);
+  // The progress line's first update comes after the first step; dozens more steps (the sweeps) follow.
+  std::string said;
+  char buf[512];
+  while (said.find('%') == std::string::npos) {
+    const ssize_t n = ::read(err[0], buf, sizeof buf);
+    if (n <= 0) break;
+    said.append(buf, static_cast<size_t>(n));
+  }
+  ::kill(pid, SIGINT);
+  for (ssize_t n; (n = ::read(err[0], buf, sizeof buf)) > 0;) said.append(buf, static_cast<size_t>(n));
+  ::close(err[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << said;
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << said;
+  EXPECT_NE(said.find("arpsim latency: stopped by SIGINT before '"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(d.file("lab/table.md")));
+  EXPECT_EQ(temporaries_in(d.path()), 0u);
+}

@@ -1,11 +1,13 @@
 // arpsim latency: the latency laboratory (lab::LatencyStudy): the ARP beside
 // a conventional pipeline, Slats and just-in-time pixels on one head motion;
 // tables, plots, sweeps, Olano et al.'s figures and the pendulum apparatus.
+#include <csignal>
 #include <cstdio>
 
 #include "Commands.hpp"
 #include "CommonOptions.hpp"
 #include "MotionOptions.hpp"
+#include "common/Interrupt.hpp"
 #include "lab/LatencyStudy.hpp"
 
 namespace arp::app {
@@ -24,7 +26,19 @@ int run_latency(LatencyArgs& a) {
   lab::LatencyStudy study(a.spec);
   ProgressLine progress("latency", !a.quiet, study.steps());
   study.on_step = [&progress](const std::string& what) { progress.step(what); };
-  std::printf("%s\n", study.run().c_str());
+  const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop before the next step; every file written is whole
+  study.stop_requested = interrupt_requested;
+  std::string table;
+  try {
+    table = study.run();
+  } catch (const lab::StudyStopped& e) {
+    progress.finish();
+    const int sig = interrupt_signal();
+    std::fprintf(stderr, "arpsim latency: stopped by %s before '%s'; the files in %s are whole; table.md and summary.json were not written\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", e.what(), a.spec.out_dir.c_str());
+    return interrupted_exit_status(sig);
+  }
+  std::printf("%s\n", table.c_str());
   for (const auto& n : study.notes()) std::printf("  note: %s\n", n.c_str());
   std::printf("arpsim latency: wrote %s (table.md, summary.json, error-over-time, latency%s%s)\n", a.spec.out_dir.c_str(),
               a.spec.no_sweeps ? "" : ", speed-sweep, horizon-sweep, overload", a.spec.no_apparatus ? "" : ", apparatus.vcd + .gtkw");
