@@ -351,4 +351,10 @@ TEST(DatasetImportCli, SummaryWarningsAndEdits) {
     EXPECT_NE(e.output.find(b.says), std::string::npos) << b.args << "\n" << e.output;
     EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv"))) << b.args;
   }
+  // Resampling a day-long span at 10 kHz would be a billion samples: refused before anything is made.
+  std::ofstream(d.file("long.txt")) << "0 0 1 0 0 0\n100000 1 1 0 0 0\n";
+  const auto big = run_command(arpsim + " tracker import " + d.file("long.txt") + " " + d.file("bad.csv") + " --resample 10000");
+  EXPECT_EQ(big.status, 2) << big.output;
+  EXPECT_NE(big.output.find("would make 1000000000 samples"), std::string::npos) << big.output;
+  EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv")));
 }

@@ -128,6 +128,12 @@ int run_import(const ImportArgs& a) {
     if (samples.size() < 2) throw InputError(a.in, "", "fewer than two samples differ; nothing to import");
   }
   if (a.resample_hz > 0) {
+    const double n = static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12 * a.resample_hz;
+    if (n > 1e8)
+      throw InputError("--resample", std::to_string(a.resample_hz),
+                       "would make " + std::to_string(static_cast<int64_t>(n)) + " samples of this " +
+                           std::to_string(static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12) +
+                           " s dataset (at most 100 million; is the time unit right?)");
     samples = tracker::resample(samples, a.resample_hz);
     std::printf("  --resample: %zu samples at %.1f Hz (spherical linear interpolation)\n", samples.size(), a.resample_hz);
   }
