@@ -34,7 +34,7 @@ struct LatencySpec {
   bool no_field_sync = false;
 };
 
-// Thrown by run() when stop_requested said so: `what()` names the step not run.
+// Thrown by run() when stop_requested said so: `what()` names the last step finished.
 struct StudyStopped : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -46,9 +46,9 @@ class LatencyStudy {
   // Steps of the progress: architectures, sweep points, apparatus, tables.
   int64_t steps() const;
   std::function<void(const std::string&)> on_step;
-  // Polled before each step: true ends the study there (run() throws StudyStopped). Every file written
-  // until then is whole (each is written through a temporary and a rename); table.md and summary.json,
-  // written last, are not written.
+  // Polled as each step finishes: true ends the study there (run() throws StudyStopped). Every file
+  // written until then is whole (each is written through a temporary and a rename); table.md and
+  // summary.json, written last, are not written.
   std::function<bool()> stop_requested;
   // Runs everything and writes into spec.out_dir; returns the markdown table.
   std::string run();

@@ -40,3 +40,23 @@ TEST(LiveLoop, SyntheticMotionUntilStoppedIsGeneratedAsNeeded) {
   EXPECT_LT(worst, 64 << 20);
 #endif
 }
+
+#include "common/InputError.hpp"
+
+// --device chooses the tracker of --live usb: given without it (with a trace, or alone) it is refused,
+// not ignored.
+TEST(LiveLoop, ADeviceWithoutLiveInputIsRefused) {
+  for (const std::string trace : {"", "some.csv"}) {
+    sim::LiveSpec s;
+    s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48"});
+    s.memories.scene = "";
+    s.trace = trace;
+    s.device = "1:2";
+    try {
+      sim::LiveLoop loop(s);
+      ADD_FAILURE() << "accepted --device with trace '" << trace << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--device: 1:2: chooses the tracker of --live usb"), std::string::npos) << e.what();
+    }
+  }
+}

@@ -131,6 +131,10 @@ TEST(DatasetImport, BadLayoutsAndColumnsAreRefused) {
   DatasetLayout mixed;
   ASSERT_TRUE(parse_columns("t=1,qw=2,qx=3,qy=4,qz=5,rx=6", mixed.columns, why));
   EXPECT_NE(layout_problem(mixed).find("not both"), std::string::npos);
+  DatasetLayout upper;  // the reader uses the order as given: only lower-case x, y, z
+  ASSERT_TRUE(parse_columns("t=1,rx=2,ry=3,rz=4", upper.columns, why));
+  upper.euler_order = "YXZ";
+  EXPECT_NE(layout_problem(upper).find("lower case"), std::string::npos);
   DatasetLayout partial;
   ASSERT_TRUE(parse_columns("t=1,rx=2,ry=3", partial.columns, why));
   EXPECT_NE(layout_problem(partial).find("all of"), std::string::npos);
@@ -143,9 +147,13 @@ TEST(DatasetImport, BadLayoutsAndColumnsAreRefused) {
       {"0 1 0 0 0\n1 1 0 0 0\n", "t=time,qw=2,qx=3,qy=4,qz=5", "columns are named ('time') but the file has no header"},
       {"t w x y z\n0 1 0 0 0\n", "t=t,qw=w,qx=x,qy=y,qz=q", "the header has no column 'q' (the qz)"},
       {"0 1 0 0 0\n1 one 0 0 0\n", "t=1,qw=2,qx=3,qy=4,qz=5", "line 2: quaternion 'one' is not a finite number"},
-      {"0 0 0\n1 0 nan\n", "t=1,rx=2,ry=3,rz=3", "line 2: angle 'nan' is not a finite number"},
+      {"0 0 0 0\n1 0 nan 0\n", "t=1,rx=2,ry=3,rz=4", "line 2: angle 'nan' is not a finite number"},
       {"0 1 0 0 0\n1 1 0 0 0\n0.5 1 0 0 0\n", "t=1,qw=2,qx=3,qy=4,qz=5", "line 3: timestamp 0.5 goes back"},
       {"0 x 1 0 0 0\n1 0 1 0 0 0\n", "", "line 1: frame id 'x' is not a finite number"},  // a bad first line is data, not a header
+      {"nan nan nan nan nan nan\n0 0 1 0 0 0\n1 1 1 0 0 0\n", "", "line 1: timestamp 'nan' is not a finite number"},  // not a header
+      {"0 1 0 0 0\n0 1 0 0 0\n", "t=1,qw=2,qx=3,qy=4,qz=5", "every sample has the same timestamp"},
+      {"t w w y z\n0 1 0 0 0\n1 1 0 0 0\n", "t=t,qw=w,qx=3,qy=y,qz=z", "the header names 'w' more than once"},
+      {"0 1 0 0 0\n1 1 0 0 0\n", "t=1,qw=1,qx=3,qy=4,qz=5", "the time and the qw are the same column"},
   };
   for (const auto& f : files) {
     {
@@ -241,6 +249,11 @@ TEST(MotionSummary, FlagsWhatAHumanHeadDoesNot) {
   auto glance = turning(0, 100, 2.0);
   for (size_t i = 50; i <= 100; ++i) glance[i].orientation = glm::angleAxis(91 * kDeg, glm::dvec3(1, 0, 0));
   EXPECT_FALSE(mentions(motion_warnings(summarize_motion(glance)), "axes"));
+  // At 5 Hz, tilted at 0.2 .. 1.0 s and upright again at 1.2 s: tilted for 1.0 s (until the upright sample).
+  auto slow = turning(0, 5, 2.0);
+  for (size_t i = 1; i <= 5; ++i) slow[i].orientation = glm::angleAxis(120 * kDeg, glm::dvec3(0, 0, 1));
+  EXPECT_NEAR(summarize_motion(slow).longest_tilt_s, 1.0, 1e-9);
+  EXPECT_TRUE(mentions(motion_warnings(summarize_motion(slow)), "axes"));
 
   // A 30 Hz tracker logged at 90 Hz: two of every three samples repeat; a 0.5 s hole; bursts 0.06 ms apart.
   auto log = turning(30, 90, 3.0);
@@ -351,6 +364,12 @@ TEST(DatasetImportCli, SummaryWarningsAndEdits) {
     EXPECT_NE(e.output.find(b.says), std::string::npos) << b.args << "\n" << e.output;
     EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv"))) << b.args;
   }
+  // A dataset shorter than one period of the resampling rate: refused, not a one-sample trace.
+  std::ofstream(d.file("short.txt")) << "0 0 1 0 0 0\n0.0005 1 1 0 0 0\n";
+  const auto one = run_command(arpsim + " tracker import " + d.file("short.txt") + " " + d.file("bad.csv") + " --resample 1000");
+  EXPECT_EQ(one.status, 2) << one.output;
+  EXPECT_NE(one.output.find("leaves fewer than two samples"), std::string::npos) << one.output;
+  EXPECT_FALSE(std::filesystem::exists(d.file("bad.csv")));
   // Resampling a day-long span at 10 kHz would be a billion samples: refused before anything is made.
   std::ofstream(d.file("long.txt")) << "0 0 1 0 0 0\n100000 1 1 0 0 0\n";
   const auto big = run_command(arpsim + " tracker import " + d.file("long.txt") + " " + d.file("bad.csv") + " --resample 10000");

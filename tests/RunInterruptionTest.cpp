@@ -134,7 +134,7 @@ TEST(RunInterruption, SigintAndSigtermStopTheCommandCleanly) {
 
 #include "lab/LatencyStudy.hpp"
 
-// The latency laboratory stops before the step after a stop request: the
+// The latency laboratory stops as the step in flight finishes after a stop request: the
 // steps before it wrote whole files, the table and summary (written last) are
 // not written, and nothing temporary is left.
 TEST(LatencyInterruption, AStopRequestEndsTheStudyBeforeTheNextStep) {
@@ -199,7 +199,7 @@ TEST(LatencyInterruption, SigintStopsTheCommandCleanly) {
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status)) << said;
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << said;
-  EXPECT_NE(said.find("arpsim latency: stopped by SIGINT before '"), std::string::npos) << said;
+  EXPECT_NE(said.find("arpsim latency: stopped by SIGINT after '"), std::string::npos) << said;
   EXPECT_FALSE(fs::exists(d.file("lab/table.md")));
   EXPECT_EQ(temporaries_in(d.path()), 0u);
 }

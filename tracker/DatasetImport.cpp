@@ -60,6 +60,14 @@ bool number(const std::string& s, double& v) {
   return end == s.c_str() + s.size() && std::isfinite(v);
 }
 
+// Reads as a number of any kind (nan and inf too): a line with one is data, never a header.
+bool numeric_looking(const std::string& s) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+
 // The arpsim axis a signed axis name points along: "+x" / "x" / "-y" ...
 bool signed_axis(const std::string& s, glm::dvec3& out) {
   const std::string t = lower(trim(s));
@@ -152,7 +160,9 @@ std::string layout_problem(const DatasetLayout& l) {
   if (quat && euler) return "give a quaternion (qw qx qy qz) or Euler angles (rx ry rz), not both";
   if (quat != 4 && euler != 3) return "the orientation needs all of qw, qx, qy, qz or all of rx, ry, rz";
   std::string why, order;
-  if (euler && !parse_euler_order(l.euler_order, order, why)) return "Euler order '" + quoted(l.euler_order) + "' " + why;
+  // Exactly as the reader uses it: lower-case x, y, z once each.
+  if (euler && (!parse_euler_order(l.euler_order, order, why) || order != l.euler_order))
+    return "Euler order '" + quoted(l.euler_order) + "' must name x, y and z once each, in lower case";
   return "";
 }
 
@@ -213,8 +223,7 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
     if (seps[0] == ' ') f.erase(std::remove(f.begin(), f.end(), std::string()), f.end());  // runs of spaces
     if (!resolved) {
       // The first line: a header when no field is a number (a data line with a bad field is reported, not skipped).
-      double probe;
-      const bool header = std::none_of(f.begin(), f.end(), [&probe](const std::string& s) { return number(s, probe); });
+      const bool header = std::none_of(f.begin(), f.end(), numeric_looking);
       width = f.size();
       for (int r = 0; r < kRoles; ++r) {
         const std::string& s = specs[static_cast<size_t>(r)];
@@ -228,11 +237,18 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
           col[static_cast<size_t>(r)] = static_cast<int>(n - 1);
         } else {
           if (!header) throw InputError(path, where, "columns are named ('" + quoted(s) + "') but the file has no header line");
-          const auto it = std::find_if(f.begin(), f.end(), [&s](const std::string& h) { return lower(h) == lower(s); });
+          auto named = [&s](const std::string& h) { return lower(h) == lower(s); };
+          const auto it = std::find_if(f.begin(), f.end(), named);
           if (it == f.end()) throw InputError(path, where, std::string("the header has no column '") + quoted(s) + "' (the " + kRoleName[r] + ")");
+          if (std::count_if(f.begin(), f.end(), named) > 1)
+            throw InputError(path, where, "the header names '" + quoted(s) + "' more than once: give its number instead");
           col[static_cast<size_t>(r)] = static_cast<int>(it - f.begin());
         }
       }
+      for (int r = 0; r < kRoles; ++r)
+        for (int q = r + 1; q < kRoles; ++q)
+          if (col[static_cast<size_t>(r)] >= 0 && col[static_cast<size_t>(r)] == col[static_cast<size_t>(q)])
+            throw InputError(path, where, std::string("the ") + kRoleName[r] + " and the " + kRoleName[q] + " are the same column");
       resolved = true;
       if (header) continue;
     }
@@ -278,6 +294,7 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
     out.push_back(p);
   }
   if (out.size() < 2) throw InputError(path, "", "the dataset has fewer than two samples");
+  if (out.back().time_ps == out.front().time_ps) throw InputError(path, "", "every sample has the same timestamp: no motion in time");
   return out;
 }
 

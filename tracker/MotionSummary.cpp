@@ -46,10 +46,12 @@ MotionSummary summarize_motion(const std::vector<PoseSample>& v, const MotionPla
     const double tilt = tilt_deg(v[i].orientation);
     s.max_tilt_deg = std::max(s.max_tilt_deg, tilt);
     const double t = seconds(v[i].time_ps);
+    // A tilted stretch lasts until the first upright sample after it (or the trace's last sample).
     if (tilt > lim.max_tilt_deg) {
       if (tilted_since < 0) tilted_since = t;
       s.longest_tilt_s = std::max(s.longest_tilt_s, t - tilted_since);
-    } else {
+    } else if (tilted_since >= 0) {
+      s.longest_tilt_s = std::max(s.longest_tilt_s, t - tilted_since);
       tilted_since = -1;
     }
     if (i == 0) continue;

@@ -277,7 +277,9 @@ struct RiftStream::Impl {
     const int k = choose_tracker(infos, streamed_serial.empty() ? opt.device : streamed_serial, error);
     if (k < 0) {
       libusb_free_device_list(list, 1);
-      if (!streamed_serial.empty()) error = "waiting for the tracker streamed before (serial " + streamed_serial + "): " + error;
+      // None at all keeps choose_tracker's "no Oculus Rift ..." (an absent device is not a refusal: step() stays quiet).
+      if (!streamed_serial.empty() && !infos.empty())
+        error = "waiting for the tracker streamed before (serial " + streamed_serial + "): " + error;
       return false;
     }
     libusb_device* dev = all[static_cast<size_t>(k)].device;

@@ -25,12 +25,12 @@ std::vector<PoseSample> resample(const std::vector<PoseSample>& v, double hz) {
   if (v.empty()) return out;
   const int64_t t0 = v.front().time_ps, t1 = v.back().time_ps;
   const double step_ps = 1e12 / hz;
-  if (static_cast<double>(t1 - t0) / step_ps > 1e8)
-    throw std::invalid_argument("resample: more than 100 million samples at this rate");
+  const double last_k = std::floor(static_cast<double>(t1 - t0) / step_ps);
+  if (last_k >= kMaxResampled) throw std::invalid_argument("resample: more than 10 million samples at this rate");
+  out.reserve(static_cast<size_t>(last_k) + 1);
   size_t j = 0;  // v[j] <= t < v[j + 1]
-  for (int64_t k = 0;; ++k) {
+  for (int64_t k = 0; k <= static_cast<int64_t>(last_k); ++k) {
     const double td = static_cast<double>(t0) + static_cast<double>(k) * step_ps;
-    if (td > static_cast<double>(t1)) break;
     const int64_t t = static_cast<int64_t>(std::llround(td));
     while (j + 1 < v.size() && v[j + 1].time_ps <= t) ++j;
     PoseSample p = v[j];

@@ -15,7 +15,9 @@ namespace arp::tracker {
 size_t drop_repeats(std::vector<PoseSample>& samples);
 
 // Samples at first + k / hz for every k up to the last sample's time. Samples
-// at the same time: the later one counts. hz must be positive and finite.
+// at the same time: the later one counts. hz must be positive and finite, and
+// the result at most kMaxResampled samples (about 1 GB): std::invalid_argument otherwise.
+constexpr double kMaxResampled = 1e7;
 std::vector<PoseSample> resample(const std::vector<PoseSample>& samples, double hz);
 
 }  // namespace arp::tracker

@@ -26,7 +26,7 @@ int run_latency(LatencyArgs& a) {
   lab::LatencyStudy study(a.spec);
   ProgressLine progress("latency", !a.quiet, study.steps());
   study.on_step = [&progress](const std::string& what) { progress.step(what); };
-  const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop before the next step; every file written is whole
+  const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop as the step in flight finishes; every file written is whole
   study.stop_requested = interrupt_requested;
   std::string table;
   try {
@@ -34,7 +34,7 @@ int run_latency(LatencyArgs& a) {
   } catch (const lab::StudyStopped& e) {
     progress.finish();
     const int sig = interrupt_signal();
-    std::fprintf(stderr, "arpsim latency: stopped by %s before '%s'; the files in %s are whole; table.md and summary.json were not written\n",
+    std::fprintf(stderr, "arpsim latency: stopped by %s after '%s'; the files in %s are whole; table.md and summary.json were not written\n",
                  sig == SIGTERM ? "SIGTERM" : "SIGINT", e.what(), a.spec.out_dir.c_str());
     return interrupted_exit_status(sig);
   }

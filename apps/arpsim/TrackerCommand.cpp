@@ -129,12 +129,14 @@ int run_import(const ImportArgs& a) {
   }
   if (a.resample_hz > 0) {
     const double n = static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12 * a.resample_hz;
-    if (n > 1e8)
+    if (n >= tracker::kMaxResampled)
       throw InputError("--resample", std::to_string(a.resample_hz),
                        "would make " + std::to_string(static_cast<int64_t>(n)) + " samples of this " +
                            std::to_string(static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12) +
-                           " s dataset (at most 100 million; is the time unit right?)");
+                           " s dataset (at most 10 million; is the time unit right?)");
     samples = tracker::resample(samples, a.resample_hz);
+    if (samples.size() < 2)
+      throw InputError("--resample", std::to_string(a.resample_hz), "leaves fewer than two samples: the dataset is shorter than one period");
     std::printf("  --resample: %zu samples at %.1f Hz (spherical linear interpolation)\n", samples.size(), a.resample_hz);
   }
   if (a.drop_repeats || a.resample_hz > 0)

@@ -382,6 +382,8 @@ RiftEmulator::~RiftEmulator() {
   }
   umockdev_testbed_remove_device(s_->testbed, s_->syspath.c_str());
   umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
+  // The testbed may outlive this device: nothing may reach this State through the handler any more.
+  g_signal_handlers_disconnect_by_data(s_->handler, s_.get());
   g_clear_object(&s_->handler);
   s_->testbed = nullptr;
   release_testbed();
