@@ -13,6 +13,7 @@ PKGS=(
   libsdl2-dev xvfb xauth
   libsystemc-dev
   libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
+  verilator yosys
   "$@"
 )
 missing=()

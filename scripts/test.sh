@@ -3,7 +3,8 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer build; then the threaded
 # tracker path (the libusb stream against the emulated devices) once more
 # under ThreadSanitizer, building only what those tests link. Fails on the
-# first error. The sanitizer builds compile at -O1 with line tables only
+# first error. The release build also verilates the RTL (rtl_model/hdl) and
+# runs its benches; it fails if Verilator is missing. The sanitizer builds compile at -O1 with line tables only
 # (-g1): the sanitizers' reports keep function, file and line, and the build
 # takes less than half the time of -O2 -g (RunCommand.cpp: 16 s against 37 s).
 set -euo pipefail
@@ -11,7 +12,7 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 jobs="$(nproc)"
 echo "== release build =="
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DARPSIM_REQUIRE_HDL=ON >/dev/null
 cmake --build build -j"$jobs"
 (cd build && ctest --output-on-failure -j"$jobs")
 echo "== ASan + UBSan build =="

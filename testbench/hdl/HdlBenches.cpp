@@ -1,0 +1,454 @@
+// RTL benches: every verilated module of rtl_model/hdl (HdlModels.hpp, one
+// class per module x width configuration x mutant) driven through its
+// valid/ready ports with directed and seeded-random vectors, its outputs
+// compared bit for bit with the datapath functions (rtl_model/datapath) and
+// its latency in clocks with the configured value: exactly while the output
+// is always taken, at least under random back-pressure. Each bench counts
+// the directed cases it reached (functional coverage) and fails if one was
+// never reached. A mutant (MUTANT != 0, a deliberate bug selected by one RTL
+// parameter) must make its bench report a mismatch: the negative control.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "HdlModels.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+
+namespace {
+
+using namespace arp;
+
+// One width configuration (rtl_model/hdl/configurations.txt).
+struct HdlConfig {
+  int vec_frac, mat_frac, rot_frac, rot_rounding, divider, recip_index_bits, recip_frac_bits, newton_steps,
+      quot_frac, div_rounding, texel_frac, texel_rounding, face_size, rotate_latency, address_latency;
+  dp::DatapathWidths widths() const {
+    dp::DatapathWidths w;
+    w.vec_frac = vec_frac;
+    w.mat_frac = mat_frac;
+    w.rot_frac = rot_frac;
+    w.rot_rounding = static_cast<dp::Rounding>(rot_rounding);
+    w.divider = static_cast<dp::DividerKind>(divider);
+    w.recip_index_bits = recip_index_bits;
+    w.recip_frac_bits = recip_frac_bits;
+    w.newton_steps = newton_steps;
+    w.quot_frac = quot_frac;
+    w.div_rounding = static_cast<dp::Rounding>(div_rounding);
+    w.texel_frac = texel_frac;
+    w.texel_rounding = static_cast<dp::Rounding>(texel_rounding);
+    return w;
+  }
+};
+
+// ---- bit fields of Verilator's port types (CData..QData, VlWide) ----------
+template <class T>
+bool get_bit(const T& s, int b) { return (static_cast<uint64_t>(s) >> b) & 1u; }
+template <std::size_t N>
+bool get_bit(const VlWide<N>& s, int b) { return (s.at(static_cast<size_t>(b / 32)) >> (b % 32)) & 1u; }
+template <class T>
+void set_bit(T& s, int b, bool v) {
+  const uint64_t m = uint64_t{1} << b;
+  s = static_cast<T>(v ? (static_cast<uint64_t>(s) | m) : (static_cast<uint64_t>(s) & ~m));
+}
+template <std::size_t N>
+void set_bit(VlWide<N>& s, int b, bool v) {
+  const uint32_t m = 1u << (b % 32);
+  auto& w = s.at(static_cast<size_t>(b / 32));
+  w = v ? (w | m) : (w & ~m);
+}
+template <class T>
+void put_field(T& s, int lsb, int width, int64_t v) {
+  for (int b = 0; b < width; ++b) set_bit(s, lsb + b, (static_cast<uint64_t>(v) >> b) & 1u);
+}
+template <class T>
+uint64_t get_unsigned(const T& s, int lsb, int width) {
+  uint64_t v = 0;
+  for (int b = 0; b < width; ++b) v |= uint64_t{get_bit(s, lsb + b)} << b;
+  return v;
+}
+template <class T>
+int64_t get_signed(const T& s, int lsb, int width) {
+  const uint64_t u = get_unsigned(s, lsb, width);
+  const uint64_t sign = uint64_t{1} << (width - 1);
+  return static_cast<int64_t>((u ^ sign) - sign);
+}
+
+// ---- the valid/ready driver -----------------------------------------------
+struct DriveResult {
+  size_t compared = 0, mismatches = 0;
+  std::string first_mismatch;
+  int min_latency = 1 << 30, max_latency = 0;
+};
+
+template <class Top>
+void tick(Top& top) {
+  top.clk = 1;
+  top.eval();
+  top.clk = 0;
+  top.eval();
+}
+
+// Streams every input through `top`: `apply` puts one on the input ports,
+// `check` compares the output ports with input i's expectation and returns a
+// description of the difference ("" when equal). in_rate and ready_rate are
+// the chances per clock that an input is offered and that the output is taken.
+template <class Top>
+DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& apply,
+                  const std::function<std::string(const Top&, size_t)>& check, double in_rate, double ready_rate,
+                  uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u01(0, 1);
+  DriveResult r;
+  top.clk = 0;
+  top.rst_n = 0;
+  top.in_valid = 0;
+  top.out_ready = 1;
+  top.eval();
+  tick(top);
+  tick(top);
+  top.rst_n = 1;
+  std::deque<int64_t> accepted_at;  // clock of each accepted input not yet delivered
+  size_t next = 0, delivered = 0;
+  const int64_t limit = static_cast<int64_t>(n) * 64 + 1000;
+  for (int64_t cycle = 0; delivered < n; ++cycle) {
+    if (cycle > limit) {
+      r.mismatches++;
+      if (r.first_mismatch.empty())
+        r.first_mismatch = "stream stalled: " + std::to_string(delivered) + " of " + std::to_string(n) + " outputs after " +
+                           std::to_string(cycle) + " clocks";
+      break;
+    }
+    const bool offer = next < n && u01(rng) < in_rate;
+    top.in_valid = offer;
+    if (offer) apply(top, next);
+    top.out_ready = u01(rng) < ready_rate;
+    top.eval();
+    const bool accept = offer && top.in_ready;
+    if (top.out_valid && top.out_ready) {
+      if (accepted_at.empty()) {
+        r.mismatches++;
+        if (r.first_mismatch.empty()) r.first_mismatch = "an output at clock " + std::to_string(cycle) + " with no input";
+        break;
+      }
+      const int latency = static_cast<int>(cycle - accepted_at.front());
+      accepted_at.pop_front();
+      r.min_latency = std::min(r.min_latency, latency);
+      r.max_latency = std::max(r.max_latency, latency);
+      const std::string d = check(top, delivered);
+      r.compared++;
+      if (!d.empty()) {
+        r.mismatches++;
+        if (r.first_mismatch.empty()) r.first_mismatch = "output " + std::to_string(delivered) + ": " + d;
+      }
+      ++delivered;
+    }
+    tick(top);
+    if (accept) {
+      accepted_at.push_back(cycle);
+      ++next;
+    }
+  }
+  return r;
+}
+
+// Both phases: unstalled (every latency exact) then random gaps and back-pressure.
+template <class Top>
+void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&, size_t)>& apply,
+               const std::function<std::string(const Top&, size_t)>& check, const std::string& coverage) {
+  size_t mismatches = 0;
+  std::string first;
+  {
+    Top top;
+    const DriveResult r = drive<Top>(top, n, apply, check, 1.0, 1.0, 1);
+    if (!mutant) {
+      EXPECT_EQ(r.min_latency, latency) << "unstalled latency in clocks";
+      EXPECT_EQ(r.max_latency, latency) << "unstalled latency in clocks";
+      EXPECT_EQ(r.compared, n);
+    }
+    mismatches += r.mismatches;
+    first = r.first_mismatch;
+    std::printf("unstalled: %zu outputs compared, %zu mismatches, latency %d..%d clocks\n", r.compared, r.mismatches,
+                r.min_latency, r.max_latency);
+  }
+  {
+    Top top;
+    const DriveResult r = drive<Top>(top, n, apply, check, 0.7, 0.6, 2);
+    if (!mutant) {
+      EXPECT_GE(r.min_latency, latency) << "latency under back-pressure";
+      EXPECT_EQ(r.compared, n);
+    }
+    mismatches += r.mismatches;
+    if (first.empty()) first = r.first_mismatch;
+    std::printf("back-pressure (70 %% offered, 60 %% taken): %zu outputs compared, %zu mismatches, latency %d..%d clocks\n",
+                r.compared, r.mismatches, r.min_latency, r.max_latency);
+  }
+  std::printf("directed-case coverage: %s\n", coverage.c_str());
+  if (mutant) {
+    EXPECT_GT(mismatches, 0u) << "the mutant passed the bench: the vectors do not reach what it breaks";
+    if (!first.empty()) std::printf("mutant caught: %s\n", first.c_str());
+  } else {
+    EXPECT_EQ(mismatches, 0u) << first;
+  }
+}
+
+// Coverage bins: each directed case must be reached at least once.
+class Coverage {
+ public:
+  void declare(const std::string& bin) { bins_[bin]; }
+  void hit(const std::string& bin) { bins_[bin]++; }
+  void expect_all_hit() const {
+    for (const auto& [bin, count] : bins_) EXPECT_GT(count, 0u) << "directed case never reached: " << bin;
+  }
+  std::string summary() const {
+    std::ostringstream s;
+    const char* sep = "";
+    for (const auto& [bin, count] : bins_) {
+      s << sep << bin << " " << count;
+      sep = ", ";
+    }
+    return s.str();
+  }
+
+ private:
+  std::map<std::string, size_t> bins_;
+};
+
+dp::Vec3q random_unit_vector(std::mt19937& rng, int frac) {
+  std::normal_distribution<double> g(0, 1);
+  double x = 0, y = 0, z = 0, n = 0;
+  while (n < 1e-6) {
+    x = g(rng), y = g(rng), z = g(rng);
+    n = std::sqrt(x * x + y * y + z * z);
+  }
+  return {static_cast<int32_t>(dp::quantise_real(x / n, frac, frac + 2)),
+          static_cast<int32_t>(dp::quantise_real(y / n, frac, frac + 2)),
+          static_cast<int32_t>(dp::quantise_real(z / n, frac, frac + 2))};
+}
+
+// ---- orientation matrix unit ---------------------------------------------
+template <class Top>
+void bench_omu(const HdlConfig& cfg, int mutant) {
+  const dp::DatapathWidths w = cfg.widths();
+  const dp::RotateParams params(w);
+  const int mw = w.mat_frac + 2, vw = w.vec_frac + 2, rw = w.rot_frac + 2;
+  const int shift = w.mat_frac + w.vec_frac - w.rot_frac;
+  const int64_t mat_one = int64_t{1} << w.mat_frac, vec_one = int64_t{1} << w.vec_frac;
+  const dp::SignedRange mat_range(mw), vec_range(vw), rot_range(rw);
+  std::vector<dp::Mat3q> ms;
+  std::vector<dp::Vec3q> vs;
+  auto add = [&](const dp::Mat3q& m, const dp::Vec3q& v) {
+    ms.push_back(m);
+    vs.push_back(v);
+  };
+  // Directed: the 24 axis-aligned rotations (signed permutations of det +1)
+  // times the axes and (+-1, +-1, +-1).
+  std::vector<dp::Vec3q> vecs;
+  for (int a = 0; a < 3; ++a)
+    for (int s : {1, -1}) {
+      dp::Vec3q v{0, 0, 0};
+      (a == 0 ? v.x : a == 1 ? v.y : v.z) = static_cast<int32_t>(s * vec_one);
+      vecs.push_back(v);
+    }
+  for (int sx : {1, -1})
+    for (int sy : {1, -1})
+      for (int sz : {1, -1})
+        vecs.push_back({static_cast<int32_t>(sx * vec_one), static_cast<int32_t>(sy * vec_one),
+                        static_cast<int32_t>(sz * vec_one)});
+  const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  for (int p = 0; p < 6; ++p)
+    for (int signs = 0; signs < 8; ++signs) {
+      const int parity = p < 3 ? 1 : -1;
+      const int sgn[3] = {signs & 1 ? -1 : 1, signs & 2 ? -1 : 1, signs & 4 ? -1 : 1};
+      if (parity * sgn[0] * sgn[1] * sgn[2] != 1) continue;  // rotations only
+      dp::Mat3q m{};
+      for (int r = 0; r < 3; ++r) m.m[3 * r + perms[p][r]] = static_cast<int32_t>(sgn[r] * mat_one);
+      for (const dp::Vec3q& v : vecs) add(m, v);
+    }
+  // Directed: saturation -- the extreme codes in every sign combination.
+  for (int64_t mc : {mat_range.hi, mat_range.lo})
+    for (int64_t vc : {vec_range.hi, vec_range.lo}) {
+      dp::Mat3q m{};
+      for (int i = 0; i < 9; ++i) m.m[i] = static_cast<int32_t>(i % 2 ? mat_range.lo + mat_range.hi - mc : mc);
+      add(m, {static_cast<int32_t>(vc), static_cast<int32_t>(vc), static_cast<int32_t>(vc)});
+      for (int i = 0; i < 9; ++i) m.m[i] = static_cast<int32_t>(mc);
+      add(m, {static_cast<int32_t>(vc), static_cast<int32_t>(vc), static_cast<int32_t>(vc)});
+    }
+  // Directed: exact ties of the rounding (a product sum of (2k + 1) / 2 LSB of the result), both signs.
+  if (shift > 0)
+    for (int64_t k : {0, 1, 2, 3, 100, -1, -2, -101}) {
+      const int64_t target = (2 * k + 1) * (int64_t{1} << (shift - 1));  // = m * v with m = 1 code
+      if (!vec_range.contains(target)) continue;
+      for (int row = 0; row < 3; ++row) {
+        dp::Mat3q m{};
+        m.m[3 * row] = 1;
+        add(m, {static_cast<int32_t>(target), 0, 0});
+      }
+    }
+  // Random: quantised rotations of quantised unit vectors, then arbitrary codes.
+  std::mt19937 rng(20261123);
+  std::normal_distribution<double> g(0, 1);
+  for (int i = 0; i < 200000; ++i) {
+    const dp::Quat q = dp::normalised({g(rng), g(rng), g(rng), g(rng)}, "bench");
+    add(dp::quantise_rotation(q, w.mat_frac), random_unit_vector(rng, w.vec_frac));
+  }
+  std::uniform_int_distribution<int64_t> mat_code(mat_range.lo, mat_range.hi), vec_code(vec_range.lo, vec_range.hi);
+  for (int i = 0; i < 50000; ++i) {
+    dp::Mat3q m{};
+    for (int k = 0; k < 9; ++k) m.m[k] = static_cast<int32_t>(mat_code(rng));
+    add(m, {static_cast<int32_t>(vec_code(rng)), static_cast<int32_t>(vec_code(rng)), static_cast<int32_t>(vec_code(rng))});
+  }
+
+  // Expectations and coverage from the datapath and the exact sums.
+  Coverage cov;
+  for (const char* b : {"axis-aligned rotation", "tie", "saturated high", "saturated low"}) cov.declare(b);
+  std::vector<dp::Vec3q> expected(ms.size());
+  for (size_t i = 0; i < ms.size(); ++i) {
+    expected[i] = dp::rotate(ms[i], vs[i], params);
+    const int32_t* m = ms[i].m;
+    int nonzero = 0;
+    for (int k = 0; k < 9; ++k) nonzero += m[k] != 0;
+    if (nonzero == 3 && std::abs(m[0]) + std::abs(m[1]) + std::abs(m[2]) == mat_one) cov.hit("axis-aligned rotation");
+    for (int r = 0; r < 3; ++r) {
+      const int64_t s = int64_t{m[3 * r]} * vs[i].x + int64_t{m[3 * r + 1]} * vs[i].y + int64_t{m[3 * r + 2]} * vs[i].z;
+      if (shift > 0 && (s & ((int64_t{1} << shift) - 1)) == (int64_t{1} << (shift - 1))) cov.hit("tie");
+      const double exact = std::ldexp(static_cast<double>(s), -shift);
+      if (exact > static_cast<double>(rot_range.hi) + 0.5) cov.hit("saturated high");
+      if (exact < static_cast<double>(rot_range.lo) - 0.5) cov.hit("saturated low");
+    }
+  }
+  auto apply = [&](Top& top, size_t i) {
+    for (int k = 0; k < 9; ++k) put_field(top.in_matrix, k * mw, mw, ms[i].m[k]);
+    put_field(top.in_vector, 0, vw, vs[i].x);
+    put_field(top.in_vector, vw, vw, vs[i].y);
+    put_field(top.in_vector, 2 * vw, vw, vs[i].z);
+  };
+  auto check = [&](const Top& top, size_t i) -> std::string {
+    const int64_t x = get_signed(top.out_vector, 0, rw), y = get_signed(top.out_vector, rw, rw),
+                  z = get_signed(top.out_vector, 2 * rw, rw);
+    const dp::Vec3q& e = expected[i];
+    if (x == e.x && y == e.y && z == e.z) return "";
+    std::ostringstream s;
+    s << "M = [";
+    for (int k = 0; k < 9; ++k) s << (k ? " " : "") << ms[i].m[k];
+    s << "], v = (" << vs[i].x << " " << vs[i].y << " " << vs[i].z << "): RTL (" << x << " " << y << " " << z
+      << "), datapath (" << e.x << " " << e.y << " " << e.z << ")";
+    return s.str();
+  };
+  std::printf("orientation matrix unit: %zu vectors\n", ms.size());
+  run_bench<Top>(ms.size(), cfg.rotate_latency, mutant != 0, apply, check, cov.summary());
+  if (mutant == 0) cov.expect_all_hit();
+}
+
+// ---- cube-face address generator -----------------------------------------
+template <class Top>
+void bench_cfag(const HdlConfig& cfg, int mutant) {
+  const dp::DatapathWidths w = cfg.widths();
+  const dp::AddressGeneratorParams params(w, cfg.face_size);
+  const int rw = w.rot_frac + 2;
+  const int uw = static_cast<int>(std::ceil(std::log2(cfg.face_size + 1))) + w.texel_frac;
+  const int64_t one = int64_t{1} << w.rot_frac;
+  const int64_t top_code = (int64_t{1} << (w.rot_frac + 1)) - 1;  // the largest |component| of the input contract
+  std::vector<dp::Vec3q> rs;
+  auto add = [&](int64_t x, int64_t y, int64_t z) {
+    rs.push_back({static_cast<int32_t>(x), static_cast<int32_t>(y), static_cast<int32_t>(z)});
+  };
+  // Directed: the axes, the zero vector, cube edges (two equal magnitudes)
+  // and corners (three) in every sign combination, at several magnitudes.
+  add(0, 0, 0);
+  for (int64_t mag : {one, int64_t{1}, one / 3, top_code, int64_t{12345} % top_code}) {
+    for (int a = 0; a < 3; ++a)
+      for (int s : {1, -1}) add(a == 0 ? s * mag : 0, a == 1 ? s * mag : 0, a == 2 ? s * mag : 0);
+    for (int sx : {1, -1})
+      for (int sy : {1, -1})
+        for (int sz : {1, -1}) {
+          add(sx * mag, sy * mag, sz * mag);           // corner
+          add(sx * mag, sy * mag, sz * (mag / 2));     // X = Y edge
+          add(sx * mag, sy * (mag / 2), sz * mag);     // X = Z edge
+          add(sx * (mag / 2), sy * mag, sz * mag);     // Y = Z edge
+          add(sx * mag, sy * (mag - 1), sz * (mag / 3));  // just off the edge
+        }
+  }
+  // Directed: every |ma| the input contract allows (every reciprocal table
+  // entry and every normaliser shift), with face coordinates at +-1 (the face
+  // edges, where positions clamp) and inside the face.
+  for (int64_t ma = 1; ma <= top_code; ++ma) {
+    add(ma, -ma, ma / 3);
+    add(-(ma / 2), ma, -ma);
+  }
+  // Random: quantised unit directions, then arbitrary codes within the contract.
+  std::mt19937 rng(20261124);
+  for (int i = 0; i < 200000; ++i) {
+    const dp::Vec3q v = random_unit_vector(rng, w.rot_frac);
+    add(v.x, v.y, v.z);
+  }
+  std::uniform_int_distribution<int64_t> code(-top_code, top_code);
+  for (int i = 0; i < 50000; ++i) add(code(rng), code(rng), code(rng));
+
+  Coverage cov;
+  for (int f = 0; f < 6; ++f) cov.declare(std::string("face ") + dp::face_name(f));
+  for (const char* b : {"tie |x| = |y|", "tie |x| = |z|", "tie |y| = |z|", "corner", "zero vector",
+                        "clamped to the face's last position", "position 0"})
+    cov.declare(b);
+  std::vector<dp::CubeAddress> expected(rs.size());
+  std::vector<bool> lut_hit(size_t{1} << w.recip_index_bits);
+  for (size_t i = 0; i < rs.size(); ++i) {
+    expected[i] = dp::generate_address(rs[i], params);
+    const int64_t ax = std::abs(int64_t{rs[i].x}), ay = std::abs(int64_t{rs[i].y}), az = std::abs(int64_t{rs[i].z});
+    const int64_t ma = std::max({ax, ay, az});
+    cov.hit(std::string("face ") + dp::face_name(expected[i].face));
+    if (ma > 0 && ax == ay && ax == ma) cov.hit("tie |x| = |y|");
+    if (ma > 0 && ax == az && ax == ma) cov.hit("tie |x| = |z|");
+    if (ma > 0 && ay == az && ay == ma) cov.hit("tie |y| = |z|");
+    if (ma > 0 && ax == ay && ay == az) cov.hit("corner");
+    if (ma == 0) cov.hit("zero vector");
+    if (expected[i].u == params.max_pos || expected[i].v == params.max_pos) cov.hit("clamped to the face's last position");
+    if (expected[i].u == 0 || expected[i].v == 0) cov.hit("position 0");
+    if (ma > 0) {
+      const int n = 64 - __builtin_clzll(static_cast<uint64_t>(ma));
+      const int64_t frac = ma - (int64_t{1} << (n - 1));
+      const int below = n - 1 - w.recip_index_bits;
+      lut_hit[static_cast<size_t>(below >= 0 ? frac >> below : frac << -below)] = true;
+    }
+  }
+  if (w.divider == dp::DividerKind::ReciprocalLut) {
+    cov.declare("every reciprocal table entry");
+    if (std::all_of(lut_hit.begin(), lut_hit.end(), [](bool b) { return b; })) cov.hit("every reciprocal table entry");
+  }
+  auto apply = [&](Top& top, size_t i) {
+    put_field(top.in_vector, 0, rw, rs[i].x);
+    put_field(top.in_vector, rw, rw, rs[i].y);
+    put_field(top.in_vector, 2 * rw, rw, rs[i].z);
+  };
+  auto check = [&](const Top& top, size_t i) -> std::string {
+    const uint64_t face = top.out_face, u = get_unsigned(top.out_u, 0, uw), v = get_unsigned(top.out_v, 0, uw);
+    const dp::CubeAddress& e = expected[i];
+    if (face == e.face && static_cast<int64_t>(u) == e.u && static_cast<int64_t>(v) == e.v) return "";
+    std::ostringstream s;
+    s << "r = (" << rs[i].x << " " << rs[i].y << " " << rs[i].z << "): RTL face " << dp::face_name(static_cast<int>(face))
+      << " u " << u << " v " << v << ", datapath face " << dp::face_name(e.face) << " u " << e.u << " v " << e.v;
+    return s.str();
+  };
+  std::printf("cube-face address generator: %zu vectors\n", rs.size());
+  run_bench<Top>(rs.size(), cfg.address_latency, mutant != 0, apply, check, cov.summary());
+  if (mutant == 0) cov.expect_all_hit();
+}
+
+}  // namespace
+
+// One test per verilated model: HdlBench.<module>_<configuration>_m<mutant>.
+#define ARP_HDL_TEST(module, config, mutant, cls, ...)                                   \
+  TEST(HdlBench, module##_##config##_m##mutant) {                                        \
+    const HdlConfig cfg{__VA_ARGS__};                                                    \
+    bench_##module<cls>(cfg, mutant);                                                      \
+  }
+ARP_HDL_MODELS(ARP_HDL_TEST)
