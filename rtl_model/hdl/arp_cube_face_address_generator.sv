@@ -31,7 +31,7 @@ module arp_cube_face_address_generator #(
   parameter int TEXEL_FRAC = 8,
   parameter int TEXEL_ROUNDING = 0,
   parameter int FACE_SIZE = 512,
-  parameter int LATENCY = 5,
+  parameter int LATENCY = 4,
   parameter int MUTANT = 0,
   localparam int RW = ROT_FRAC + 2,                       // rotated components
   localparam int UW = $clog2(FACE_SIZE + 1) + TEXEL_FRAC  // texel-space positions
@@ -56,6 +56,17 @@ module arp_cube_face_address_generator #(
   localparam int QW = QUOT_FRAC + 3;   // quotient, signed
   localparam int BW = 3 + 1 + 2 * SCW + MAW;  // face, zero, sc, tc, |ma|
   localparam int MIN_LATENCY = DIVIDER == 0 ? 3 + NEWTON_STEPS : 3;
+
+  // Widths and latencies this RTL does not build are refused at elaboration.
+  if (LATENCY < MIN_LATENCY) begin : g_latency_check
+    $error("arp_cube_face_address_generator: LATENCY %0d is below its minimum %0d", LATENCY, MIN_LATENCY);
+  end
+  if (DIVIDER == 0 && RECIP_FRAC_BITS + ROT_FRAC < QUOT_FRAC) begin : g_shift_check
+    $error("arp_cube_face_address_generator: QUOT_FRAC %0d exceeds RECIP_FRAC_BITS + ROT_FRAC", QUOT_FRAC);
+  end
+  if (DIV_ROUNDING < 0 || DIV_ROUNDING > 2 || TEXEL_ROUNDING < 0 || TEXEL_ROUNDING > 2) begin : g_rounding_check
+    $error("arp_cube_face_address_generator: DIV_ROUNDING and TEXEL_ROUNDING are 0 (floor), 1 (half up) or 2 (half even)");
+  end
 
   logic advance;
   logic last_valid;
@@ -318,7 +329,7 @@ module arp_cube_face_address_generator #(
     end
   end
 
-  arp_pipe_delay #(.WIDTH(3 + 2 * UW), .DEPTH(LATENCY - MIN_LATENCY)) u_pad (
+  arp_pipe_delay #(.WIDTH(3 + 2 * UW), .DEPTH(LATENCY > MIN_LATENCY ? LATENCY - MIN_LATENCY : 0)) u_pad (
     .clk, .rst_n, .advance, .in_valid(pos_valid), .in_data({pos_face, pos_u, pos_v}),
     .out_valid(last_valid), .out_data({out_face, out_u, out_v}));
   assign out_valid = last_valid;

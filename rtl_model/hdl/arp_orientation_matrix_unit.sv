@@ -37,6 +37,17 @@ module arp_orientation_matrix_unit #(
   localparam int ROUNDING = MUTANT == 2 ? (ROT_ROUNDING == 1 ? 2 : ROT_ROUNDING == 2 ? 1 : ROT_ROUNDING)
                                         : ROT_ROUNDING;
 
+  // Widths and latencies this RTL does not build are refused at elaboration.
+  if (LATENCY < 2) begin : g_latency_check
+    $error("arp_orientation_matrix_unit: LATENCY %0d is below its minimum 2", LATENCY);
+  end
+  if (SHIFT < 0) begin : g_shift_check
+    $error("arp_orientation_matrix_unit: ROT_FRAC %0d exceeds MAT_FRAC + VEC_FRAC (no left shift in this RTL)", ROT_FRAC);
+  end
+  if (ROT_ROUNDING < 0 || ROT_ROUNDING > 2) begin : g_rounding_check
+    $error("arp_orientation_matrix_unit: ROT_ROUNDING %0d is not 0 (floor), 1 (half up) or 2 (half even)", ROT_ROUNDING);
+  end
+
   logic advance;
   logic valid1, valid2;
   logic [9*PW-1:0] prod_d, prod_q;
@@ -94,7 +105,7 @@ module arp_orientation_matrix_unit #(
   end
 
   logic out_valid_last;
-  arp_pipe_delay #(.WIDTH(3*RW), .DEPTH(LATENCY - 2)) u_pad (
+  arp_pipe_delay #(.WIDTH(3*RW), .DEPTH(LATENCY > 2 ? LATENCY - 2 : 0)) u_pad (
     .clk, .rst_n, .advance, .in_valid(valid2), .in_data(rot_q), .out_valid(out_valid_last), .out_data(out_vector));
   assign out_valid = out_valid_last;
 endmodule

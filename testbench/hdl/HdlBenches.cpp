@@ -20,6 +20,11 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <set>
+
+#include <verilated_vcd_c.h>
+
 #include "HdlModels.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
@@ -28,7 +33,7 @@ namespace {
 
 using namespace arp;
 
-// One width configuration (rtl_model/hdl/configurations.txt).
+// One width configuration (rtl_model/hdl/configurations.txt): its parameters in lower case.
 struct HdlConfig {
   int vec_frac, mat_frac, rot_frac, rot_rounding, divider, recip_index_bits, recip_frac_bits, newton_steps,
       quot_frac, div_rounding, texel_frac, texel_rounding, face_size, rotate_latency, address_latency;
@@ -90,12 +95,25 @@ struct DriveResult {
   int min_latency = 1 << 30, max_latency = 0;
 };
 
+// An optional VCD of the drive: one pixel clock of the default timing (25.175 MHz) per cycle.
+struct Wave {
+  VerilatedVcdC* vcd = nullptr;
+  uint64_t time_ps = 0;
+  static constexpr uint64_t kHalfPeriodPs = 19'861;
+  void dump() {
+    if (vcd) vcd->dump(time_ps);
+    time_ps += kHalfPeriodPs;
+  }
+};
+
 template <class Top>
-void tick(Top& top) {
+void tick(Top& top, Wave& wave) {
   top.clk = 1;
   top.eval();
+  wave.dump();
   top.clk = 0;
   top.eval();
+  wave.dump();
 }
 
 // Streams every input through `top`: `apply` puts one on the input ports,
@@ -105,7 +123,7 @@ void tick(Top& top) {
 template <class Top>
 DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& apply,
                   const std::function<std::string(const Top&, size_t)>& check, double in_rate, double ready_rate,
-                  uint32_t seed) {
+                  uint32_t seed, Wave wave = {}) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u01(0, 1);
   DriveResult r;
@@ -114,8 +132,8 @@ DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& a
   top.in_valid = 0;
   top.out_ready = 1;
   top.eval();
-  tick(top);
-  tick(top);
+  tick(top, wave);
+  tick(top, wave);
   top.rst_n = 1;
   std::deque<int64_t> accepted_at;  // clock of each accepted input not yet delivered
   size_t next = 0, delivered = 0;
@@ -152,7 +170,7 @@ DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& a
       }
       ++delivered;
     }
-    tick(top);
+    tick(top, wave);
     if (accept) {
       accepted_at.push_back(cycle);
       ++next;
@@ -443,12 +461,100 @@ void bench_cfag(const HdlConfig& cfg, int mutant) {
   if (mutant == 0) cov.expect_all_hit();
 }
 
+// The waveform bench: a short stream through the traced model with gaps and
+// back-pressure, written as a VCD, and the committed GTKWave save file
+// (waveforms/hdl_<module>.gtkw) checked against the signals the VCD declares.
+template <class Top>
+void trace_omu(const HdlConfig& cfg, const std::string& module) {
+  const dp::DatapathWidths w = cfg.widths();
+  const dp::RotateParams params(w);
+  const int mw = w.mat_frac + 2, vw = w.vec_frac + 2, rw = w.rot_frac + 2;
+  const std::string vcd_path = "hdl_" + module + ".vcd";
+  std::vector<dp::Mat3q> ms;
+  std::vector<dp::Vec3q> vs;
+  std::mt19937 rng(7);
+  for (int i = 0; i < 32; ++i) {
+    ms.push_back(dp::quantise_rotation(dp::from_yaw_pitch_roll_deg(11.25 * i, 5.0 * (i % 5), 0), w.mat_frac));
+    vs.push_back(random_unit_vector(rng, w.vec_frac));
+  }
+  Verilated::traceEverOn(true);
+  Top top;
+  VerilatedVcdC vcd;
+  top.trace(&vcd, 99);
+  vcd.open(vcd_path.c_str());
+  Wave wave{&vcd, 0};
+  const DriveResult r = drive<Top>(
+      top, ms.size(),
+      [&](Top& t, size_t i) {
+        for (int k = 0; k < 9; ++k) put_field(t.in_matrix, k * mw, mw, ms[i].m[k]);
+        put_field(t.in_vector, 0, vw, vs[i].x);
+        put_field(t.in_vector, vw, vw, vs[i].y);
+        put_field(t.in_vector, 2 * vw, vw, vs[i].z);
+      },
+      [&](const Top& t, size_t i) -> std::string {
+        const dp::Vec3q e = dp::rotate(ms[i], vs[i], params);
+        const bool same = get_signed(t.out_vector, 0, rw) == e.x && get_signed(t.out_vector, rw, rw) == e.y &&
+                          get_signed(t.out_vector, 2 * rw, rw) == e.z;
+        return same ? "" : "differs from the datapath";
+      },
+      0.8, 0.7, 3, wave);
+  vcd.close();
+  EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+  EXPECT_EQ(r.compared, ms.size());
+
+  // Every signal of the save file is declared in the VCD (scope.name, as GTKWave shows it).
+  std::ifstream in(vcd_path);
+  ASSERT_TRUE(in) << vcd_path;
+  std::set<std::string> declared;
+  std::vector<std::string> scope;
+  std::string tok;
+  while (in >> tok) {
+    if (tok == "$scope") {
+      std::string kind, name;
+      in >> kind >> name;
+      scope.push_back(name);
+    } else if (tok == "$upscope") {
+      if (!scope.empty()) scope.pop_back();
+    } else if (tok == "$var") {
+      std::string kind, width, id, name, range;
+      in >> kind >> width >> id >> name >> range;
+      std::string full;
+      for (const std::string& sc : scope) full += sc + ".";
+      declared.insert(full + name + (range.rfind('[', 0) == 0 ? range : ""));
+    } else if (tok == "$enddefinitions") {
+      break;
+    }
+  }
+  const std::string gtkw = std::string(ARPSIM_SOURCE_DIR) + "/waveforms/hdl_" + module + ".gtkw";
+  std::ifstream save(gtkw);
+  ASSERT_TRUE(save) << gtkw;
+  std::string line;
+  int signals = 0;
+  while (std::getline(save, line)) {
+    if (line.empty() || line[0] == '[' || line[0] == '@' || line[0] == '*' || line[0] == '-') continue;
+    ++signals;
+    EXPECT_TRUE(declared.count(line)) << gtkw << ": signal '" << line << "' is not in the VCD";
+  }
+  EXPECT_GE(signals, 8) << gtkw << " names too few signals";
+  std::printf("wrote %s: %zu signals declared, %d shown by %s\n", vcd_path.c_str(), declared.size(), signals, gtkw.c_str());
+}
+
 }  // namespace
 
 // One test per verilated model: HdlBench.<module>_<configuration>_m<mutant>.
 #define ARP_HDL_TEST(module, config, mutant, cls, ...)                                   \
   TEST(HdlBench, module##_##config##_m##mutant) {                                        \
-    const HdlConfig cfg{__VA_ARGS__};                                                    \
-    bench_##module<cls>(cfg, mutant);                                                      \
+    HdlConfig c{};                                                                       \
+    (__VA_ARGS__);                                                                       \
+    bench_##module<cls>(c, mutant);                                                      \
   }
 ARP_HDL_MODELS(ARP_HDL_TEST)
+
+// The traced model: HdlWaveform.<module>.
+#define ARP_HDL_WAVE_TEST(module, config, mutant, cls, ...) \
+  TEST(HdlWaveform, module) {                                \
+    HdlConfig c{};                                           \
+    (__VA_ARGS__);                                           \
+    trace_##module<cls>(c, #module);                         \
+  }
+ARP_HDL_TRACED_MODEL(ARP_HDL_WAVE_TEST)
