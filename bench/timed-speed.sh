@@ -6,6 +6,7 @@
 # excluded), best of RUNS tries -- on a shared machine a neighbour only ever
 # slows a run down. With VCD on, every signal of the whole run is traced.
 # Also checks that every level produced the same frames and photon times.
+# The verilated level needs a build with Verilator (scripts/setup.sh).
 # Usage: bench/timed-speed.sh [CSV]   (env: FRAMES, VCD_FRAMES, RUNS, ARPSIM)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,7 +32,7 @@ fingerprint() { grep -o '"p[a-z]*_hash": *"[0-9a-f]*"' "$tmp/last.json" | tr '\n
 echo "level,vcd,frames,pixel_clocks_per_s" > "$tmp/out.csv"
 printf "%-11s %-4s %-7s %s\n" level vcd frames "M pixel clocks/s"
 ref=""
-for level in functional lt cycle detailed; do
+for level in functional lt cycle detailed verilated; do
   s=$(speed "$level" "$FRAMES")
   fp=$(fingerprint)
   [ -z "$ref" ] && ref=$fp

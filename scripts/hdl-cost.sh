@@ -33,9 +33,10 @@ value() { tr ' ' '\n' <<<"$1" | sed -n "s/^$2=//p"; }
 
 echo "configuration,module,parameters,cells,flip_flops,logic_depth,ice40_lut4,ice40_carry,ice40_ff" >"$tmp/cost.csv"
 start=$SECONDS
-grep -v '^#' $hdl/configurations.txt | grep -v '^[[:space:]]*$' | while read -r name _use rest; do
+declare -A done_before  # a module is synthesized once per distinct set of its own values
+while read -r name rest; do
   [[ -n "$only" && "$name" != "$only" ]] && continue
-  grep -v '^#' $hdl/modules.txt | grep -v '^[[:space:]]*$' | while read -r key top latency_key _mutants params; do
+  while read -r key top latency_key _mutants params; do
     sets="-set LATENCY $(value "$rest" "$latency_key")"
     desc="LATENCY=$(value "$rest" "$latency_key")"
     for p in ${params//,/ }; do
@@ -44,10 +45,15 @@ grep -v '^#' $hdl/configurations.txt | grep -v '^[[:space:]]*$' | while read -r 
       sets+=" -set $p $v"
       desc+=" $p=$v"
     done
+    if [[ -n "${done_before[$key $desc]:-}" ]]; then
+      echo "hdl-cost: $name $key: the same as ${done_before[$key $desc]}" >&2
+      continue
+    fi
+    done_before[$key $desc]=$name
     read_and_set="read_verilog -sv $sources; chparam $sets $top; hierarchy -top $top"
     log="$tmp/$name-$key"
-    yosys -q -l "$log.generic.log" -p "$read_and_set; synth -flatten -top $top; tee -o $log.stat stat; tee -o $log.ltp ltp -noff" >/dev/null 2>&1 || { echo "hdl-cost: yosys failed on $name $key: $log.generic.log" >&2; cat "$log.generic.log" >&2; exit 1; }
-    yosys -q -l "$log.ice40.log" -p "$read_and_set; synth_ice40 -top $top; tee -o $log.ice40 stat" >/dev/null 2>&1 || { echo "hdl-cost: yosys failed on $name $key (iCE40)" >&2; cat "$log.ice40.log" >&2; exit 1; }
+    yosys -q -l "$log.generic.log" -p "$read_and_set; synth -flatten -top $top; tee -o $log.stat stat; tee -o $log.ltp ltp -noff" </dev/null >/dev/null 2>&1 || { echo "hdl-cost: yosys failed on $name $key: $log.generic.log" >&2; cat "$log.generic.log" >&2; exit 1; }
+    yosys -q -l "$log.ice40.log" -p "$read_and_set; synth_ice40 -top $top; tee -o $log.ice40 stat" </dev/null >/dev/null 2>&1 || { echo "hdl-cost: yosys failed on $name $key (iCE40)" >&2; cat "$log.ice40.log" >&2; exit 1; }
     cells=$(sed -n 's/^ *Number of cells: *//p' "$log.stat" | tail -1)
     ffs=$(grep -E '^\s+\$_(S?DFF|DFFE|SDFFE|SDFFCE|ALDFF|DFFSR)' "$log.stat" | awk '{s += $2} END {print s + 0}')
     depth=$(sed -n "s/^Longest topological path in .*(length=\([0-9]*\)).*/\1/p" "$log.ltp" | tail -1)
@@ -56,8 +62,8 @@ grep -v '^#' $hdl/configurations.txt | grep -v '^[[:space:]]*$' | while read -r 
     iff=$(grep -E '^\s+SB_DFF' "$log.ice40" | awk '{s += $2} END {print s + 0}')
     echo "$name,$key,\"$desc\",$cells,$ffs,$depth,${lut4:-0},${carry:-0},$iff" >>"$tmp/cost.csv"
     echo "hdl-cost: $name $key: $cells cells, $ffs flip-flops, depth $depth, ${lut4:-0} iCE40 LUT4 ($((SECONDS - start)) s)" >&2
-  done
-done
+  done < <(grep -v '^#' $hdl/modules.txt | grep -v '^[[:space:]]*$')
+done < <(grep -v '^#' $hdl/configurations.txt | grep -v '^[[:space:]]*$')
 mkdir -p "$(dirname "$out")"
 md="${out%.csv}.md"
 {

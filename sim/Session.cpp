@@ -72,8 +72,9 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
       throw InputError("--live", "", "live input drives the functional level (the timed levels read their orientation trace ahead)");
   }
   if (!o.host_csv.empty() && (o.report.empty() || h.walk.empty())) throw InputError("--host-csv", "", "needs --walk and --report");
-  if (!o.vcd.empty() && fid == scm::Fidelity::Functional)
-    throw InputError("--vcd", "", "the functional level is untimed and has no waveform; use --fidelity lt, cycle or detailed");
+  if (!o.vcd.empty() && (fid == scm::Fidelity::Functional || fid == scm::Fidelity::Verilated))
+    throw InputError("--vcd", "", "the " + scm::to_string(fid) +
+                                      " level is untimed and has no waveform; use --fidelity lt, cycle or detailed");
   if ((!o.vcd_lines.empty() || !o.vcd_time_us.empty()) && o.vcd.empty())
     throw InputError(o.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
   if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
@@ -88,7 +89,8 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
                      {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk},
                       {"--scene", s.memories.scene == "gallery" ? "" : s.memories.scene}, {"--cross", s.memories.cross},
                       {"--equirect", s.memories.equirect}});
-  const auto issues = fid == scm::Fidelity::Functional ? dp::validate(s.config) : dp::validate_timed(s.config);
+  const bool untimed = fid == scm::Fidelity::Functional || fid == scm::Fidelity::Verilated;
+  const auto issues = untimed ? dp::validate(s.config) : dp::validate_timed(s.config);
   if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);
   // After the configuration's check: the limit depends on its clock.
   if (const std::string why = dp::VideoTiming(s.config.timing).frames_out_of_range(s.first_frame, s.frames); !why.empty())
@@ -103,7 +105,7 @@ Session::Session(RunSpec spec)
       stream_(dp::OrientationStream::constant(dp::Quat{})),
       memories_(spec_.config.memory, spec_.config.timing.eyes) {
   if (!scm::parse(spec_.fidelity, fidelity_))
-    throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle or detailed (rtl)");
+    throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
   check_spec(spec_, fidelity_);
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));

@@ -21,7 +21,8 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kAllowed{
     {"rtl_model/datapath/", {"common/"}},
     {"rtl_model/stages/", {"common/", "rtl_model/datapath/"}},
     {"rtl_model/functional/", {"common/", "rtl_model/datapath/"}},
-    {"rtl_model/systemc/", {"common/", "rtl_model/datapath/", "rtl_model/stages/", "rtl_model/functional/"}},
+    {"rtl_model/verilated/", {"common/", "rtl_model/datapath/", "rtl_model/hdl/"}},  // hdl/: the generated model list
+    {"rtl_model/systemc/", {"common/", "rtl_model/datapath/", "rtl_model/stages/", "rtl_model/functional/", "rtl_model/verilated/"}},
     {"host/", {"common/", "rtl_model/datapath/"}},
     {"tracker/", {"common/"}},
     {"reference/", {"common/", "rtl_model/datapath/", "rtl_model/functional/", "host/"}},

@@ -12,6 +12,7 @@
 
 #include "TestSupport.hpp"
 #include "host/cubemap/ImageFiles.hpp"
+#include "rtl_model/verilated/VerilatedUnits.hpp"
 
 using arp::test::run_command;
 using arp::test::TempDir;
@@ -64,6 +65,36 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
   const auto alias = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0" + kSmall + " --report " + d.file("alias.json"));
   ASSERT_EQ(alias.status, 0) << alias.output;
   EXPECT_EQ(load(d.file("alias.json"))["fidelity"], "detailed");
+}
+
+// The verilated level through the command line: the functional level's
+// frames, photon times and latencies; in a build without Verilator a clear
+// refusal and nothing written.
+TEST(TimedRunCli, TheVerilatedLevelGivesTheFunctionalLevelsFrames) {
+  TempDir d;
+  // the small display, with the face size the RTL is built for
+  const std::string common =
+      " run -q --frames 2 --every 0 --motion shake --peak 1000" + kSmall + " --set memory.face_size=512";
+  const auto f = run_command(kArpsim + common + " --fidelity functional --report " + d.file("f.json") + " --csv " + d.file("f.csv"));
+  ASSERT_EQ(f.status, 0) << f.output;
+  const auto v = run_command(kArpsim + common + " --fidelity verilated --report " + d.file("v.json") + " --csv " + d.file("v.csv"));
+  if (!arp::vl::verilated_available()) {
+    EXPECT_NE(v.status, 0);
+    EXPECT_NE(v.output.find("Verilator was not found"), std::string::npos) << v.output;
+    EXPECT_FALSE(std::filesystem::exists(d.file("v.json")));
+    return;
+  }
+  ASSERT_EQ(v.status, 0) << v.output;
+  const auto fr = load(d.file("f.json")), vr = load(d.file("v.json"));
+  EXPECT_EQ(vr["fidelity"], "verilated");
+  ASSERT_EQ(vr["frames"].size(), 2u);
+  for (size_t i = 0; i < 2; ++i)
+    for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "first_sample", "last_sample"})
+      EXPECT_EQ(vr["frames"][i][k], fr["frames"][i][k]) << "frame " << i << " " << k;
+  EXPECT_EQ(read_all(d.file("v.csv")), read_all(d.file("f.csv")));
+  const auto bad = run_command(kArpsim + common + " --fidelity verilated --set datapath.vec_frac=13");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("14/14/14/1 (default)"), std::string::npos) << bad.output;
 }
 
 TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {

@@ -87,7 +87,8 @@ Runner add_run_command(CLI::App& app) {
   add_memory_options(*cmd, s.memories);
   cmd->add_option("--fidelity", s.fidelity,
                   "functional (untimed), lt (loosely timed, scanline quantum), cycle (fast cycle-accurate), "
-                  "detailed (detailed cycle-accurate, one SystemC module per stage; also: rtl)")
+                  "detailed (detailed cycle-accurate, one SystemC module per stage; also: rtl), verilated (the "
+                  "functional level's timing with the verilated RTL doing the per-pixel arithmetic; slow)")
       ->capture_default_str();
   cmd->add_option("--trace", s.trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth");
   cmd->add_option("--live", s.live,

@@ -13,13 +13,14 @@
 #include "LooselyTimedModel.hpp"
 #include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
+#include "rtl_model/verilated/VerilatedFrameModel.hpp"
 
 namespace arp::scm {
 
 using namespace sc_core;
 
 const EnumNames<Fidelity>& fidelity_names() {
-  static const EnumNames<Fidelity> n{{Fidelity::Functional, "functional"}, {Fidelity::LooselyTimed, "lt"}, {Fidelity::Cycle, "cycle"}, {Fidelity::Detailed, "detailed"}};
+  static const EnumNames<Fidelity> n{{Fidelity::Functional, "functional"}, {Fidelity::LooselyTimed, "lt"}, {Fidelity::Cycle, "cycle"}, {Fidelity::Detailed, "detailed"}, {Fidelity::Verilated, "verilated"}};
   return n;
 }
 
@@ -37,6 +38,8 @@ const char* describe(Fidelity f) {
     case Fidelity::LooselyTimed: return "loosely timed, one-scanline quantum (SystemC thread)";
     case Fidelity::Cycle: return "fast cycle-accurate, one SystemC process per clock domain";
     case Fidelity::Detailed: return "detailed cycle-accurate, one SC_MODULE per stage with clocked FIFO channels";
+    case Fidelity::Verilated:
+      return "the functional level's timing with the verilated RTL (rtl_model/hdl) doing the per-pixel arithmetic";
   }
   return "?";
 }
@@ -56,12 +59,15 @@ void check_inputs(const stage::TimedInputs& in, bool timed) {
   stage::check_host_jobs(in.host_jobs, in.config, "host write jobs");
 }
 
-// The functional level: frames from the untimed model, host jobs at their
-// vertical blanks, photon times and latencies computed from the schedule.
+// The functional and verilated levels: frames from the untimed model (or the
+// verilated RTL), host jobs at their vertical blanks, photon times and
+// latencies computed from the schedule.
 TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& opt) {
   TimedResult r;
-  r.fidelity = Fidelity::Functional;
+  r.fidelity = opt.fidelity;
   const FunctionalModel model(in.config);
+  std::unique_ptr<vl::VerilatedFrameModel> rtl;
+  if (opt.fidelity == Fidelity::Verilated) rtl = std::make_unique<vl::VerilatedFrameModel>(in.config);
   const stage::StageContext ctx{in, dp::PipelineSchedule(in.config)};
   const dp::PipelineSchedule& sched = ctx.schedule;
   const auto& t = model.timing();
@@ -78,7 +84,8 @@ TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& 
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
     if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
-    model.render(*in.memories, *in.orientation, frame, f, ro);
+    if (rtl) rtl->render(*in.memories, *in.orientation, frame, f, true);
+    else model.render(*in.memories, *in.orientation, frame, f, ro);
     stage::FrameReport fr;
     fr.frame = frame;
     fr.pixels = static_cast<int64_t>(f.width) * f.height;
@@ -140,7 +147,7 @@ void claim_simulation() {
 }
 
 TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) {
-  if (opt.fidelity == Fidelity::Functional) {
+  if (opt.fidelity == Fidelity::Functional || opt.fidelity == Fidelity::Verilated) {
     check_inputs(in, false);
     return run_functional(in, opt);
   }

@@ -19,8 +19,8 @@
 
 namespace arp::scm {
 
-enum class Fidelity { Functional, LooselyTimed, Cycle, Detailed };
-const EnumNames<Fidelity>& fidelity_names();  // functional, lt, cycle, detailed
+enum class Fidelity { Functional, LooselyTimed, Cycle, Detailed, Verilated };
+const EnumNames<Fidelity>& fidelity_names();  // functional, lt, cycle, detailed, verilated
 inline std::string to_string(Fidelity f) { return enum_name(fidelity_names(), f); }
 // Also accepts rtl, the detailed level's old name.
 bool parse(const std::string& s, Fidelity& out);

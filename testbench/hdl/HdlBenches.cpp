@@ -9,6 +9,7 @@
 // parameter) must make its bench report a mismatch: the negative control.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -25,68 +26,22 @@
 
 #include <verilated_vcd_c.h>
 
-#include "HdlModels.hpp"
+#include "rtl_model/hdl/HdlModels.hpp"
+#include "rtl_model/datapath/AntiAliasingFilter.hpp"
+#include "rtl_model/datapath/CompositionUnit.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
+#include "rtl_model/verilated/HdlConfig.hpp"
+#include "rtl_model/verilated/PortBits.hpp"
 
 namespace {
 
 using namespace arp;
 
-// One width configuration (rtl_model/hdl/configurations.txt): its parameters in lower case.
-struct HdlConfig {
-  int vec_frac, mat_frac, rot_frac, rot_rounding, divider, recip_index_bits, recip_frac_bits, newton_steps,
-      quot_frac, div_rounding, texel_frac, texel_rounding, face_size, rotate_latency, address_latency;
-  dp::DatapathWidths widths() const {
-    dp::DatapathWidths w;
-    w.vec_frac = vec_frac;
-    w.mat_frac = mat_frac;
-    w.rot_frac = rot_frac;
-    w.rot_rounding = static_cast<dp::Rounding>(rot_rounding);
-    w.divider = static_cast<dp::DividerKind>(divider);
-    w.recip_index_bits = recip_index_bits;
-    w.recip_frac_bits = recip_frac_bits;
-    w.newton_steps = newton_steps;
-    w.quot_frac = quot_frac;
-    w.div_rounding = static_cast<dp::Rounding>(div_rounding);
-    w.texel_frac = texel_frac;
-    w.texel_rounding = static_cast<dp::Rounding>(texel_rounding);
-    return w;
-  }
-};
-
-// ---- bit fields of Verilator's port types (CData..QData, VlWide) ----------
-template <class T>
-bool get_bit(const T& s, int b) { return (static_cast<uint64_t>(s) >> b) & 1u; }
-template <std::size_t N>
-bool get_bit(const VlWide<N>& s, int b) { return (s.at(static_cast<size_t>(b / 32)) >> (b % 32)) & 1u; }
-template <class T>
-void set_bit(T& s, int b, bool v) {
-  const uint64_t m = uint64_t{1} << b;
-  s = static_cast<T>(v ? (static_cast<uint64_t>(s) | m) : (static_cast<uint64_t>(s) & ~m));
-}
-template <std::size_t N>
-void set_bit(VlWide<N>& s, int b, bool v) {
-  const uint32_t m = 1u << (b % 32);
-  auto& w = s.at(static_cast<size_t>(b / 32));
-  w = v ? (w | m) : (w & ~m);
-}
-template <class T>
-void put_field(T& s, int lsb, int width, int64_t v) {
-  for (int b = 0; b < width; ++b) set_bit(s, lsb + b, (static_cast<uint64_t>(v) >> b) & 1u);
-}
-template <class T>
-uint64_t get_unsigned(const T& s, int lsb, int width) {
-  uint64_t v = 0;
-  for (int b = 0; b < width; ++b) v |= uint64_t{get_bit(s, lsb + b)} << b;
-  return v;
-}
-template <class T>
-int64_t get_signed(const T& s, int lsb, int width) {
-  const uint64_t u = get_unsigned(s, lsb, width);
-  const uint64_t sign = uint64_t{1} << (width - 1);
-  return static_cast<int64_t>((u ^ sign) - sign);
-}
+using vl::HdlConfig;
+using vl::get_signed;
+using vl::get_unsigned;
+using vl::put_field;
 
 // ---- the valid/ready driver -----------------------------------------------
 struct DriveResult {
@@ -458,6 +413,133 @@ void bench_cfag(const HdlConfig& cfg, int mutant) {
   };
   std::printf("cube-face address generator: %zu vectors\n", rs.size());
   run_bench<Top>(rs.size(), cfg.address_latency, mutant != 0, apply, check, cov.summary());
+  if (mutant == 0) cov.expect_all_hit();
+}
+
+// ---- composition unit ------------------------------------------------------
+template <class Top>
+void bench_comp(const HdlConfig& cfg, int mutant) {
+  const dp::MemoryFormat f = cfg.format();
+  dp::CompositionParams params(f, {0, 0, 0});
+  params.background = static_cast<uint32_t>(cfg.background);
+  const int n = cfg.memories, cb = f.color_bits_total();
+  const uint32_t empty = f.empty_depth(), max_color = static_cast<uint32_t>((uint64_t{1} << cb) - 1);
+  std::mt19937 rng(20261125);
+  std::uniform_int_distribution<uint32_t> color(0, max_color), depth(0, empty), small(0, 3), pick(0, 7);
+  std::vector<std::vector<uint64_t>> words;
+  auto word = [](uint32_t c, uint32_t d) { return (uint64_t{d} << 32) | c; };
+  // Directed: all empty; one memory holding the texel, in each position; all at
+  // one depth (ties); depth 0 and the deepest non-empty code.
+  words.push_back(std::vector<uint64_t>(static_cast<size_t>(n), word(color(rng), empty)));
+  for (int k = 0; k < n; ++k) {
+    std::vector<uint64_t> w(static_cast<size_t>(n), word(color(rng), empty));
+    w[static_cast<size_t>(k)] = word(color(rng), 5);
+    words.push_back(w);
+    for (uint32_t d : {0u, empty - 1, 7u}) {
+      std::vector<uint64_t> t(static_cast<size_t>(n));
+      for (auto& x : t) x = word(color(rng), d);
+      words.push_back(t);
+    }
+  }
+  // Random: depths from a few values (many ties) or anywhere, empty one time in four.
+  for (int i = 0; i < 100000; ++i) {
+    std::vector<uint64_t> w(static_cast<size_t>(n));
+    for (auto& x : w) {
+      const uint32_t p = pick(rng);
+      x = word(color(rng), p < 2 ? empty : p < 5 ? small(rng) : depth(rng));
+    }
+    words.push_back(w);
+  }
+  Coverage cov;
+  for (const char* b : {"every memory empty", "tie between memories", "depth 0"}) cov.declare(b);
+  for (int k = 0; k < n; ++k) cov.declare("memory " + std::to_string(k) + " wins");
+  std::vector<dp::Composite> expected(words.size());
+  for (size_t i = 0; i < words.size(); ++i) {
+    expected[i] = dp::compose(words[i].data(), n, params);
+    if (expected[i].memory < 0) cov.hit("every memory empty");
+    else cov.hit("memory " + std::to_string(expected[i].memory) + " wins");
+    if (expected[i].depth == 0) cov.hit("depth 0");
+    int at_best = 0;
+    for (uint64_t x : words[i]) at_best += dp::texel_depth(x) == expected[i].depth;
+    if (expected[i].memory >= 0 && at_best > 1) cov.hit("tie between memories");
+  }
+  const int iw = n > 1 ? static_cast<int>(std::ceil(std::log2(n))) : 1;
+  auto apply = [&](Top& top, size_t i) {
+    for (int k = 0; k < n; ++k) put_field(top.in_texels, 64 * k, 64, static_cast<int64_t>(words[i][static_cast<size_t>(k)]));
+  };
+  auto check = [&](const Top& top, size_t i) -> std::string {
+    const uint64_t c = get_unsigned(top.out_color, 0, cb), d = get_unsigned(top.out_depth, 0, f.depth_bits);
+    const bool is_empty = top.out_empty;
+    const int64_t who = is_empty ? -1 : static_cast<int64_t>(get_unsigned(top.out_memory, 0, iw));
+    const dp::Composite& e = expected[i];
+    if (c == e.color && d == e.depth && who == e.memory) return "";
+    std::ostringstream s;
+    s << "depths (";
+    for (uint64_t x : words[i]) s << " " << dp::texel_depth(x);
+    s << " ): RTL colour " << c << " depth " << d << " memory " << who << ", datapath colour " << e.color << " depth "
+      << e.depth << " memory " << e.memory;
+    return s.str();
+  };
+  std::printf("composition unit (%d memories): %zu vectors\n", n, words.size());
+  run_bench<Top>(words.size(), cfg.compose_latency, mutant != 0, apply, check, cov.summary());
+  if (mutant == 0) cov.expect_all_hit();
+}
+
+// ---- bilinear filter ---------------------------------------------------------
+template <class Top>
+void bench_filt(const HdlConfig& cfg, int mutant) {
+  const dp::MemoryFormat f = cfg.format();
+  const dp::ChannelLayout layout(f);
+  const int tf = cfg.texel_frac, cb = f.color_bits_total();
+  const uint32_t wmax = (1u << tf) - 1, max_color = static_cast<uint32_t>((uint64_t{1} << cb) - 1);
+  struct In {
+    uint32_t c[4], wx, wy;
+  };
+  std::vector<In> ins;
+  std::mt19937 rng(20261126);
+  std::uniform_int_distribution<uint32_t> color(0, max_color), weight(0, wmax);
+  // Directed: weights at 0, 1, half and the largest, with the extreme colours and random ones.
+  for (uint32_t wx : {0u, 1u, wmax / 2 + 1, wmax})
+    for (uint32_t wy : {0u, 1u, wmax / 2 + 1, wmax}) {
+      ins.push_back({{max_color, max_color, max_color, max_color}, wx, wy});
+      ins.push_back({{0, max_color, 0, max_color}, wx, wy});
+      ins.push_back({{color(rng), color(rng), color(rng), color(rng)}, wx, wy});
+    }
+  for (int i = 0; i < 200000; ++i) ins.push_back({{color(rng), color(rng), color(rng), color(rng)}, weight(rng), weight(rng)});
+  Coverage cov;
+  for (const char* b : {"weights 0", "largest weights", "all channels at full scale", "exact half before rounding"})
+    cov.declare(b);
+  std::vector<uint32_t> expected(ins.size());
+  const uint64_t W = uint64_t{1} << tf, half = uint64_t{1} << (2 * tf - 1), mask = (uint64_t{1} << (2 * tf)) - 1;
+  for (size_t i = 0; i < ins.size(); ++i) {
+    const In& x = ins[i];
+    expected[i] = dp::bilinear_blend(x.c[0], x.c[1], x.c[2], x.c[3], x.wx, x.wy, tf, layout);
+    if (x.wx == 0 && x.wy == 0) cov.hit("weights 0");
+    if (x.wx == wmax && x.wy == wmax) cov.hit("largest weights");
+    if (x.c[0] == max_color && x.c[1] == max_color && x.c[2] == max_color && x.c[3] == max_color)
+      cov.hit("all channels at full scale");
+    for (int c = 0; c < 3; ++c) {  // the exact blend of a channel, independently of the datapath's rounding
+      auto ch = [&](uint32_t v) { return uint64_t{(v >> layout.shift[c]) & layout.mask[c]}; };
+      const uint64_t sum = (ch(x.c[0]) * (W - x.wx) + ch(x.c[1]) * x.wx) * (W - x.wy) +
+                           (ch(x.c[2]) * (W - x.wx) + ch(x.c[3]) * x.wx) * x.wy;
+      if ((sum & mask) == half) cov.hit("exact half before rounding");
+    }
+  }
+  auto apply = [&](Top& top, size_t i) {
+    for (int k = 0; k < 4; ++k) put_field(top.in_taps, k * cb, cb, ins[i].c[k]);
+    top.in_wx = ins[i].wx;
+    top.in_wy = ins[i].wy;
+  };
+  auto check = [&](const Top& top, size_t i) -> std::string {
+    const uint64_t c = get_unsigned(top.out_color, 0, cb);
+    if (c == expected[i]) return "";
+    std::ostringstream s;
+    s << "taps " << ins[i].c[0] << " " << ins[i].c[1] << " " << ins[i].c[2] << " " << ins[i].c[3] << ", weights "
+      << ins[i].wx << " " << ins[i].wy << ": RTL " << c << ", datapath " << expected[i];
+    return s.str();
+  };
+  std::printf("bilinear filter: %zu vectors\n", ins.size());
+  run_bench<Top>(ins.size(), cfg.filter_latency, mutant != 0, apply, check, cov.summary());
   if (mutant == 0) cov.expect_all_hit();
 }
 
