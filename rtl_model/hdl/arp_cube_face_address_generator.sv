@@ -74,6 +74,7 @@ module arp_cube_face_address_generator #(
   assign in_ready = advance;
 
   // ---- select ----------------------------------------------------------
+  localparam bit Y_OVER_X = MUTANT == 1;  // the mutant tie rule
   logic [BW-1:0] sel_d, sel_q;
   logic sel_valid;
   always_comb begin
@@ -87,8 +88,7 @@ module arp_cube_face_address_generator #(
     ax = MAW'(x < 0 ? -x : x);
     ay = MAW'(y < 0 ? -y : y);
     az = MAW'(z < 0 ? -z : z);
-    if (MUTANT == 1) is_x = ax > ay && ax >= az;
-    else is_x = ax >= ay && ax >= az;
+    is_x = (Y_OVER_X ? ax > ay : ax >= ay) && ax >= az;
     is_y = !is_x && ay >= az;
     pos = is_x ? x >= 0 : is_y ? y >= 0 : z >= 0;
     sc = is_x ? (pos ? -z : z) : is_y ? x : (pos ? x : -x);
@@ -136,8 +136,7 @@ module arp_cube_face_address_generator #(
       logic [MAW-1:0] m, frac_part;
       logic [NW-1:0] n;
       logic [IB-1:0] idx;
-      m = sel_q[MAW-1:0];
-      if (m == '0) m = MAW'(1);  // |ma| = 0 has no reciprocal: 1/1, unused
+      m = sel_q[MAW-1:0] == '0 ? MAW'(1) : sel_q[MAW-1:0];  // |ma| = 0 has no reciprocal: 1/1, unused
       n = '0;
       for (int b = 0; b < MAW; b++) if (m[b]) n = NW'(b + 1);
       frac_part = m & ~(MAW'(1) << (n - 1'b1));
@@ -291,10 +290,9 @@ module arp_cube_face_address_generator #(
   localparam int PSHIFT = QUOT_FRAC + 1 - TEXEL_FRAC;
   localparam logic [UW-1:0] MAX_POS = MUTANT == 2 ? UW'(FACE_SIZE) << TEXEL_FRAC
                                                   : (UW'(FACE_SIZE) << TEXEL_FRAC) - 1'b1;
+  // p >= 0: the quotient was clamped to -1 or more first
   function automatic logic [UW-1:0] clamp_position(input logic signed [OW+1:0] p);
-    if (p < 0) clamp_position = '0;
-    else if (p > $signed((OW+2)'(MAX_POS))) clamp_position = MAX_POS;
-    else clamp_position = UW'(p);
+    clamp_position = p > $signed((OW+2)'(MAX_POS)) ? MAX_POS : UW'(p);
   endfunction
   logic [OW-1:0] scaled_s, scaled_t;
   logic signed [OW+1:0] pos_s, pos_t;

@@ -24,6 +24,7 @@
 #include <fstream>
 #include <set>
 
+#include <verilated_cov.h>
 #include <verilated_vcd_c.h>
 
 #include "rtl_model/hdl/HdlModels.hpp"
@@ -137,11 +138,12 @@ DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& a
 // Both phases: unstalled (every latency exact) then random gaps and back-pressure.
 template <class Top>
 void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&, size_t)>& apply,
-               const std::function<std::string(const Top&, size_t)>& check, const std::string& coverage) {
+               const std::function<std::string(const Top&, size_t)>& check, const std::string& coverage,
+               const std::function<void()>& before_teardown) {
   size_t mismatches = 0;
   std::string first;
+  Top top;  // one instance for both phases: drive() resets it first
   {
-    Top top;
     const DriveResult r = drive<Top>(top, n, apply, check, 1.0, 1.0, 1);
     if (!mutant) {
       EXPECT_EQ(r.min_latency, latency) << "unstalled latency in clocks";
@@ -154,7 +156,6 @@ void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&
                 r.min_latency, r.max_latency);
   }
   {
-    Top top;
     const DriveResult r = drive<Top>(top, n, apply, check, 0.7, 0.6, 2);
     if (!mutant) {
       EXPECT_GE(r.min_latency, latency) << "latency under back-pressure";
@@ -172,6 +173,7 @@ void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&
   } else {
     EXPECT_EQ(mismatches, 0u) << first;
   }
+  if (before_teardown) before_teardown();
 }
 
 // Coverage bins: each directed case must be reached at least once.
@@ -210,7 +212,7 @@ dp::Vec3q random_unit_vector(std::mt19937& rng, int frac) {
 
 // ---- orientation matrix unit ---------------------------------------------
 template <class Top>
-void bench_omu(const HdlConfig& cfg, int mutant) {
+void bench_omu(const HdlConfig& cfg, int mutant, const std::function<void()>& before_teardown = {}) {
   const dp::DatapathWidths w = cfg.widths();
   const dp::RotateParams params(w);
   const int mw = w.mat_frac + 2, vw = w.vec_frac + 2, rw = w.rot_frac + 2;
@@ -318,13 +320,13 @@ void bench_omu(const HdlConfig& cfg, int mutant) {
     return s.str();
   };
   std::printf("orientation matrix unit: %zu vectors\n", ms.size());
-  run_bench<Top>(ms.size(), cfg.rotate_latency, mutant != 0, apply, check, cov.summary());
+  run_bench<Top>(ms.size(), cfg.rotate_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
   if (mutant == 0) cov.expect_all_hit();
 }
 
 // ---- cube-face address generator -----------------------------------------
 template <class Top>
-void bench_cfag(const HdlConfig& cfg, int mutant) {
+void bench_cfag(const HdlConfig& cfg, int mutant, const std::function<void()>& before_teardown = {}) {
   const dp::DatapathWidths w = cfg.widths();
   const dp::AddressGeneratorParams params(w, cfg.face_size);
   const int rw = w.rot_frac + 2;
@@ -337,8 +339,8 @@ void bench_cfag(const HdlConfig& cfg, int mutant) {
   };
   // Directed: the axes, the zero vector, cube edges (two equal magnitudes)
   // and corners (three) in every sign combination, at several magnitudes.
-  add(0, 0, 0);
   for (int64_t mag : {one, int64_t{1}, one / 3, top_code, int64_t{12345} % top_code}) {
+    add(0, 0, 0);  // after a non-zero vector, so that the input changes
     for (int a = 0; a < 3; ++a)
       for (int s : {1, -1}) add(a == 0 ? s * mag : 0, a == 1 ? s * mag : 0, a == 2 ? s * mag : 0);
     for (int sx : {1, -1})
@@ -412,13 +414,13 @@ void bench_cfag(const HdlConfig& cfg, int mutant) {
     return s.str();
   };
   std::printf("cube-face address generator: %zu vectors\n", rs.size());
-  run_bench<Top>(rs.size(), cfg.address_latency, mutant != 0, apply, check, cov.summary());
+  run_bench<Top>(rs.size(), cfg.address_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
   if (mutant == 0) cov.expect_all_hit();
 }
 
 // ---- composition unit ------------------------------------------------------
 template <class Top>
-void bench_comp(const HdlConfig& cfg, int mutant) {
+void bench_comp(const HdlConfig& cfg, int mutant, const std::function<void()>& before_teardown = {}) {
   const dp::MemoryFormat f = cfg.format();
   dp::CompositionParams params(f, {0, 0, 0});
   params.background = static_cast<uint32_t>(cfg.background);
@@ -481,13 +483,13 @@ void bench_comp(const HdlConfig& cfg, int mutant) {
     return s.str();
   };
   std::printf("composition unit (%d memories): %zu vectors\n", n, words.size());
-  run_bench<Top>(words.size(), cfg.compose_latency, mutant != 0, apply, check, cov.summary());
+  run_bench<Top>(words.size(), cfg.compose_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
   if (mutant == 0) cov.expect_all_hit();
 }
 
 // ---- bilinear filter ---------------------------------------------------------
 template <class Top>
-void bench_filt(const HdlConfig& cfg, int mutant) {
+void bench_filt(const HdlConfig& cfg, int mutant, const std::function<void()>& before_teardown = {}) {
   const dp::MemoryFormat f = cfg.format();
   const dp::ChannelLayout layout(f);
   const int tf = cfg.texel_frac, cb = f.color_bits_total();
@@ -539,8 +541,41 @@ void bench_filt(const HdlConfig& cfg, int mutant) {
     return s.str();
   };
   std::printf("bilinear filter: %zu vectors\n", ins.size());
-  run_bench<Top>(ins.size(), cfg.filter_latency, mutant != 0, apply, check, cov.summary());
+  run_bench<Top>(ins.size(), cfg.filter_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
   if (mutant == 0) cov.expect_all_hit();
+}
+
+// The coverage bench: the module's bench on a build with Verilator's
+// coverage, the counters written to hdl_<module>_coverage.dat (for
+// `verilator_coverage --annotate`), and the share of line, branch and toggle
+// points reached per kind. Every line and branch point must be reached.
+struct CoverageKind {
+  size_t points = 0, reached = 0;
+};
+std::map<std::string, CoverageKind> read_coverage(const std::string& path, std::vector<std::string>& missed) {
+  std::map<std::string, CoverageKind> kinds;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("C '", 0) != 0) continue;
+    const size_t close = line.rfind('\'');
+    const std::string key = line.substr(3, close - 3);
+    const unsigned long long count = std::stoull(line.substr(close + 1));
+    auto field = [&](const std::string& name) {
+      const std::string tag = std::string("\x01") + name + "\x02";
+      const size_t at = key.find(tag);
+      if (at == std::string::npos) return std::string();
+      const size_t from = at + tag.size(), to = key.find('\x01', from);
+      return key.substr(from, to == std::string::npos ? std::string::npos : to - from);
+    };
+    std::string kind = field("page");
+    kind = kind.substr(0, kind.find('/'));
+    CoverageKind& k = kinds[kind];
+    k.points++;
+    if (count > 0) k.reached++;
+    else if (kind != "v_toggle") missed.push_back(kind + " " + field("f") + ":" + field("l") + " " + field("o"));
+  }
+  return kinds;
 }
 
 // The waveform bench: a short stream through the traced model with gaps and
@@ -640,3 +675,22 @@ ARP_HDL_MODELS(ARP_HDL_TEST)
     trace_##module<cls>(c, #module);                         \
   }
 ARP_HDL_TRACED_MODEL(ARP_HDL_WAVE_TEST)
+
+// The coverage builds: HdlCoverage.<module>.
+#define ARP_HDL_COVERAGE_TEST(module, config, mutant, cls, ...)                                 \
+  TEST(HdlCoverage, module) {                                                                  \
+    HdlConfig c{};                                                                             \
+    (__VA_ARGS__);                                                                             \
+    const std::string path = "hdl_" #module "_coverage.dat";                                  \
+    bench_##module<cls>(c, 0, [&] { /* while the model (its counters) lives */                 \
+      Verilated::threadContextp()->coveragep()->write(path.c_str());                          \
+      Verilated::threadContextp()->coveragep()->clear();                                       \
+    });                                                                                        \
+    std::vector<std::string> missed;                                                           \
+    const auto kinds = read_coverage(path, missed);                                            \
+    for (const auto& [kind, k] : kinds)                                                        \
+      std::printf("%s: %zu of %zu points reached\n", kind.c_str(), k.reached, k.points);      \
+    EXPECT_GT(kinds.count("v_line"), 0u) << path << " has no line coverage";                   \
+    for (const std::string& m : missed) ADD_FAILURE() << "never reached: " << m;               \
+  }
+ARP_HDL_COVERAGE_MODELS(ARP_HDL_COVERAGE_TEST)
