@@ -4,6 +4,7 @@
 
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
+#include "FrameFixtures.hpp"
 #include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
@@ -11,27 +12,6 @@ using namespace arp;
 using namespace arp::dp;
 
 namespace {
-
-// Calibration pattern far away in memory 0; nearer squares in memories 1 and 2
-// (overlapping at equal depth: the tie rule), memory 3 left empty.
-void fill(DisplayMemorySet& mem) {
-  const auto& fmt = mem.format();
-  const int S = fmt.face_size;
-  host::load_into_memories(mem, 0, host::make_calibration_pattern(S), host::far_depth(fmt));
-  const uint32_t near = fmt.empty_depth() / 3;
-  for (int e = 0; e < mem.eyes(); ++e)
-    for (int m = 1; m < std::min(3, mem.count()); ++m) {
-      auto& b = mem.bank(e, m);
-      for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < S; y += 1)
-          for (int x = 0; x < S; ++x) {
-            const bool in = m == 1 ? ((x * 7 / S + y * 5 / S) % 2 == 0) : ((x * 3 / S) == 1 && f != 4);
-            if (in) b.write(f, x, y, fmt.pack_rgb8(m == 1 ? 250 : 30, 40 * m, 255 - 60 * f), near);
-          }
-      b.commit();
-      b.vblank();
-    }
-}
 
 // The datapath applied pixel by pixel in the plainest way: the reference the
 // functional model's vectorised passes must equal bit for bit.
@@ -73,21 +53,9 @@ HmdFrame scalar_reference(const ArpConfig& c, const DisplayMemorySet& mem, const
 }
 
 // A head turning fast (about 1000 deg/s about a tilted axis), 1 kHz samples.
-OrientationStream fast_turn(const VideoTiming& t, int64_t frame) {
-  std::vector<OrientationSample> s;
-  const int64_t t0 = t.cycles_to_ps(t.frame_start_cycle(frame)) - 2'000'000'000;
-  for (int i = 0; i < 24; ++i)
-    s.push_back({t0 + int64_t{i} * 1'000'000'000, from_yaw_pitch_roll_deg(30.0 + 1.0 * i, 20.0 - 0.3 * i, 5.0 + 0.2 * i)});
-  return OrientationStream(s, "test");
-}
-
-ArpConfig small(ArpConfig c) {
-  const auto t = c.timing;
-  c.timing = VideoTimingConfig::mode(t.eyes, {160, 8, 16, 16}, {120, 2, 2, 6}, 1'400'000);
-  c.timing.eye_scan = t.eye_scan;
-  c.timing.fields_per_frame = t.fields_per_frame;
-  return c;
-}
+OrientationStream fast_turn(const VideoTiming& t, int64_t frame) { return test::turning(t, frame, 1.0); }
+ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
+void fill(DisplayMemorySet& mem) { test::fill_layered(mem); }
 
 void expect_bit_identical(const ArpConfig& c, const std::string& what) {
   DisplayMemorySet mem(c.memory, c.timing.eyes);

@@ -9,8 +9,7 @@
 #include <vector>
 
 #include "common/InputError.hpp"
-#include "host/cubemap/CalibrationPattern.hpp"
-#include "host/cubemap/DisplayMemoryFill.hpp"
+#include "FrameFixtures.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "rtl_model/verilated/VerilatedFrameModel.hpp"
 
@@ -19,49 +18,17 @@ using namespace arp::dp;
 
 namespace {
 
-// The calibration pattern far away in memory 0, nearer squares in memories 1
-// and 2 at one depth (the composition's tie rule), the others left empty.
-void fill(DisplayMemorySet& mem) {
-  const auto& fmt = mem.format();
-  const int S = fmt.face_size;
-  host::load_into_memories(mem, 0, host::make_calibration_pattern(S), host::far_depth(fmt));
-  const uint32_t near = fmt.empty_depth() / 3;
-  for (int e = 0; e < mem.eyes(); ++e)
-    for (int m = 1; m < std::min(3, mem.count()); ++m) {
-      auto& b = mem.bank(e, m);
-      for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < S; ++y)
-          for (int x = 0; x < S; ++x) {
-            const bool in = m == 1 ? ((x * 7 / S + y * 5 / S) % 2 == 0) : ((x * 3 / S) == 1 && f != 4);
-            if (in) b.write(f, x, y, fmt.pack_rgb8(m == 1 ? 250 : 30, 40 * m, 255 - 60 * f), near);
-          }
-      b.commit();
-      b.vblank();
-    }
-}
-
-// A fast turn through the frame (new samples every millisecond), and a
-// small display so a frame through the RTL takes a fraction of a second.
-OrientationStream fast_turn(const VideoTiming& t, int64_t frame) {
-  std::vector<OrientationSample> s;
-  const int64_t t0 = t.cycles_to_ps(t.frame_start_cycle(frame)) - 2'000'000'000;
-  for (int i = 0; i < 24; ++i)
-    s.push_back({t0 + int64_t{i} * 1'000'000'000, from_yaw_pitch_roll_deg(30.0 + 7.0 * i, 20.0 - 3.0 * i, 5.0 + 0.2 * i)});
-  return OrientationStream(s, "test");
-}
-ArpConfig small(ArpConfig c) {
-  const auto t = c.timing;
-  c.timing = VideoTimingConfig::mode(t.eyes, {160, 8, 16, 16}, {120, 2, 2, 6}, 1'400'000);
-  c.timing.eye_scan = t.eye_scan;
-  return c;
-}
+// Layered memories (the composition's tie rule in memories 1 and 2), a fast
+// turn (7 degrees a millisecond: new samples every millisecond of the frame),
+// a small display so that a frame through the RTL takes a fraction of a second.
+ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
 
 void expect_identical(const ArpConfig& c, const std::string& what) {
   DisplayMemorySet mem(c.memory, c.timing.eyes);
-  fill(mem);
+  test::fill_layered(mem);
   const FunctionalModel functional(c);
   const vl::VerilatedFrameModel rtl(c);
-  const OrientationStream o = fast_turn(functional.timing(), 1);
+  const OrientationStream o = test::turning(functional.timing(), 1, 7.0);
   for (int64_t frame : {1, 2}) {
     HmdFrame want, got;
     RenderOptions ro;

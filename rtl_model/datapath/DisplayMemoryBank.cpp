@@ -115,4 +115,12 @@ size_t DisplayMemorySet::bytes_allocated() const {
   return s;
 }
 
+bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
+  const MemoryFormat& f = mem.format();
+  const MemoryFormat want(c.memory);
+  return mem.eyes() == c.timing.eyes && mem.count() == c.memory.count && f.face_size == want.face_size &&
+         f.red_bits == want.red_bits && f.green_bits == want.green_bits && f.blue_bits == want.blue_bits &&
+         f.depth_bits == want.depth_bits;
+}
+
 }  // namespace arp::dp

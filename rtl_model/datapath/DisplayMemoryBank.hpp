@@ -130,4 +130,8 @@ class DisplayMemorySet {
   std::vector<std::unique_ptr<DisplayMemoryBank>> banks_;
 };
 
+// Whether a memory set is the one a configuration describes: its eyes,
+// memory count and format (what a frame renderer reads it with).
+bool matches(const DisplayMemorySet& mem, const ArpConfig& c);
+
 }  // namespace arp::dp

@@ -25,10 +25,7 @@ VerilatedFrameModel::VerilatedFrameModel(const dp::ArpConfig& cfg)
 
 void VerilatedFrameModel::render(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation,
                                  int64_t frame, HmdFrame& out, bool photon_times) const {
-  const auto& f = mem.format();
-  if (mem.eyes() != cfg_.timing.eyes || mem.count() != cfg_.memory.count || f.face_size != fmt_.face_size ||
-      f.red_bits != fmt_.red_bits || f.green_bits != fmt_.green_bits || f.blue_bits != fmt_.blue_bits ||
-      f.depth_bits != fmt_.depth_bits)
+  if (!dp::matches(mem, cfg_))
     throw InputError("display memories", "", "eyes, count or format differ from the configuration");
   if (orientation.size() == 0) throw InputError("orientation", "", "no orientation samples");
   if (frame < 0) throw InputError("frame", "", "frame index must not be negative");
