@@ -9,12 +9,12 @@
 //            even, computed at elaboration), NEWTON_STEPS Newton-Raphson
 //            stages, then one stage of the denormalising shift and the two
 //            multiplies sc * y', tc * y'.
-//            DIVIDER 1: an exact floor division stage (combinational: its
-//            logic depth is in the cost table; a real design would pipeline
-//            it over more stages) and a rounding stage.
+//            DIVIDER 1: restoring division, DIV_BITS_PER_STAGE quotient bits
+//            per stage, and a stage for the sign and the rounding.
 //   position quotient clamped to +-1, (q + 1)/2 x S rounded to TEXEL_FRAC
 //            bits, clamped to the face.
-// Minimum latency: 3 + NEWTON_STEPS (table), 3 (exact); LATENCY pads beyond it.
+// Minimum latency: 3 + NEWTON_STEPS (table), ceil(QUOT_FRAC / DIV_BITS_PER_STAGE)
+// + 2 (exact: 6 at the default widths); LATENCY pads beyond it.
 // Input contract (as the datapath's): no component is the most negative code
 // -2^(ROT_FRAC+1), which a rotation of a unit vector never produces.
 // Flow control: a stall-all pipeline, in_ready = out_ready | !out_valid.
@@ -23,6 +23,7 @@
 module arp_cube_face_address_generator #(
   parameter int ROT_FRAC = 14,
   parameter int DIVIDER = 0,           // 0 reciprocal table, 1 exact
+  parameter int DIV_BITS_PER_STAGE = 4,  // exact divider: quotient bits per pipeline stage
   parameter int RECIP_INDEX_BITS = 8,
   parameter int RECIP_FRAC_BITS = 16,
   parameter int NEWTON_STEPS = 1,
@@ -55,7 +56,7 @@ module arp_cube_face_address_generator #(
   localparam int YW = F + 3;           // reciprocal mantissa, signed
   localparam int QW = QUOT_FRAC + 3;   // quotient, signed
   localparam int BW = 3 + 1 + 2 * SCW + MAW;  // face, zero, sc, tc, |ma|
-  localparam int MIN_LATENCY = DIVIDER == 0 ? 3 + NEWTON_STEPS : 3;
+  localparam int MIN_LATENCY = DIVIDER == 0 ? 3 + NEWTON_STEPS : (QUOT_FRAC + DIV_BITS_PER_STAGE - 1) / DIV_BITS_PER_STAGE + 2;
 
   // Widths and latencies this RTL does not build are refused at elaboration.
   if (LATENCY < MIN_LATENCY) begin : g_latency_check
@@ -216,70 +217,90 @@ module arp_cube_face_address_generator #(
       end
     end
   end else begin : g_exact
-    // floor division of sc << QUOT_FRAC by |ma| on magnitudes, then the remainder decides the rounding
-    localparam int NUMW = SCW + QUOT_FRAC;
-    function automatic logic signed [QW+1:0] divide(input logic signed [SCW-1:0] s, input logic [MAW-1:0] m,
-                                                  output logic [MAW-1:0] rem);
-      logic [NUMW-1:0] an;
-      /* verilator lint_off UNUSEDSIGNAL */
-      logic [NUMW-1:0] qa;  // <= 2^QUOT_FRAC since |s| <= m: its low bits are the quotient
-      /* verilator lint_on UNUSEDSIGNAL */
-      logic [MAW-1:0] ra;
-      logic signed [QW+1:0] q;
-      logic signed [SCW-1:0] mag;
-      mag = s < 0 ? -s : s;  // |s| <= 2^(SCW-2): no overflow
-      an = NUMW'(mag) << QUOT_FRAC;
-      qa = an / NUMW'(m);
-      ra = MAW'(an % NUMW'(m));
-      if (s < 0 && ra != '0) begin
-        q = -$signed((QW+2)'(qa)) - 1;
-        rem = m - ra;
-      end else begin
-        q = s < 0 ? -$signed((QW+2)'(qa)) : $signed((QW+2)'(qa));
-        rem = ra;
-      end
-      divide = q;
-    endfunction
-    logic div_valid;
-    logic [2:0] div_face;
-    logic div_zero;
-    logic [MAW-1:0] div_m, rem_s_d, rem_t_d, rem_s, rem_t;
-    logic signed [QW+1:0] fq_s_d, fq_t_d, fq_s, fq_t;
+    // Restoring division of |sc| and |tc| by |ma| (|sc|, |tc| <= |ma|), two
+    // dividers side by side: the integer bit first, then DIV_BITS_PER_STAGE
+    // fraction bits per pipeline stage (NS stages for QUOT_FRAC bits), then a
+    // stage that restores the sign (floor division) and rounds by the remainder.
+    localparam int K = DIV_BITS_PER_STAGE;
+    localparam int NS = (QUOT_FRAC + K - 1) / K;
+    localparam int QB = QUOT_FRAC + 1;  // quotient magnitude, <= 2^QUOT_FRAC
+    // the state between division stages: face, zero, |ma|, signs, remainders, quotients so far
+    localparam int DW = 3 + 1 + MAW + 2 + 2 * MAW + 2 * QB;
+    logic [DW-1:0] div_state [NS + 1];
+    logic div_valid [NS + 1];
     always_comb begin
-      logic [MAW-1:0] m;
-      m = sel_q[MAW-1:0];
-      if (m == '0) m = MAW'(1);
-      fq_s_d = divide(sel_q[MAW + SCW +: SCW], m, rem_s_d);
-      fq_t_d = divide(sel_q[MAW +: SCW], m, rem_t_d);
+      logic signed [SCW-1:0] sc, tc;
+      logic [MAW-1:0] m, as, at;
+      logic is, it;
+      sc = sel_q[MAW + SCW +: SCW];
+      tc = sel_q[MAW +: SCW];
+      m = sel_q[MAW-1:0] == '0 ? MAW'(1) : sel_q[MAW-1:0];  // |ma| = 0: the zero vector, whose quotients are 0
+      as = MAW'(sc < 0 ? -sc : sc);
+      at = MAW'(tc < 0 ? -tc : tc);
+      is = as == m;  // the integer bit: |sc| / |ma| is 1 only on the face edge
+      it = at == m;
+      div_state[0] = {sel_q[BW-1 -: 3], sel_q[BW-4], m, sc < 0, tc < 0, is ? '0 : as, it ? '0 : at,
+                      QB'(is), QB'(it)};
+      div_valid[0] = sel_valid;
     end
-    always_ff @(posedge clk) begin
-      if (!rst_n) div_valid <= 1'b0;
-      else if (advance) div_valid <= sel_valid;
-      if (advance) begin
-        div_face <= sel_q[BW-1 -: 3];
-        div_zero <= sel_q[BW-4];
-        div_m <= sel_q[MAW-1:0] == '0 ? MAW'(1) : sel_q[MAW-1:0];
-        fq_s <= fq_s_d;
-        fq_t <= fq_t_d;
-        rem_s <= rem_s_d;
-        rem_t <= rem_t_d;
+    for (genvar k = 0; k < NS; k++) begin : g_divide
+      localparam int BITS = QUOT_FRAC - k * K < K ? QUOT_FRAC - k * K : K;  // fraction bits in this stage
+      logic [MAW-1:0] m;
+      logic [MAW-1:0] r_s [BITS + 1] /*verilator split_var*/;  // a chain: element j + 1 from j
+      logic [MAW-1:0] r_t [BITS + 1] /*verilator split_var*/;  // a chain: element j + 1 from j
+      logic [QB-1:0] q_s [BITS + 1] /*verilator split_var*/;  // a chain: element j + 1 from j
+      logic [QB-1:0] q_t [BITS + 1] /*verilator split_var*/;  // a chain: element j + 1 from j
+      assign m = div_state[k][2 * QB + 2 * MAW + 2 +: MAW];
+      assign r_s[0] = div_state[k][2 * QB + MAW +: MAW];
+      assign r_t[0] = div_state[k][2 * QB +: MAW];
+      assign q_s[0] = div_state[k][QB +: QB];
+      assign q_t[0] = div_state[k][0 +: QB];
+      for (genvar j = 0; j < BITS; j++) begin : g_bit
+        logic [MAW:0] ds, dt;  // the remainder doubled: below 2 |ma|
+        logic gs, gt;
+        assign ds = {r_s[j], 1'b0};
+        assign dt = {r_t[j], 1'b0};
+        assign gs = ds >= {1'b0, m};
+        assign gt = dt >= {1'b0, m};
+        assign r_s[j+1] = MAW'(gs ? ds - {1'b0, m} : ds);
+        assign r_t[j+1] = MAW'(gt ? dt - {1'b0, m} : dt);
+        assign q_s[j+1] = {q_s[j][QB-2:0], gs};
+        assign q_t[j+1] = {q_t[j][QB-2:0], gt};
+      end
+      always_ff @(posedge clk) begin
+        if (!rst_n) div_valid[k+1] <= 1'b0;
+        else if (advance) div_valid[k+1] <= div_valid[k];
+        if (advance)
+          div_state[k+1] <= {div_state[k][DW-1 -: 3 + 1 + MAW + 2], r_s[BITS], r_t[BITS], q_s[BITS], q_t[BITS]};
       end
     end
-    function automatic logic signed [QW-1:0] round_quotient(input logic signed [QW+1:0] q, input logic [MAW-1:0] rem,
-                                                           input logic [MAW-1:0] m);
+    // sign and rounding: floor division of the signed value, then the remainder decides
+    function automatic logic signed [QW-1:0] signed_rounded(input logic neg, input logic [QB-1:0] qa,
+                                                            input logic [MAW-1:0] r, input logic [MAW-1:0] m);
+      logic signed [QW+1:0] q;
+      logic [MAW-1:0] rem;
       logic [MAW:0] twice;
       logic up;
+      if (neg && r != '0) begin
+        q = -$signed((QW+2)'(qa)) - 1;
+        rem = m - r;
+      end else begin
+        q = neg ? -$signed((QW+2)'(qa)) : $signed((QW+2)'(qa));
+        rem = r;
+      end
       twice = {rem, 1'b0};
       up = DIV_ROUNDING != 0 && (twice > {1'b0, m} || (twice == {1'b0, m} && (DIV_ROUNDING == 1 || q[0])));
-      round_quotient = QW'(q + (QW+2)'(up));
+      signed_rounded = QW'(q + (QW+2)'(up));
     endfunction
+    logic [DW-1:0] d;
+    assign d = div_state[NS];
     always_ff @(posedge clk) begin
       if (!rst_n) quot_valid <= 1'b0;
-      else if (advance) quot_valid <= div_valid;
+      else if (advance) quot_valid <= div_valid[NS];
       if (advance) begin
-        quot_face <= div_face;
-        qs <= div_zero ? '0 : round_quotient(fq_s, rem_s, div_m);
-        qt <= div_zero ? '0 : round_quotient(fq_t, rem_t, div_m);
+        quot_face <= d[DW-1 -: 3];
+        qs <= d[DW-4] ? '0 : signed_rounded(d[2 * QB + 2 * MAW + 1], d[QB +: QB], d[2 * QB + MAW +: MAW], d[2 * QB + 2 * MAW + 2 +: MAW]);
+        qt <= d[DW-4] ? '0 : signed_rounded(d[2 * QB + 2 * MAW], d[0 +: QB], d[2 * QB +: MAW], d[2 * QB + 2 * MAW + 2 +: MAW]);
       end
     end
   end

@@ -694,3 +694,33 @@ ARP_HDL_TRACED_MODEL(ARP_HDL_WAVE_TEST)
     for (const std::string& m : missed) ADD_FAILURE() << "never reached: " << m;               \
   }
 ARP_HDL_COVERAGE_MODELS(ARP_HDL_COVERAGE_TEST)
+
+// One fact in two places kept equal: the first line of configurations.txt
+// (the default build) is the datapath's default configuration, latencies
+// included (timed.*_latency).
+TEST(HdlConfiguration, TheDefaultBuildIsTheDefaultConfiguration) {
+  const HdlConfig want = vl::hdl_config_of(dp::ArpConfig{});
+  int compared = 0;
+#define ARP_HDL_FIELD_EQ(field) EXPECT_EQ(c.field, want.field) << where << #field;
+#define ARP_HDL_CHECK_DEFAULT(module, config, mutant, cls, ...) \
+  if (std::string(#config) == "default") {                      \
+    HdlConfig c{};                                              \
+    (__VA_ARGS__);                                              \
+    const std::string where = #module " build 'default': ";     \
+    ARP_HDL_PARAMS_##module(ARP_HDL_FIELD_EQ);                  \
+    ++compared;                                                 \
+  }
+  ARP_HDL_PRODUCT_MODELS(ARP_HDL_CHECK_DEFAULT)
+#undef ARP_HDL_CHECK_DEFAULT
+#undef ARP_HDL_FIELD_EQ
+  EXPECT_EQ(compared, 4) << "one default build per module";
+  // the latencies, which no module's parameter list holds
+  HdlConfig c{};
+#define ARP_HDL_TRACED_DEFAULT(module, config, mutant, cls, ...) (__VA_ARGS__);
+  ARP_HDL_TRACED_MODEL(ARP_HDL_TRACED_DEFAULT)
+#undef ARP_HDL_TRACED_DEFAULT
+  EXPECT_EQ(c.rotate_latency, want.rotate_latency);
+  EXPECT_EQ(c.address_latency, want.address_latency);
+  EXPECT_EQ(c.compose_latency, want.compose_latency);
+  EXPECT_EQ(c.filter_latency, want.filter_latency);
+}
