@@ -25,6 +25,7 @@ int sc_main(int argc, char** argv) {
   add(arp::app::add_tracker_command(app));
   add(arp::app::add_latency_command(app));
   add(arp::app::add_live_command(app));
+  add(arp::app::add_tradeoff_command(app));
   arp::app::strict_numbers(app);
   try {
     app.parse(argc, argv);

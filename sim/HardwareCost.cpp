@@ -1,0 +1,203 @@
+#include "HardwareCost.hpp"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
+#include "rtl_model/verilated/HdlConfig.hpp"
+
+namespace arp::sim {
+
+extern const char* const kHdlCostCsv;
+extern const char* const kHdlModulesTxt;
+
+namespace {
+
+// The RTL's parameter names (configurations.txt) with this configuration's values.
+std::map<std::string, int64_t> rtl_parameters(const dp::ArpConfig& c) {
+  const vl::HdlConfig h = vl::hdl_config_of(c);
+  return {{"VEC_FRAC", h.vec_frac},         {"MAT_FRAC", h.mat_frac},
+          {"ROT_FRAC", h.rot_frac},         {"ROT_ROUNDING", h.rot_rounding},
+          {"DIVIDER", h.divider},           {"RECIP_INDEX_BITS", h.recip_index_bits},
+          {"RECIP_FRAC_BITS", h.recip_frac_bits}, {"NEWTON_STEPS", h.newton_steps},
+          {"QUOT_FRAC", h.quot_frac},       {"DIV_ROUNDING", h.div_rounding},
+          {"TEXEL_FRAC", h.texel_frac},     {"TEXEL_ROUNDING", h.texel_rounding},
+          {"FACE_SIZE", h.face_size},       {"ROTATE_LATENCY", h.rotate_latency},
+          {"ADDRESS_LATENCY", h.address_latency}, {"MEMORIES", h.memories},
+          {"RED_BITS", h.red_bits},         {"GREEN_BITS", h.green_bits},
+          {"BLUE_BITS", h.blue_bits},       {"DEPTH_BITS", h.depth_bits},
+          {"BACKGROUND", h.background},     {"COMPOSE_LATENCY", h.compose_latency},
+          {"FILTER_LATENCY", h.filter_latency}};
+}
+
+// modules.txt: key -> the configuration value its LATENCY parameter takes.
+std::map<std::string, std::string> latency_keys() {
+  std::map<std::string, std::string> out;
+  std::istringstream in(kHdlModulesTxt);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream l(line);
+    std::string key, top, latency;
+    if (l >> key >> top >> latency) out[key] = latency;
+  }
+  return out;
+}
+
+// One CSV field list; the parameters column is quoted (it holds spaces, no commas or quotes).
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> f(1);
+  bool quoted = false;
+  for (char ch : line) {
+    if (ch == '"') quoted = !quoted;
+    else if (ch == ',' && !quoted) f.emplace_back();
+    else f.back() += ch;
+  }
+  return f;
+}
+
+struct CostRow {
+  SynthesizedModule m;
+  std::map<std::string, int64_t> parameters;
+};
+
+std::vector<CostRow> cost_rows() {
+  std::vector<CostRow> rows;
+  std::istringstream in(kHdlCostCsv);
+  std::string line;
+  std::getline(in, line);  // header: configuration,module,parameters,cells,flip_flops,logic_depth,ice40_lut4,ice40_carry,ice40_ff
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto f = csv_fields(line);
+    if (f.size() < 7) throw std::logic_error("docs/hdl-cost.csv: a row with " + std::to_string(f.size()) + " fields: " + line);
+    CostRow r;
+    r.m.configuration = f[0];
+    r.m.module = f[1];
+    r.m.cells = std::stoll(f[3]);
+    r.m.flip_flops = std::stoll(f[4]);
+    r.m.logic_depth = std::stoll(f[5]);
+    r.m.ice40_lut4 = std::stoll(f[6]);
+    std::istringstream p(f[2]);
+    std::string kv;
+    while (p >> kv) {
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos) throw std::logic_error("docs/hdl-cost.csv: parameter '" + kv + "' without a value");
+      r.parameters[kv.substr(0, eq)] = std::stoll(kv.substr(eq + 1));
+    }
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+// The bit-count model (see the header): per pixel, the stages the RTL implements.
+BitCountModel bit_model(const dp::ArpConfig& c) {
+  const dp::DatapathWidths& w = c.widths;
+  const int64_t vec = w.vec_frac + 2, mat = w.mat_frac + 2, rot = w.rot_frac + 2;
+  const int64_t recip = w.recip_frac_bits + 1, quot = w.quot_frac + 2;
+  int64_t face_bits = 0;
+  while ((int64_t{1} << face_bits) < c.memory.face_size) ++face_bits;
+  BitCountModel m;
+  // Orientation matrix unit: nine products, two sums per row, three roundings.
+  m.multiplier_bits += 9 * vec * mat;
+  m.adder_bits += 3 * 2 * (vec + mat) + 3 * rot;
+  // Address generator: three magnitude compares; the divider; two texel scalings.
+  m.adder_bits += 3 * rot;
+  if (w.divider == dp::DividerKind::ReciprocalLut) {
+    m.table_bits += (int64_t{1} << w.recip_index_bits) * recip;
+    m.multiplier_bits += w.newton_steps * 2 * recip * recip + 2 * rot * recip;
+  } else {
+    m.adder_bits += 2 * quot * (rot + 1);  // two restoring dividers: one subtract per quotient bit
+  }
+  m.multiplier_bits += 2 * quot * face_bits;
+  m.adder_bits += 2 * (face_bits + w.texel_frac);
+  // Composition: per tap, a compare per extra memory; bilinear composites four taps.
+  const int64_t taps = c.pipeline.aa == dp::AaMode::Bilinear ? 4 : 1;
+  m.adder_bits += taps * (c.memory.count - 1) * c.memory.depth_bits;
+  // Filter: three channels, four weighted taps (the weights' products), three sums.
+  if (taps == 4) {
+    const int64_t weight = 2 * (w.texel_frac + 1);
+    m.multiplier_bits += 4 * (w.texel_frac + 1) * (w.texel_frac + 1) + 4 * c.memory.color_bits() * weight;
+    m.adder_bits += 3 * c.memory.color_bits() + c.memory.color_bits() * weight / 2;
+  }
+  return m;
+}
+
+}  // namespace
+
+bool HardwareCost::fully_synthesized() const { return synthesized.size() == rtl_module_keys().size(); }
+int64_t HardwareCost::cells() const {
+  int64_t n = 0;
+  for (const auto& s : synthesized) n += s.cells;
+  return n;
+}
+int64_t HardwareCost::lut4() const {
+  int64_t n = 0;
+  for (const auto& s : synthesized) n += s.ice40_lut4;
+  return n;
+}
+int64_t HardwareCost::logic_depth() const {
+  int64_t d = 0;
+  for (const auto& s : synthesized) d = std::max(d, s.logic_depth);
+  return d;
+}
+std::string HardwareCost::configuration() const {
+  if (synthesized.empty()) return "";
+  std::string name = synthesized.front().configuration;
+  for (const auto& s : synthesized)
+    if (s.configuration != name) return "mixed";
+  return name;
+}
+
+std::vector<std::string> rtl_module_keys() {
+  std::vector<std::string> keys;
+  for (const auto& [k, latency] : latency_keys()) keys.push_back(k);
+  return keys;
+}
+
+std::vector<SynthesizedModule> synthesized_rows() {
+  std::vector<SynthesizedModule> out;
+  for (const auto& r : cost_rows()) out.push_back(r.m);
+  return out;
+}
+
+HardwareCost hardware_cost(const dp::ArpConfig& c) {
+  HardwareCost cost;
+  cost.model = bit_model(c);
+  const auto values = rtl_parameters(c);
+  const auto latency = latency_keys();
+  std::map<std::string, bool> taken;
+  for (const auto& r : cost_rows()) {
+    if (taken[r.m.module]) continue;  // several configurations may share one module's parameters
+    const auto latency_key = latency.find(r.m.module);
+    if (latency_key == latency.end()) continue;
+    bool same = true;
+    for (const auto& [name, v] : r.parameters) {
+      const std::string key = name == "LATENCY" ? latency_key->second : name;
+      const auto it = values.find(key);
+      if (it == values.end() || it->second != v) {
+        same = false;
+        break;
+      }
+    }
+    if (!same) continue;
+    taken[r.m.module] = true;
+    cost.synthesized.push_back(r.m);
+  }
+  return cost;
+}
+
+std::string hardware_cost_source() {
+  const auto rows = cost_rows();
+  std::vector<std::string> names;
+  for (const auto& r : rows)
+    if (std::find(names.begin(), names.end(), r.m.configuration) == names.end()) names.push_back(r.m.configuration);
+  std::string s = "docs/hdl-cost.csv (scripts/hdl-cost.sh: yosys generic synth and synth_ice40; no timing closure, no place "
+                  "and route): " + std::to_string(rows.size()) + " module syntheses of " + std::to_string(names.size()) +
+                  " configurations (";
+  for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+  return s + ")";
+}
+
+}  // namespace arp::sim

@@ -1,0 +1,49 @@
+// What a datapath configuration costs in hardware, for the trade table:
+// synthesized figures where the RTL was synthesized with exactly this
+// configuration's parameters (docs/hdl-cost.csv, written by
+// scripts/hdl-cost.sh; embedded at build time, an input to the table, not
+// measured by it), and otherwise -- always beside it -- a bit-count model of
+// the per-pixel arithmetic, stated as a model: multiplier bits (a x b for an
+// a-bit by b-bit product), adder bits and table bits. The model ranks widths;
+// it is no cell count.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rtl_model/datapath/ArpConfig.hpp"
+
+namespace arp::sim {
+
+struct SynthesizedModule {
+  std::string configuration, module;   // the cost CSV's names: "default", "omu"
+  int64_t cells = 0, flip_flops = 0, logic_depth = 0, ice40_lut4 = 0;
+};
+
+struct BitCountModel {
+  int64_t multiplier_bits = 0, adder_bits = 0, table_bits = 0;
+};
+
+struct HardwareCost {
+  // One per RTL module whose synthesized parameters equal this configuration's;
+  // all four (omu, cfag, comp, filt) or none is the usual case.
+  std::vector<SynthesizedModule> synthesized;
+  BitCountModel model;
+  bool fully_synthesized() const;  // every RTL module matched
+  int64_t cells() const;           // sums over the matched modules
+  int64_t lut4() const;
+  int64_t logic_depth() const;     // the deepest matched module
+  std::string configuration() const;  // the cost CSV's name of the matched configuration, "" if none
+};
+
+HardwareCost hardware_cost(const dp::ArpConfig& c);
+
+// The cost CSV's provenance line for tables ("scripts/hdl-cost.sh, yosys 0.23 ..."): its rows and configurations.
+std::string hardware_cost_source();
+
+// For tests: the RTL modules the cost CSV must cover, and the parsed rows.
+std::vector<std::string> rtl_module_keys();
+std::vector<SynthesizedModule> synthesized_rows();
+
+}  // namespace arp::sim
