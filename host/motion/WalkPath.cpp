@@ -2,11 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "common/InputError.hpp"
+#include "host/scene/Scene.hpp"
 #include "common/StrictJson.hpp"
 
 namespace arp::host {
@@ -14,11 +16,16 @@ namespace arp::host {
 WalkPath::WalkPath(std::vector<glm::dvec3> points, double speed, const std::string& source) : points_(std::move(points)), speed_(speed) {
   if (points_.size() < 2) throw InputError(source, "points", "a walk needs at least two points");
   if (!(speed_ > 0) || !std::isfinite(speed_) || speed_ > 1000) throw InputError(source, "speed", "must be > 0 and at most 1000 m/s");
-  cumulative_.push_back(0);
-  for (size_t i = 1; i < points_.size(); ++i) {
+  for (size_t i = 0; i < points_.size(); ++i) {
     const auto& p = points_[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError(source, "points[" + std::to_string(i) + "]", "not finite");
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kWorldLimitM)
+      throw InputError(source, "points[" + std::to_string(i) + "]",
+                       "farther than " + std::to_string(static_cast<int64_t>(kWorldLimitM)) + " m from the origin");
+  }
+  cumulative_.push_back(0);
+  for (size_t i = 1; i < points_.size(); ++i) {
     length_ += glm::length(points_[i] - points_[i - 1]);
     cumulative_.push_back(length_);
   }

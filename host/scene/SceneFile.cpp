@@ -96,8 +96,8 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
   s.name = top.text("name", "scene");
   if (const json* ext = top.sub("extent")) {
     Fields e(*ext, source, "extent");
-    s.extent_min = e.vec3("min", s.extent_min, -1e6, 1e6);
-    s.extent_max = e.vec3("max", s.extent_max, -1e6, 1e6);
+    s.extent_min = e.vec3("min", s.extent_min, -kWorldLimitM, kWorldLimitM);
+    s.extent_max = e.vec3("max", s.extent_max, -kWorldLimitM, kWorldLimitM);
     e.finish();
     if (!(s.extent_min.x < s.extent_max.x && s.extent_min.y < s.extent_max.y && s.extent_min.z < s.extent_max.z))
       e.fail("", "min must be below max on every axis");
@@ -149,7 +149,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
       mat.texture = it->second;
     }
     SceneObject& so = add_object(s, o.text("name", "object " + std::to_string(i)), mesh,
-                                 o.vec3("position", {0, 0, 0}, -1e6, 1e6), mat);
+                                 o.vec3("position", {0, 0, 0}, -kWorldLimitM, kWorldLimitM), mat);
     so.rotation_deg = o.vec3("rotation_deg", {0, 0, 0}, -3600, 3600);
     so.scale = o.vec3("scale", {1, 1, 1}, 1e-6, 1e6);
     // "size": scale the model uniformly so its bounding sphere has this diameter.

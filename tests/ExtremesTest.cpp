@@ -1,0 +1,166 @@
+// Extremes with independent expectations: a view far from the origin against
+// the same view at the origin (the renderer works relative to the eye), and
+// positions past the supported limit refused with the limit named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "TestSupport.hpp"
+#include "host/motion/WalkPath.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
+#include "host/scene/Gallery.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
+#include "sim/MemoryContents.hpp"
+#include "sim/Session.hpp"
+
+namespace arp {
+namespace {
+
+__extension__ typedef __int128 i128;  // exact products of cycles and picoseconds
+
+// The scene moved by `offset`: every object, its animation path and the extent.
+host::Scene moved(host::Scene s, const glm::dvec3& offset) {
+  for (auto& o : s.objects) {
+    o.position += offset;
+    for (auto& p : o.animation.path) p += offset;
+  }
+  s.extent_min += offset;
+  s.extent_max += offset;
+  return s;
+}
+
+struct FaceDifference {
+  int64_t texels = 0, object_differs = 0, colour_differs = 0;
+  double max_distance_rel = 0;
+};
+
+FaceDifference compare(const std::vector<host::FaceImage>& a, const std::vector<host::FaceImage>& b) {
+  FaceDifference d;
+  for (size_t f = 0; f < a.size(); ++f) {
+    if (a[f].object.size() != b[f].object.size()) {
+      d.object_differs += static_cast<int64_t>(std::max(a[f].object.size(), b[f].object.size()));
+      continue;
+    }
+    for (size_t i = 0; i < a[f].object.size(); ++i) {
+      ++d.texels;
+      if (a[f].object[i] != b[f].object[i]) {
+        ++d.object_differs;
+        continue;
+      }
+      if (glm::length(a[f].color[i] - b[f].color[i]) > 1e-9) ++d.colour_differs;
+      if (std::isfinite(a[f].distance[i]))
+        d.max_distance_rel = std::max(d.max_distance_rel, std::abs(a[f].distance[i] - b[f].distance[i]) / a[f].distance[i]);
+    }
+  }
+  return d;
+}
+
+// The gallery seen from its walk's start, then the same scene and eye moved
+// 1e3, 1e5 m and to the supported limit along a skew direction: the faces
+// must be the same image -- the same object at every texel, the same colour
+// and the same radial depth to 1e-9 -- as at the origin.
+TEST(Extremes, AViewFarFromTheOriginIsTheViewAtTheOrigin) {
+  const host::Scene scene = host::make_gallery();
+  const glm::dvec3 eye = host::gallery_walk().front() + glm::dvec3(0, 1.6, 0);
+  const host::CubeFaceRenderer renderer;
+  const int S = 96;
+  std::vector<host::FaceImage> at_origin;
+  renderer.render_faces(scene, {}, 0.0, eye, S, at_origin);
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(0.8, 0.3, -0.52));
+  const double limit_offset = host::kWorldLimitM - 100.0;  // the scene's far corner stays inside the limit
+  for (double far : {1e3, 1e5, limit_offset}) {
+    const glm::dvec3 offset = dir * far;
+    std::vector<host::FaceImage> there;
+    renderer.render_faces(moved(scene, offset), {}, 0.0, eye + offset, S, there);
+    const FaceDifference d = compare(at_origin, there);
+    EXPECT_EQ(d.texels, 6 * S * S) << far;
+    EXPECT_EQ(d.object_differs, 0) << far << " m: texels showing another object";
+    EXPECT_EQ(d.colour_differs, 0) << far << " m";
+    EXPECT_LT(d.max_distance_rel, 1e-9) << far << " m";
+  }
+}
+
+TEST(Extremes, PositionsBeyondTheSupportedLimitAreRefusedNamingIt) {
+  sim::MemoryContents m;
+  m.scene = "gallery";
+  m.position = "2e6,1.6,0";
+  dp::ArpConfig c;
+  c.timing.eyes = 1;
+  dp::DisplayMemorySet mem(c.memory, 1);
+  std::string source;
+  const InputError e = test::error_of([&] { m.fill(mem, dp::Quat{}, source); });
+  EXPECT_NE(std::string(e.what()).find("--position"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("1000000 m"), std::string::npos) << e.what();
+  const InputError w = test::error_of([] { host::WalkPath({{0, 0, 0}, {0, 0, -3e6}}, 1.0, "walk.json"); });
+  EXPECT_NE(std::string(w.what()).find("points[1]"), std::string::npos) << w.what();
+  const InputError first = test::error_of([] { host::WalkPath({{NAN, 0, 0}, {0, 0, -3}}, 1.0, "walk.json"); });
+  EXPECT_NE(std::string(first.what()).find("points[0]"), std::string::npos) << first.what();
+}
+
+// Long runs without running them: one frame at the hard moments -- the DK1's
+// 16-bit millisecond counter wrapping (65.536 s), the DK2's 32-bit
+// microsecond counter wrapping (71.6 min), past 2^53 ps (where a double stops
+// holding picoseconds) and the last frame whose times fit -- under a
+// 3000 deg/s turn. Every photon time is the closed form: the pixel's clock
+// cycle N (frame x 800 x 525 plus its place in the frame, read from frame 0)
+// at floor(N x 10^12 / f_pixel) ps; latencies stay within a tracker period and a line.
+TEST(Extremes, PhotonTimesStayExactAtTrackerWrapsAndPast2To53Picoseconds) {
+  test::TempDir dir;
+  const dp::ArpConfig cfg;
+  const dp::VideoTiming timing(cfg.timing);
+  const int64_t hz = cfg.timing.pixel_clock_hz, frame_cycles = 800 * 525;
+  auto frame_at_s = [&](double s) { return static_cast<int64_t>(std::ceil(s * static_cast<double>(hz) / frame_cycles)); };
+  struct Run {
+    std::vector<int64_t> photons;
+    sim::RunSummary summary;
+  };
+  auto run = [&](int64_t first, bool turning = true) {
+    sim::RunSpec spec;
+    spec.first_frame = first;
+    spec.frames = 1;
+    spec.motion.motion = turning ? "rotate" : "";
+    spec.motion.rate = 3000;
+    spec.motion.axis = "0.2,1,0.4";
+    spec.out.out_dir = dir.file("f" + std::to_string(first));
+    spec.out.every = 0;
+    spec.out.photon_times = true;
+    Run r;
+    sim::Session s(spec);
+    s.on_frame = [&](const HmdFrame& f, const stage::FrameReport&) { r.photons = f.photon_ps; };
+    r.summary = s.run();
+    return r;
+  };
+  const Run zero = run(0);
+  ASSERT_FALSE(zero.photons.empty());
+  const int64_t p53 = int64_t{1} << 53;
+  for (int64_t first : {frame_at_s(65.536) - 1, frame_at_s(4294.967296) - 1, frame_at_s(static_cast<double>(p53) * 1e-12) + 1,
+                        timing.last_frame_in_range()}) {
+    // Synthetic motion covers the first 9e6 s; the last frame (~9.2e6 s in) is seen with a still head.
+    const bool turning = first != timing.last_frame_in_range();
+    if (!turning) {
+      const InputError e = test::error_of([&] { run(first); });
+      EXPECT_NE(std::string(e.what()).find("--first-frame"), std::string::npos) << e.what();
+    }
+    const Run r = run(first, turning);
+    ASSERT_EQ(r.photons.size(), zero.photons.size()) << first;
+    for (size_t i = 0; i < r.photons.size(); i += 997) {
+      // The pixel's cycle within its frame: the smallest N with floor(N 10^12 / f) = its frame-0 photon time.
+      const i128 t0 = zero.photons[i];
+      const i128 n0 = (t0 * hz + 999'999'999'999) / 1'000'000'000'000;
+      const i128 n = static_cast<i128>(first) * frame_cycles + n0;
+      const i128 expected = n * 1'000'000'000'000 / hz;
+      ASSERT_EQ(static_cast<i128>(r.photons[i]), expected) << "frame " << first << ", pixel " << i;
+    }
+    if (first == timing.last_frame_in_range()) {
+      EXPECT_GT(r.photons.back(), p53 * 100) << "far past 2^53 ps";
+    }
+    if (!turning) continue;  // a still head has one sample: its age grows with the frame
+    EXPECT_GE(r.summary.latency_min_ps, 0) << first;
+    // A scanline latch reads a sample at most one tracker period (1 ms) old and
+    // shows it within a line (800 clocks) plus the pipeline's lead (under 1 us).
+    EXPECT_LE(r.summary.latency_max_ps, 1'000'000'000 + timing.cycles_to_ps(800) + 1'000'000) << first;
+  }
+}
+
+}  // namespace
+}  // namespace arp
