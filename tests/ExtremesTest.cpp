@@ -7,6 +7,7 @@
 
 #include "TestSupport.hpp"
 #include "host/motion/WalkPath.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/scene/Gallery.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
@@ -160,6 +161,46 @@ TEST(Extremes, PhotonTimesStayExactAtTrackerWrapsAndPast2To53Picoseconds) {
     // shows it within a line (800 clocks) plus the pipeline's lead (under 1 us).
     EXPECT_LE(r.summary.latency_max_ps, 1'000'000'000 + timing.cycles_to_ps(800) + 1'000'000) << first;
   }
+}
+
+// Saturation: every datapath width at the smallest and the largest value the
+// configuration permits (from the parameter table), one at a time. A
+// combination the datapath cannot build is refused by validation; every other
+// one runs the accuracy harness's random and directed samples -- the axes,
+// cube edges and corners, components at +-1 and the smallest major axis --
+// against the golden reference: finite errors, no width at its largest worse
+// than the defaults by more than 0.01 texel, none at its smallest better.
+TEST(Extremes, EveryWidthAtItsSmallestAndLargestPermittedValue) {
+  accuracy::Options opt;
+  opt.frame_orientations = 0;
+  opt.aligned = false;
+  opt.random_orientations = 2;
+  opt.random_pixels = 256;
+  opt.color_orientations = 0;
+  const dp::ArpConfig defaults;
+  const double default_max = accuracy::run(defaults, opt).overall.max_error;
+  int runs = 0, refused = 0;
+  for (const auto& p : dp::arp_parameters().all()) {
+    if (p.section() != "datapath" || p.type != ParamType::Integer) continue;
+    for (const int64_t v : {p.int_min, p.int_max}) {
+      dp::ArpConfig c;
+      ASSERT_TRUE(p.set(c, ParamValue(v))) << p.key;
+      if (!dp::validate(c).empty()) {
+        ++refused;
+        continue;
+      }
+      const accuracy::Report r = accuracy::run(c, opt);
+      ++runs;
+      EXPECT_TRUE(std::isfinite(r.overall.max_error)) << p.key << "=" << v;
+      EXPECT_GT(r.overall.samples, 2000u) << p.key << "=" << v;
+      if (v == p.int_max) {
+        EXPECT_LE(r.overall.max_error, default_max + 0.01) << p.key << "=" << v;
+      } else {  // the fewest bits a width permits are no more accurate than the defaults
+        EXPECT_GE(r.overall.max_error, default_max - 0.01) << p.key << "=" << v;
+      }
+    }
+  }
+  EXPECT_GE(runs, 14) << "most extremes are buildable (" << refused << " refused by validation)";
 }
 
 }  // namespace
