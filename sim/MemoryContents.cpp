@@ -35,8 +35,8 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
         !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError("--position", position, "expected three finite numbers x,y,z");
     if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > host::kWorldLimitM)
-      throw InputError("--position", position, "farther than " + std::to_string(static_cast<int64_t>(host::kWorldLimitM)) +
-                                                    " m from the origin, the farthest a view is supported (docs/accuracy.md)");
+      throw InputError("--position", position, "a coordinate beyond ±" + std::to_string(static_cast<int64_t>(host::kWorldLimitM)) +
+                                                    " m, the farthest a view is supported (docs/accuracy.md)");
   }
   const glm::dquat q(head.w, head.x, head.y, head.z);
   const host::CubeFaceRenderer renderer;

@@ -14,6 +14,8 @@
 #include <thread>
 
 #include "common/AtomicFile.hpp"
+#include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
 
 extern char** environ;
 
@@ -33,7 +35,8 @@ pid_t spawn(const SweepCommand& c) {
   for (const auto& a : c.argv) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  const std::string program = c.program.empty() ? c.argv[0] : c.program;
+  const int rc = posix_spawn(&pid, program.c_str(), &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   if (rc == 0) return pid;
   // Not started (the program was replaced or removed meanwhile): the point fails, the sweep goes on.
@@ -50,7 +53,7 @@ int status_of(int st) { return WIFEXITED(st) ? WEXITSTATUS(st) : -WTERMSIG(st); 
 
 SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jobs,
                                const std::function<void(double, const std::string&)>& progress,
-                               const std::function<int()>& stop_when) {
+                               const std::function<int()>& stop_when, double grace_s) {
   SweepOutcome out;
   std::deque<const SweepCommand*> exclusive, shared;
   for (const auto& c : commands) (c.exclusive ? exclusive : shared).push_back(&c);
@@ -68,11 +71,19 @@ SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jo
     else out.exit_status[c->id] = 127;  // as a shell reports a program it could not run
     report();
   };
+  std::chrono::steady_clock::time_point stopped_at;
+  bool killed = false;
   while (!exclusive.empty() || !shared.empty() || !running.empty()) {
     if (!out.stop_signal && stop_when) {
       out.stop_signal = stop_when();
-      if (out.stop_signal)
+      if (out.stop_signal) {
+        stopped_at = std::chrono::steady_clock::now();
         for (const auto& [pid, c] : running) kill(pid, SIGTERM);
+      }
+    }
+    if (out.stop_signal && !killed && std::chrono::steady_clock::now() - stopped_at > std::chrono::duration<double>(grace_s)) {
+      killed = true;  // a point that ignores SIGTERM does not hold the sweep
+      for (const auto& [pid, c] : running) kill(pid, SIGKILL);
     }
     // Start what may start: an exclusive point only on an idle machine, and nothing beside it.
     const bool exclusive_running = [&] {
@@ -97,8 +108,9 @@ SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jo
     bool ended = false;
     for (auto it = running.begin(); it != running.end();) {
       int st = 0;
-      if (waitpid(it->first, &st, WNOHANG) == it->first) {
-        out.exit_status[it->second->id] = status_of(st);
+      const pid_t w = waitpid(it->first, &st, WNOHANG);
+      if (w == it->first || w < 0) {  // ended (w < 0: no such child any more, e.g. reaped elsewhere)
+        out.exit_status[it->second->id] = w < 0 ? -1 : status_of(st);
         it = running.erase(it);
         ended = true;
       } else {
@@ -109,6 +121,14 @@ SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jo
     else std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return out;
+}
+
+void check_slurm_sweep_paths(const std::string& scheduler, const std::string& script_dir, const std::string& out_dir) {
+  if (scheduler != "slurm") throw InputError("--emit", scheduler, "the one scheduler known is slurm (--emit slurm DIR)");
+  for (const auto& [option, path] : {std::pair<const char*, std::string>{"--emit", script_dir}, {"--out", out_dir}})
+    if (path.find_first_of(" \t\n'\"$`\\") != std::string::npos)
+      throw InputError(option, path, "a Slurm script names this folder as it is: no whitespace, quotes, $, ` or \\ in it");
+  check_output_folder("--emit", script_dir);
 }
 
 std::vector<std::string> write_slurm_sweep(const std::string& dir, const SlurmSweep& s) {

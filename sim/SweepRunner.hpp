@@ -15,6 +15,7 @@ struct SweepCommand {
   std::vector<std::string> argv;  // argv[0]: the program's path
   std::string log;                // stdout and stderr go here
   bool exclusive = false;         // runs with nothing beside it (it measures speed)
+  std::string program;            // the file executed, if not argv[0] (e.g. /proc/self/exe)
 };
 
 struct SweepOutcome {
@@ -25,10 +26,11 @@ struct SweepOutcome {
 // Runs the commands, `jobs` at a time (exclusive ones first, one by one);
 // `progress` (fraction done, what runs) after each start and end; `stop_when`
 // polled: non-zero stops starting points, sends SIGTERM to the running ones
-// and returns once they ended.
+// (SIGKILL to any still running `grace_s` later) and returns once they ended.
+// A command that cannot start fails with status 127 and the reason in its log.
 SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jobs,
                                const std::function<void(double, const std::string&)>& progress,
-                               const std::function<int()>& stop_when);
+                               const std::function<int()>& stop_when, double grace_s = 10.0);
 
 struct SlurmSweep {
   std::string name;                      // the job name
@@ -39,6 +41,11 @@ struct SlurmSweep {
   std::string log_dir;                   // where Slurm writes the tasks' output
   int cpus_per_task = 2;
 };
+
+// InputError unless `scheduler` is "slurm" and both folders can be named in a
+// Slurm script as they are (no whitespace, quotes, $, backquote or backslash)
+// and the script folder can be made.
+void check_slurm_sweep_paths(const std::string& scheduler, const std::string& script_dir, const std::string& out_dir);
 
 // Writes DIR/shared.ids, exclusive.ids, points-shared.sbatch, points-exclusive.sbatch,
 // merge.sbatch and submit.sh (submits the arrays, then the merge with

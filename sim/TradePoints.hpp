@@ -39,6 +39,10 @@ struct TradeScale {
 
 // The head speed the latency table states registration error at, deg/s.
 constexpr double kTradeHeadSpeedDegS = 100.0;
+// The levels' head motion: a steady turn about a generic axis (no face edge
+// stays put), the same in every level so their frames can be compared.
+constexpr double kLevelTurnDegS = 30.0;
+constexpr double kLevelTurnAxis[3] = {0.3, 1.0, 0.2};
 
 // Every point of the trade at this scale, in table order; the verilated level
 // is listed only when this build has the verilated models.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -83,6 +85,7 @@ std::string level_error(const TradeTables& t, const TradePoint& p, bool texel) {
   if (p.level == "golden") return "0 (the reference)";
   const json& w = figures_of(t, "width-default");
   if (w.empty()) return "— (width-default missing)";
+  if (p.level != "functional" && !t.results.count("level-functional")) return "— (functional missing)";
   if (!same_frames_as_functional(t, p)) return "frames differ from functional";
   return texel ? fmt(num(w, "texel_max")) + " / " + fmt(num(w, "texel_mean"))
                : fmt(num(w, "color_max_lsb")) + " / " + fmt(num(w, "color_mean_lsb"));
@@ -118,11 +121,11 @@ std::vector<Column> columns(TradeKind k) {
   auto realtime = [](T, P, F x) { return fmt(num(x, "real_time_fraction"), "%.3g"); };
   auto rss = [](T t, P p, F) {
     const auto it = t.results.find(p.id);
-    return it == t.results.end() ? std::string("—") : fmt(it->second.value("peak_rss_bytes", 0.0) / 1048576.0, "%.0f");
+    return it == t.results.end() ? std::string("—") : fmt(it->second.at("peak_rss_bytes").get<double>() / 1048576.0, "%.0f");
   };
   auto rss_raw = [](T t, P p, F) {
     const auto it = t.results.find(p.id);
-    return it == t.results.end() ? std::string() : fmt(it->second.value("peak_rss_bytes", 0.0), "%.0f");
+    return it == t.results.end() ? std::string() : fmt(it->second.at("peak_rss_bytes").get<double>(), "%.0f");
   };
   switch (k) {
     case TradeKind::Level:
@@ -131,7 +134,7 @@ std::vector<Column> columns(TradeKind k) {
                [](T, P, F x) { return x.value("describes", std::string()); }},
               {"pixel clocks/s", "pixel_clocks_per_s", speed, rawnum("pixel_clocks_per_s")},
               {"× real time", "real_time_fraction", realtime, rawnum("real_time_fraction")},
-              {"peak RSS (MB)", "peak_rss_bytes", rss, rss_raw},
+              {"peak RSS (MiB)", "peak_rss_bytes", rss, rss_raw},
               {"texel error max / mean (texels)", "texel_error_vs_golden",
                [=](T t, P p, F) { return level_error(t, p, true); }, [=](T t, P p, F) { return level_error(t, p, true); }},
               {"colour error max / mean (LSB)", "colour_error_vs_golden",
@@ -230,7 +233,7 @@ std::vector<Column> columns(TradeKind k) {
                },
                [](T, P, F x) { return fmt(num_at(x, "latency_ps", 1), "%.0f"); }},
               {"latch → photon lead (ns)", "orientation_lead_ns", number("orientation_lead_ns", "%.0f"), rawnum("orientation_lead_ns")},
-              {"registration at 100 °/s median / max (px)", "registration_max_px",
+              {"registration at " + fmt(kTradeHeadSpeedDegS, "%g") + " °/s median / max (px)", "registration_max_px",
                [](T, P, F x) {
                  return fmt(num_at(x, "registration_px", 1), "%.2f") + " / " + fmt(num_at(x, "registration_px", 2), "%.2f");
                },
@@ -246,6 +249,16 @@ std::vector<Column> columns(TradeKind k) {
   return {};
 }
 
+// A cell; a figure of the wrong type in a result file shows as such, not as a crash.
+std::string cell(const std::function<std::string(const TradeTables&, const TradePoint&, const json&)>& f, const TradeTables& t,
+                 const TradePoint& p) {
+  try {
+    return f(t, p, figures_of(t, p.id));
+  } catch (const json::exception&) {
+    return "bad value in the result";
+  }
+}
+
 const char* table_title(TradeKind k) {
   switch (k) {
     case TradeKind::Level: return "Fidelity levels: speed against error";
@@ -257,13 +270,13 @@ const char* table_title(TradeKind k) {
   return "?";
 }
 
-const char* table_note(TradeKind k, const TradeScale& s) {
+std::string table_note(TradeKind k, const TradeScale& s) {
   switch (k) {
     case TradeKind::Level:
-      return s.quick ? "Each level renders the calibration memories under a 30 °/s turn, 6 frames (pixel clocks counted from the "
-                       "first to the last frame's scan-out; the golden reference renders the same frames, untimed)."
-                     : "Each level renders the calibration memories under a 30 °/s turn, 60 frames (pixel clocks counted from the "
-                       "first to the last frame's scan-out; the golden reference renders the same frames, untimed).";
+      return "Each level renders the calibration memories under a " + fmt(kLevelTurnDegS, "%g") + " °/s turn, " +
+             std::to_string(s.level_frames()) +
+             " frames (pixel clocks counted from the first to the last frame's scan-out; the golden reference renders whole "
+             "frames of the same turn, one orientation per frame, untimed).";
     case TradeKind::Width:
       return "Error: the accuracy harness (`arpsim verify`) at these widths against the golden reference. Speed: the functional "
              "level at these widths. Cells: yosys `synth` of the four RTL modules summed, where the RTL was synthesized with "
@@ -274,10 +287,12 @@ const char* table_note(TradeKind k, const TradeScale& s) {
     case TradeKind::Region:
       return "The gallery walk with region priority rendering (margin = size / 8, θt one texel); objects: no regions.";
     case TradeKind::Latency:
-      return "The gallery walk under a steady 100 °/s turn at the fast cycle level; one change against the defaults per row "
+      return "The gallery walk under a steady " + fmt(kTradeHeadSpeedDegS, "%g") +
+             " °/s turn at the fast cycle level; one change against the defaults per row "
              "(stalls injected as `arpsim run --stall fetch:100000:6`). Latency: from the tracker sample the orientation "
              "register held to the pixel's photon, over every pixel; lead: from the register's latch to the photon of the "
-             "pixel it was latched for (the pipeline's own part). Registration: 100 °/s × latency, in display pixels at "
+             "pixel it was latched for (the pipeline's own part). Registration: " + fmt(kTradeHeadSpeedDegS, "%g") +
+             " °/s × latency, in display pixels at "
              "the view's centre (a steady turn, no prediction). Cells: the four RTL modules, where synthesized with these "
              "parameters; FIFO storage is not in the RTL.";
   }
@@ -291,13 +306,28 @@ std::string md_escape(std::string s) {
 
 }  // namespace
 
-TradePlan make_trade_plan(const TradeScale& s) { return {s, trade_points(s)}; }
+TradePlan make_trade_plan(const TradeScale& s) { return {s, trade_points(s), ""}; }
+
+std::string new_trade_run_id() {
+  const std::time_t now = std::time(nullptr);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  return std::string(b) + "-" + std::to_string(::getpid());
+}
+
+void clear_trade_results(const std::string& dir, const TradePlan& p) {
+  std::error_code ec;
+  for (const auto& q : p.points) {
+    fs::remove(trade_result_path(dir, q.id), ec);
+    fs::remove(trade_log_path(dir, q.id), ec);
+  }
+}
 
 void write_trade_plan(const std::string& dir, const TradePlan& p) {
   json ids = json::array();
   for (const auto& q : p.points) ids.push_back(q.id);
   write_text_atomic((fs::path(dir) / "plan.json").string(),
-                    json{{"tool", "arpsim tradeoff"}, {"quick", p.scale.quick}, {"points", ids}}.dump(2) + "\n");
+                    json{{"tool", "arpsim tradeoff"}, {"quick", p.scale.quick}, {"run", p.run_id}, {"points", ids}}.dump(2) + "\n");
 }
 
 TradePlan read_trade_plan(const std::string& dir) {
@@ -308,12 +338,18 @@ TradePlan read_trade_plan(const std::string& dir) {
   if (!j.is_object() || !j.contains("quick") || !j["quick"].is_boolean() || !j.contains("points") || !j["points"].is_array())
     throw InputError(path, "", "not a tradeoff plan (needs \"quick\" and \"points\")");
   TradePlan p = make_trade_plan(TradeScale{j["quick"].get<bool>()});
+  if (j.contains("run") && j["run"].is_string()) p.run_id = j["run"].get<std::string>();
   std::vector<std::string> want, have;
   for (const auto& id : j["points"]) want.push_back(id.is_string() ? id.get<std::string>() : id.dump());
   for (const auto& q : p.points) have.push_back(q.id);
-  if (want != have)
-    throw InputError(path, "points", "written by a build with another point list (" + std::to_string(want.size()) + " points, this build has " +
-                                         std::to_string(have.size()) + "); write the plan again with this build");
+  if (want != have) {
+    size_t i = 0;
+    while (i < want.size() && i < have.size() && want[i] == have[i]) ++i;
+    const std::string first = i < want.size() ? "'" + want[i] + "'" : "no point";
+    const std::string ours = i < have.size() ? "'" + have[i] + "'" : "no point";
+    throw InputError(path, "points", "written by a build with another point list (point " + std::to_string(i + 1) + " is " + first +
+                                         ", this build has " + ours + "); write the plan again with this build");
+  }
   return p;
 }
 
@@ -341,14 +377,23 @@ TradeTables collect_trade_results(const std::string& dir, const TradePlan& plan)
     }
     try {
       json r = parse_strict_json(read_input_file(path, kMaxResultBytes, "tradeoff result"), path);
-      if (!r.is_object() || r.value("id", std::string()) != p.id || !r.contains("figures") || !r["figures"].is_object())
-        throw InputError(path, "", "not the result of point " + p.id);
-      if (r.value("quick", !plan.scale.quick) != plan.scale.quick) throw InputError(path, "quick", "measured at another scale than the plan");
-      t.machine = r.value("machine", t.machine);
-      t.points_wall_s += r.value("point_wall_s", 0.0);
+      auto has = [&](const char* key, json::value_t type) { return r.contains(key) && r[key].type() == type; };
+      if (!r.is_object() || !has("id", json::value_t::string) || r["id"] != p.id || !has("figures", json::value_t::object) ||
+          !has("quick", json::value_t::boolean) || !has("machine", json::value_t::string) || !r.contains("peak_rss_bytes") ||
+          !r["peak_rss_bytes"].is_number() || !r.contains("point_wall_s") || !r["point_wall_s"].is_number())
+        throw InputError(path, "", "not the result of point " + p.id + " (id, quick, machine, peak_rss_bytes, point_wall_s, figures)");
+      if (r["quick"].get<bool>() != plan.scale.quick) throw InputError(path, "quick", "measured at another scale than the plan");
+      if (!plan.run_id.empty() && r.value("run", std::string()) != plan.run_id)
+        throw InputError(path, "run", "left by another sweep (" + r.value("run", std::string("no run id")) + "), not this one (" +
+                                          plan.run_id + ")");
+      const std::string machine = r["machine"].get<std::string>();
+      if (t.machine.find(machine) == std::string::npos) t.machine += (t.machine.empty() ? "" : "; ") + machine;
+      t.points_wall_s += r["point_wall_s"].get<double>();
       t.results[p.id] = std::move(r);
     } catch (const InputError& e) {
       t.missing[p.id] = e.what();
+    } catch (const json::exception& e) {
+      t.missing[p.id] = path + ": " + e.what();
     }
   }
   return t;
@@ -374,7 +419,7 @@ std::string trade_markdown(const TradeTables& t, const std::string& date) {
       const bool have = t.results.count(p.id) != 0;
       md << "|";
       for (size_t i = 0; i < cols.size(); ++i)
-        md << " " << md_escape(i == 0 || have ? cols[i].md(t, p, figures_of(t, p.id)) : std::string("missing")) << " |";
+        md << " " << md_escape(i == 0 || have ? cell(cols[i].md, t, p) : std::string("missing")) << " |";
       md << "\n";
     }
   }
@@ -396,7 +441,7 @@ std::string trade_csv(const TradeTables& t, TradeKind k) {
     out += p.id;
     const bool have = t.results.count(p.id) != 0;
     for (size_t i = 0; i < cols.size(); ++i) {
-      std::string v = have || i == 0 ? cols[i].raw(t, p, figures_of(t, p.id)) : std::string();
+      std::string v = have || i == 0 ? cell(cols[i].raw, t, p) : std::string();
       if (v == "—") v.clear();
       for (char& ch : v)
         if (ch == ',') ch = ';';  // text cells: no separator inside (gnuplot and spreadsheets read the file as is)
@@ -413,13 +458,13 @@ constexpr const char* kEnd = "<!-- tradeoff:end -->";
 }  // namespace
 
 std::string trade_doc_block(const std::string& doc) {
-  const auto b = doc.find(kBegin), e = doc.find(kEnd);
+  const auto b = doc.find(kBegin), e = b == std::string::npos ? b : doc.find(kEnd, b);
   if (b == std::string::npos || e == std::string::npos || e < b) return "";
   return doc.substr(b + std::strlen(kBegin), e - b - std::strlen(kBegin));
 }
 
 std::string update_trade_doc(const std::string& doc, const std::string& markdown, const std::string& doc_name) {
-  const auto b = doc.find(kBegin), e = doc.find(kEnd);
+  const auto b = doc.find(kBegin), e = b == std::string::npos ? b : doc.find(kEnd, b);
   if (b == std::string::npos || e == std::string::npos || e < b)
     throw InputError(doc_name, "", std::string("no generated block: the doc needs the lines ") + "<!-- tradeoff:begin --> and " + kEnd);
   return doc.substr(0, b + std::strlen(kBegin)) + markdown + doc.substr(e);

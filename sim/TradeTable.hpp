@@ -19,8 +19,15 @@ namespace arp::sim {
 struct TradePlan {
   TradeScale scale;
   std::vector<TradePoint> points;
+  // Names this sweep: every result carries it, and the merge takes no result
+  // from another sweep (a point that failed this time keeps no old figures).
+  std::string run_id;
 };
 TradePlan make_trade_plan(const TradeScale& s);
+// A fresh run id: UTC time and process id ("20261124T183200Z-12345").
+std::string new_trade_run_id();
+// Removes the plan's result and log files under `dir` (an earlier sweep's).
+void clear_trade_results(const std::string& dir, const TradePlan& p);
 void write_trade_plan(const std::string& dir, const TradePlan& p);
 // InputError naming the file when it is missing or not a plan this build understands.
 TradePlan read_trade_plan(const std::string& dir);
@@ -33,7 +40,7 @@ struct TradeTables {
   TradePlan plan;
   std::map<std::string, nlohmann::json> results;  // by point id
   std::map<std::string, std::string> missing;     // id -> why
-  std::string machine;
+  std::string machine;  // the machines the results were measured on, "; "-separated
   double points_wall_s = 0;  // the points' own time, summed
   double sweep_wall_s = 0;   // the whole sweep's time when this process ran it (0: merged only)
   int sweep_jobs = 0;        // ... on this many cores

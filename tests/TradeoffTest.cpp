@@ -11,7 +11,6 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -41,10 +40,12 @@ std::map<std::pair<std::string, std::string>, int64_t> csv_cells() {
   std::ifstream in(std::string(ARPSIM_SOURCE_DIR) + "/docs/hdl-cost.csv");
   std::string line;
   std::getline(in, line);
-  const std::regex row(R"(^([^,]+),([^,]+),"[^"]*",(\d+),)");
-  std::smatch m;
-  while (std::getline(in, line))
-    if (std::regex_search(line, m, row)) out[{m[1], m[2]}] = std::stoll(m[3]);
+  while (std::getline(in, line)) {  // configuration,module,"parameters",cells,...
+    const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    const auto q2 = line.find('"', line.find('"', c2) + 1);
+    if (c1 == std::string::npos || c2 == std::string::npos || q2 == std::string::npos) continue;
+    out[{line.substr(0, c1), line.substr(c1 + 1, c2 - c1 - 1)}] = std::stoll(line.substr(q2 + 2));
+  }
   return out;
 }
 
@@ -100,7 +101,7 @@ TEST(Tradeoff, PointsAreUniqueFileNamesAndTheQuickSweepIsPartOfTheFullOne) {
   std::map<TradeKind, int> per_kind;
   for (const auto& p : full) {
     EXPECT_TRUE(ids.insert(p.id).second) << p.id;
-    EXPECT_TRUE(std::regex_match(p.id, std::regex("[a-z0-9.-]+"))) << p.id;
+    EXPECT_EQ(p.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789.-"), std::string::npos) << p.id;
     EXPECT_EQ(p.exclusive(), p.kind == TradeKind::Level || p.kind == TradeKind::Width) << p.id;
     ++per_kind[p.kind];
     EXPECT_NO_THROW(sim::trade_config(p)) << p.id;
@@ -123,7 +124,8 @@ TEST(Tradeoff, TheLocalRunnerKeepsSpeedPointsAloneAndCollectsEveryExitStatus) {
                              {"/bin/sh", "-c",
                               "date +%s%N > " + f + ".start; sleep 0.3; date +%s%N > " + f + ".end; exit " + std::to_string(status)},
                              dir.file(id + ".log"),
-                             exclusive};
+                             exclusive,
+                             ""};
   };
   std::vector<sim::SweepCommand> cmds{cmd("s1", false, 0), cmd("x1", true, 0), cmd("s2", false, 3), cmd("x2", true, 0),
                                       cmd("s3", false, 0)};
@@ -148,8 +150,8 @@ TEST(Tradeoff, TheLocalRunnerKeepsSpeedPointsAloneAndCollectsEveryExitStatus) {
 
 TEST(Tradeoff, APointThatCannotStartFailsAloneWithTheReasonInItsLog) {
   test::TempDir dir;
-  const std::vector<sim::SweepCommand> cmds{{"gone", {dir.file("no-such-arpsim")}, dir.file("gone.log"), true},
-                                            {"fine", {"/bin/sh", "-c", "exit 0"}, dir.file("fine.log"), false}};
+  const std::vector<sim::SweepCommand> cmds{{"gone", {dir.file("no-such-arpsim")}, dir.file("gone.log"), true, ""},
+                                            {"fine", {"/bin/sh", "-c", "exit 0"}, dir.file("fine.log"), false, ""}};
   const auto o = sim::run_sweep_locally(cmds, 2, {}, {});
   EXPECT_EQ(o.exit_status.at("gone"), 127);
   EXPECT_EQ(o.exit_status.at("fine"), 0);
@@ -160,14 +162,17 @@ TEST(Tradeoff, AStoppedSweepEndsItsRunningPointsAndStartsNoMore) {
   test::TempDir dir;
   std::vector<sim::SweepCommand> cmds;
   for (int i = 0; i < 4; ++i)
-    cmds.push_back({"p" + std::to_string(i), {"/bin/sh", "-c", "sleep 30"}, dir.file("p" + std::to_string(i) + ".log"), false});
+    cmds.push_back({"p" + std::to_string(i), {"/bin/sh", "-c", "sleep 30"}, dir.file("p" + std::to_string(i) + ".log"), false, ""});
+  // The second one ignores SIGTERM: it is killed once the grace period is over.
+  cmds[1].argv = {"/bin/sh", "-c", "trap '' TERM; sleep 30"};
   const auto t0 = std::chrono::steady_clock::now();
   int polls = 0;
-  const auto o = sim::run_sweep_locally(cmds, 2, {}, [&] { return ++polls > 3 ? SIGTERM : 0; });
+  const auto o = sim::run_sweep_locally(cmds, 2, {}, [&] { return ++polls > 3 ? SIGTERM : 0; }, 0.5);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 20.0);
   EXPECT_EQ(o.stop_signal, SIGTERM);
   ASSERT_EQ(o.exit_status.size(), 2u) << "the two running points end, the other two never start";
-  for (const auto& [id, st] : o.exit_status) EXPECT_EQ(st, -SIGTERM) << id;
+  EXPECT_EQ(o.exit_status.at("p0"), -SIGTERM);
+  EXPECT_EQ(o.exit_status.at("p1"), -SIGKILL);
 }
 
 TEST(Tradeoff, SlurmScriptsHaveTheSweepsShape) {
@@ -195,6 +200,14 @@ TEST(Tradeoff, SlurmScriptsHaveTheSweepsShape) {
   // An array task picks its point by SLURM_ARRAY_TASK_ID.
   const auto r = test::run_command("SLURM_ARRAY_TASK_ID=1 bash " + dir.file("slurm/points-shared.sbatch"));
   EXPECT_EQ(r.output, "point b\n");
+  // Folders a script cannot name as they are, and another scheduler, are refused before anything is written.
+  EXPECT_NE(std::string(test::error_of([&] { sim::check_slurm_sweep_paths("slurm", dir.file("a b"), dir.path()); }).what())
+                .find("whitespace"),
+            std::string::npos);
+  EXPECT_NE(std::string(test::error_of([&] { sim::check_slurm_sweep_paths("slurm", dir.path(), "/x/$HOME"); }).what()).find("--out"),
+            std::string::npos);
+  EXPECT_NE(std::string(test::error_of([&] { sim::check_slurm_sweep_paths("pbs", dir.path(), dir.path()); }).what()).find("slurm"),
+            std::string::npos);
 }
 
 TEST(Tradeoff, MergeKeepsMissingAndBrokenPointsAsRowsWithTheReason) {
@@ -217,6 +230,9 @@ TEST(Tradeoff, MergeKeepsMissingAndBrokenPointsAsRowsWithTheReason) {
   auto level = [&](const std::string& id, const std::string& second) {
     nlohmann::json r{{"id", id},
                      {"quick", true},
+                     {"machine", "m"},
+                     {"peak_rss_bytes", 1},
+                     {"point_wall_s", 1},
                      {"figures",
                       {{"pixel_clocks_per_s", 1e6},
                        {"pixel_hashes", {"a", second}},
@@ -226,12 +242,34 @@ TEST(Tradeoff, MergeKeepsMissingAndBrokenPointsAsRowsWithTheReason) {
   level("level-functional", "b");
   level("level-lt", "c");
   std::ofstream(sim::trade_result_path(dir.path(), "width-default"))
-      << R"({"id": "width-default", "quick": true, "figures": {"texel_max": 0.5, "texel_mean": 0.25}})";
+      << R"({"id": "width-default", "quick": true, "machine": "m", "peak_rss_bytes": 1, "point_wall_s": 1,
+            "figures": {"texel_max": 0.5, "texel_mean": 0.25}})";
   const sim::TradeTables two = sim::collect_trade_results(dir.path(), plan);
   const std::string md2 = sim::trade_markdown(two, "2026-01-01");
   EXPECT_NE(md2.find("against functional: pixels differ in 1, photon times in 0 of 2 frames"), std::string::npos) << md2;
   EXPECT_NE(md2.find("| frames differ from functional |"), std::string::npos);
   EXPECT_NE(md2.find("| 0.5 / 0.25 |"), std::string::npos) << "the functional level's error is the default widths'";
+  // A result of the wrong shape (a figure of the wrong type) or from another sweep is missing, not a crash.
+  std::ofstream(sim::trade_result_path(dir.path(), "level-lt"))
+      << R"({"id": "level-lt", "quick": true, "machine": "m", "peak_rss_bytes": "lots", "point_wall_s": 1, "figures": {}})";
+  std::ofstream(sim::trade_result_path(dir.path(), "width-q10"))
+      << R"({"id": "width-q10", "quick": true, "machine": "m", "peak_rss_bytes": 1, "point_wall_s": 1, "run": "old",
+            "figures": {"texel_max": "big", "cost": 5}})";
+  std::ofstream(sim::trade_result_path(dir.path(), "width-q12"))
+      << R"({"id": "width-q12", "quick": true, "machine": "m", "peak_rss_bytes": 1, "point_wall_s": 1, "run": "now",
+            "figures": {"texel_max": "big", "cost": 5}})";
+  sim::TradePlan now = plan;
+  now.run_id = "now";
+  const sim::TradeTables odd = sim::collect_trade_results(dir.path(), now);
+  EXPECT_NE(odd.missing.at("level-lt").find("peak_rss_bytes"), std::string::npos) << odd.missing.at("level-lt");
+  EXPECT_NE(odd.missing.at("width-q10").find("another sweep (old)"), std::string::npos) << odd.missing.at("width-q10");
+  ASSERT_TRUE(odd.results.count("width-q12"));
+  const std::string odd_md = sim::trade_markdown(odd, "today");
+  const auto q12_row = odd_md.find("| q12 |");
+  ASSERT_NE(q12_row, std::string::npos);
+  const std::string row = odd_md.substr(q12_row, odd_md.find('\n', q12_row) - q12_row);
+  EXPECT_NE(row.find("| bad value in the result |"), std::string::npos) << row;
+  EXPECT_NE(row.find("| — |"), std::string::npos) << row << ": a figure that is no number shows as none";
   // A plan from another build's point list is refused, naming the file.
   std::ofstream(dir.file("plan.json")) << R"({"quick": true, "points": ["level-golden"]})";
   const InputError e = test::error_of([&] { sim::read_trade_plan(dir.path()); });
@@ -271,6 +309,8 @@ TEST(Tradeoff, TheCommittedPageHasTheTablesCurrentStructure) {
   const std::string doc = slurp(std::string(ARPSIM_SOURCE_DIR) + "/docs/tradeoff.md");
   const std::string block = sim::trade_doc_block(doc);
   ASSERT_FALSE(block.empty()) << "docs/tradeoff.md has no generated block";
+  // The block is found after its begin marker, even with an end marker quoted earlier.
+  EXPECT_EQ(sim::trade_doc_block("<!-- tradeoff:end -->\n<!-- tradeoff:begin -->\nX\n<!-- tradeoff:end -->\n"), "X\n");
   const bool quick = block.find("scale: quick") != std::string::npos;
   sim::TradeTables empty;
   empty.plan = sim::make_trade_plan(sim::TradeScale{quick});

@@ -40,7 +40,6 @@ std::string today() {
 }
 
 std::string self_path() { return fs::read_symlink("/proc/self/exe").string(); }
-
 int merge(const TradeoffArgs& a, const sim::TradePlan& plan, int failed, double sweep_s = 0, int jobs = 0) {
   sim::TradeTables t = sim::collect_trade_results(a.out, plan);
   t.sweep_wall_s = sweep_s;
@@ -67,27 +66,37 @@ int run_tradeoff(TradeoffArgs& a) {
     return 0;
   }
   if (a.out.empty()) throw InputError("--out", "", "required: the folder the points and tables go to");
+  const int modes = !a.point.empty() + a.merge + !a.emit.empty() + a.plan_only;
+  if (modes > 1) throw InputError("--point", "", "--point, --merge, --emit and --plan-only each do one thing: give one");
+  if (!a.doc.empty() && (!a.point.empty() || !a.emit.empty() || a.plan_only))
+    throw InputError("--doc", a.doc, "only a sweep or --merge writes the tables");
+  if (!a.doc.empty()) sim::update_trade_doc(read_input_file(a.doc, 1 << 22, "doc"), "", a.doc);  // its markers, before hours of work
+  if (!a.emit.empty()) sim::check_slurm_sweep_paths(a.emit[0], a.emit[1], fs::absolute(a.out).string());
   if (!a.point.empty()) {  // one point: what every local process and every array task runs
     const sim::TradePlan plan = sim::read_trade_plan(a.out);
     const sim::TradePoint& p = sim::find_trade_point(plan.points, a.point);
     auto progress = std::make_shared<ProgressLine>(p.id, !a.quiet);
     const auto r = sim::measure_trade_point(p, plan.scale, (fs::path(a.out) / "points" / (p.id + ".scratch")).string(),
                                             [progress](double f, const std::string& w) { progress->update(f, w); });
-    write_text_atomic(sim::trade_result_path(a.out, p.id), r.dump(1) + "\n");
+    auto result = r;
+    result["run"] = plan.run_id;
+    write_text_atomic(sim::trade_result_path(a.out, p.id), result.dump(1) + "\n");
     return 0;
   }
   if (a.merge) return merge(a, sim::read_trade_plan(a.out), 0);
   make_output_folder("--out", (fs::path(a.out) / "points").string());
-  const sim::TradePlan plan = sim::make_trade_plan(sim::TradeScale{a.quick});
+  sim::TradePlan plan = sim::make_trade_plan(sim::TradeScale{a.quick});
+  plan.run_id = sim::new_trade_run_id();
+  sim::clear_trade_results(a.out, plan);  // no figure of an earlier sweep survives into this one
   sim::write_trade_plan(a.out, plan);
   const std::string out_abs = fs::absolute(a.out).string();
   if (!a.emit.empty()) {
-    if (a.emit[0] != "slurm") throw InputError("--emit", a.emit[0], "the one scheduler known is slurm");
     sim::SlurmSweep s;
     s.name = "arpsim-tradeoff";
     for (const auto& p : plan.points) (p.exclusive() ? s.exclusive_ids : s.shared_ids).push_back(p.id);
-    s.point_command = "\"${ARPSIM:-" + self_path() + "}\" tradeoff -q --out \"" + out_abs + "\" --point \"$ID\"";
-    s.merge_command = "\"${ARPSIM:-" + self_path() + "}\" tradeoff --out \"" + out_abs + "\" --merge";
+    const std::string bin = "\"${ARPSIM:-" + self_path() + "}\"";  // checked: no quote, $ or whitespace in these paths
+    s.point_command = bin + " tradeoff -q --out " + out_abs + " --point \"$ID\" > " + out_abs + "/points/\"$ID\".log 2>&1";
+    s.merge_command = bin + " tradeoff --out " + out_abs + " --merge";
     s.log_dir = (fs::path(out_abs) / "points").string();
     for (const auto& f : sim::write_slurm_sweep(a.emit[1], s)) std::printf("written %s\n", f.c_str());
     std::printf("submit with: %s/submit.sh   (plan: %s/plan.json, %zu points)\n", a.emit[1].c_str(), a.out.c_str(), plan.points.size());
@@ -100,7 +109,7 @@ int run_tradeoff(TradeoffArgs& a) {
   std::vector<sim::SweepCommand> cmds;
   for (const auto& p : plan.points)
     cmds.push_back({p.id, {self_path(), "tradeoff", "-q", "--out", out_abs, "--point", p.id}, sim::trade_log_path(a.out, p.id),
-                    p.exclusive()});
+                    p.exclusive(), "/proc/self/exe"});  // this very binary, even if a build replaces the file meanwhile
   const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: the running points are stopped, the finished ones merged
   ProgressLine progress("tradeoff", !a.quiet);
   const auto t0 = std::chrono::steady_clock::now();

@@ -22,7 +22,7 @@ WalkPath::WalkPath(std::vector<glm::dvec3> points, double speed, const std::stri
       throw InputError(source, "points[" + std::to_string(i) + "]", "not finite");
     if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kWorldLimitM)
       throw InputError(source, "points[" + std::to_string(i) + "]",
-                       "farther than " + std::to_string(static_cast<int64_t>(kWorldLimitM)) + " m from the origin");
+                       "a coordinate beyond ±" + std::to_string(static_cast<int64_t>(kWorldLimitM)) + " m");
   }
   cumulative_.push_back(0);
   for (size_t i = 1; i < points_.size(); ++i) {

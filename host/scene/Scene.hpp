@@ -44,7 +44,7 @@ struct SceneObject {
   glm::dvec3 position_at(double t_s) const;
 };
 
-// How far from the origin objects, eyes and walks may be, metres. The
+// How far from the origin objects, eyes and walks may be, metres, per coordinate. The
 // renderer works relative to the eye in double precision, so a view this far
 // out renders as the same view at the origin (tests/ExtremesTest measures
 // it); farther positions are refused where they are read.
