@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "TestSupport.hpp"
 #include "host/motion/WalkPath.hpp"
@@ -201,6 +202,41 @@ TEST(Extremes, EveryWidthAtItsSmallestAndLargestPermittedValue) {
     }
   }
   EXPECT_GE(runs, 14) << "most extremes are buildable (" << refused << " refused by validation)";
+}
+
+// Priority rendering at the ends of theta_t, and a walk at 100 m/s, on the
+// gallery walk. Expectations from the validity rule, not from the scheduler's
+// code: at theta_t = 0.01 deg no object stays valid for a frame, so the host
+// renders everything every frame (no load reduction); at 45 deg it renders
+// less than at 8 deg; a walk 100 times faster shows more displacement.
+TEST(Extremes, ThresholdAnglesAtBothEndsAndAWalkAt100MetresPerSecond) {
+  test::TempDir dir;
+  int runs = 0;
+  auto walk = [&](double speed, double theta_deg) {
+    sim::RunSpec spec;
+    spec.config.memory.face_size = 128;  // small faces: the host's choices, not its resolution, are under test
+    spec.memories.scene = "gallery";
+    spec.host.walk = "gallery";
+    spec.host.walk_speed = speed;
+    spec.host.threshold_deg = theta_deg;
+    spec.frames = 4;
+    spec.out.every = 0;
+    spec.out.error_every = 3;
+    spec.out.out_dir = dir.file("w");
+    spec.out.report = dir.file("w" + std::to_string(++runs) + ".json");
+    sim::Session(spec).run();
+    std::ifstream in(spec.out.report);
+    return nlohmann::json::parse(in)["host"];
+  };
+  const auto tiny = walk(1, 0.01), eight = walk(1, 8), wide = walk(1, 45), fast = walk(100, 0);
+  EXPECT_LE(tiny["load_reduction"].get<double>(), 1.05) << tiny.dump();
+  EXPECT_GE(tiny["load_reduction"].get<double>(), 0.95) << tiny.dump();
+  EXPECT_GE(wide["load_reduction"].get<double>(), eight["load_reduction"].get<double>());
+  EXPECT_GT(eight["load_reduction"].get<double>(), 1.5) << eight.dump();
+  EXPECT_GE(tiny["error"]["mean_psnr_db"].get<double>(), wide["error"]["mean_psnr_db"].get<double>());
+  const auto slow = walk(1, 0);
+  EXPECT_GT(fast["error"]["max_displacement_px"].get<double>(), slow["error"]["max_displacement_px"].get<double>()) << fast.dump();
+  for (const auto* h : {&tiny, &eight, &wide, &fast}) EXPECT_TRUE(std::isfinite((*h)["error"]["worst_psnr_db"].get<double>()));
 }
 
 }  // namespace
