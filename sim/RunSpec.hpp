@@ -4,6 +4,7 @@
 // about a value name the option that set it.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace arp::sim {
 // The host's priority rendering over a walk (--walk).
 struct HostSpec {
   std::string walk;             // "gallery" or a walk file; empty: no host simulation
-  double walk_speed = 0;        // --speed, m/s (0: 1, or the walk file's)
+  std::optional<double> walk_speed;  // --speed, m/s (unset: 1, or the walk file's; 0: standing at the first point)
   bool baseline = false;        // --baseline: everything in memory 0, every frame
   double threshold_deg = 0;     // --threshold-deg, theta_t (0: one display-memory texel)
   host::RenderEngine engine;    // --engine-triangles, --engine-fill, --engine-setup

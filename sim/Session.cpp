@@ -125,11 +125,13 @@ void Session::build_motion() {
   const HostSpec& h = spec_.host;
   if (!h.walk.empty()) {
     if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
+    if (h.walk_speed && !(*h.walk_speed >= 0 && *h.walk_speed <= 1000))
+      throw InputError("--speed", "", "must be 0 .. 1000 m/s (0: standing at the walk's first point)");
     if (h.walk == "gallery") {
-      walk_ = std::make_unique<host::WalkPath>(host::gallery_walk(), h.walk_speed > 0 ? h.walk_speed : 1.0, "gallery walk");
+      walk_ = std::make_unique<host::WalkPath>(host::gallery_walk(), h.walk_speed.value_or(1.0), "gallery walk");
     } else {
       walk_ = std::make_unique<host::WalkPath>(host::load_walk_file(h.walk));
-      if (h.walk_speed > 0) *walk_ = host::WalkPath(walk_->points(), h.walk_speed, h.walk);
+      if (h.walk_speed) *walk_ = host::WalkPath(walk_->points(), *h.walk_speed, h.walk);
     }
   }
   if (!spec_.trace.empty()) {

@@ -88,7 +88,11 @@ TEST(WalkPath, WalksAtItsSpeedLoopsAndRefusesDegeneratePaths) {
   EXPECT_NEAR(glm::length(w.position(3600.0 * 1 + 0.5) - w.position(0.5 + 3600.0 - 7.0 * 514)), 0, 1e-6);  // an hour in
   EXPECT_THROW(WalkPath({{0, 0, 0}}, 1.0, "one point"), InputError);
   EXPECT_THROW(WalkPath({{1, 1, 1}, {1, 1, 1}}, 1.0, "zero length"), InputError);
-  EXPECT_THROW(WalkPath({{0, 0, 0}, {1, 0, 0}}, 0.0, "zero speed"), InputError);
+  EXPECT_THROW(WalkPath({{0, 0, 0}, {1, 0, 0}}, -0.5, "negative speed"), InputError);
+  EXPECT_THROW(WalkPath({{0, 0, 0}, {1, 0, 0}}, 1000.5, "past 1000 m/s"), InputError);
+  const WalkPath standing({{0, 1, 2}, {1, 0, 0}}, 0.0, "0 m/s: standing at the first point");
+  EXPECT_EQ(standing.position(3600.0), glm::dvec3(0, 1, 2));
+  EXPECT_EQ(standing.velocity(3600.0), glm::dvec3(0));
   EXPECT_THROW(WalkPath({{0, 0, 0}, {NAN, 0, 0}}, 1.0, "nan"), InputError);
   // Stereo eyes: IPD apart along the head's x axis, which yaw turns.
   const glm::dquat yaw90 = glm::angleAxis(kPi / 2, glm::dvec3(0, 1, 0));

@@ -59,7 +59,7 @@ void add_host_options(CLI::App* cmd, RunArgs& a) {
   sim::HostSpec& h = a.spec.host;
   cmd->add_option("--walk", h.walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
                   "the host renders by priority between frames");
-  cmd->add_option("--speed", h.walk_speed, "Walking speed, m/s (default 1, or the walk file's)");
+  cmd->add_option("--speed", h.walk_speed, "Walking speed, m/s, 0 .. 1000 (default 1, or the walk file's; 0: standing at the walk's first point)");
   cmd->add_option("--regions", h.region_size,
                   "With --walk: region priority rendering with square columns of this size, metres (0: object-level)")
       ->capture_default_str();

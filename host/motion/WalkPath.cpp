@@ -15,7 +15,8 @@ namespace arp::host {
 
 WalkPath::WalkPath(std::vector<glm::dvec3> points, double speed, const std::string& source) : points_(std::move(points)), speed_(speed) {
   if (points_.size() < 2) throw InputError(source, "points", "a walk needs at least two points");
-  if (!(speed_ > 0) || !std::isfinite(speed_) || speed_ > 1000) throw InputError(source, "speed", "must be > 0 and at most 1000 m/s");
+  // 0 m/s is a viewer standing at the path's first point: the baseline with no translation.
+  if (!(speed_ >= 0) || speed_ > 1000) throw InputError(source, "speed", "must be 0 .. 1000 m/s");
   for (size_t i = 0; i < points_.size(); ++i) {
     const auto& p = points_[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

@@ -14,7 +14,8 @@ namespace arp::host {
 class WalkPath {
  public:
   WalkPath() = default;
-  // InputError naming `source` for fewer than two points, a zero-length path, or a speed <= 0.
+  // InputError naming `source` for fewer than two points, a zero-length path, or a speed outside
+  // 0 .. 1000 m/s (0: standing at the first point).
   WalkPath(std::vector<glm::dvec3> points, double speed_m_s, const std::string& source);
   static WalkPath standing(const glm::dvec3& at);  // no motion at all
 
