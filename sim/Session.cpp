@@ -151,11 +151,12 @@ void Session::build_motion() {
       return true;
     };
   } else if (spec_.motion.given()) {
-    // Synthetic motion keeps its sample times in double seconds; past 9e6 s (104 days) it refuses to start.
-    if (seconds_of(start_ps_) - 1.0 > 9e6)
+    // Synthetic motion keeps its sample times in double seconds; past the pose time limit it refuses to start.
+    if (seconds_of(start_ps_) - 1.0 > tracker::kPoseTimeLimitS)
       throw InputError("--first-frame", std::to_string(spec_.first_frame),
                        "starts " + std::to_string(static_cast<int64_t>(seconds_of(start_ps_))) +
-                           " s in; synthetic motion (--motion) covers the first 9e6 s (104 days): use a trace or a still head");
+                           " s in; synthetic motion (--motion) covers the first " + tracker::pose_time_limit_text() +
+                           ": use a trace or a still head");
     // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
     auto g = std::make_shared<tracker::MotionGenerator>(
         spec_.motion.generator(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01));

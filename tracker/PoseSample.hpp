@@ -4,6 +4,7 @@
 // radians per second. The tracker library never includes SystemC or the pipeline.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -17,5 +18,15 @@ struct PoseSample {
   bool has_angular_velocity = false;
   glm::dvec3 angular_velocity{0.0};           // rad/s, head frame
 };
+
+// Pose times given in double seconds (trace files, synthetic motion) stay
+// within +-kPoseTimeLimitS: the int64 picosecond timeline spans +-106 days,
+// and a double still resolves a microsecond there.
+constexpr double kPoseTimeLimitS = 9e6;
+// The limit as the messages state it: "9e6 s (104 days)".
+inline std::string pose_time_limit_text() {
+  return std::to_string(static_cast<int>(kPoseTimeLimitS / 1e6)) + "e6 s (" + std::to_string(static_cast<int>(kPoseTimeLimitS / 86400)) +
+         " days)";
+}
 
 }  // namespace arp::tracker

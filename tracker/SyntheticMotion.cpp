@@ -120,7 +120,8 @@ MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   if (!(hz > 0.0) || !std::isfinite(hz)) throw InputError("--hz", "", "must be a positive number");
   if (seconds * hz > 1e8) throw InputError("--seconds", "", "more than 1e8 samples; lower --seconds or --hz");
   if (!(noise >= 0.0) || !std::isfinite(noise)) throw InputError("--noise", "", "must be >= 0 degrees");
-  if (!std::isfinite(start_s) || std::abs(start_s) > 9e6) throw InputError("--start", "", "must be within +-9e6 s");
+  if (!std::isfinite(start_s) || std::abs(start_s) > kPoseTimeLimitS)
+    throw InputError("--start", "", "must be within +-" + pose_time_limit_text());
   SamplingSpec s;
   s.rate_hz = hz;
   s.duration_s = seconds;

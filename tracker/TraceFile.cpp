@@ -71,8 +71,8 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
       if (!std::isfinite(v[i]) || (errno == ERANGE && std::abs(v[i]) > 1.0))
         throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a finite number");
     }
-    if (std::abs(v[0]) > 9.0e6)  // the int64 picosecond timeline spans +-106 days
-      throw InputError(path, where, "time_s " + quoted(fields[0]) + " is outside +-9e6 s");
+    if (std::abs(v[0]) > kPoseTimeLimitS)
+      throw InputError(path, where, "time_s " + quoted(fields[0]) + " is outside +-" + pose_time_limit_text());
     const double n = std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
     if (!(std::abs(n - 1.0) <= 1e-3))
       throw InputError(path, where, "quaternion has length " + std::to_string(n) + "; a rotation needs a unit quaternion");
