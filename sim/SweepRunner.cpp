@@ -146,11 +146,17 @@ std::vector<std::string> write_slurm_sweep(const std::string& dir, const SlurmSw
     for (const auto& id : v) t += id + "\n";
     return t;
   };
+  auto limit = [](int minutes) {  // Slurm's days-hours:minutes:seconds
+    char b[48];
+    std::snprintf(b, sizeof b, "#SBATCH --time=%d-%02d:%02d:00\n", minutes / 1440, minutes / 60 % 24, minutes % 60);
+    return std::string(b);
+  };
   auto array_script = [&](const std::string& kind, size_t n, bool exclusive) {
     std::string t = "#!/bin/bash\n# " + s.name + ": the " + kind + " points, one array task each (written by arpsim).\n";
     t += "#SBATCH --job-name=" + s.name + "-" + kind + "\n";
     t += "#SBATCH --array=0-" + std::to_string(n - 1) + "\n";
     t += "#SBATCH --cpus-per-task=" + std::to_string(s.cpus_per_task) + "\n";
+    t += limit(s.task_minutes);
     if (exclusive) t += "#SBATCH --exclusive\n";
     t += "#SBATCH --output=" + s.log_dir + "/" + s.name + "-" + kind + "-%A_%a.log\n";
     t += "set -euo pipefail\n";
@@ -173,7 +179,7 @@ std::vector<std::string> write_slurm_sweep(const std::string& dir, const SlurmSw
   }
   write("merge.sbatch",
         "#!/bin/bash\n# " + s.name + ": merges the points' results into the tables (written by arpsim).\n#SBATCH --job-name=" + s.name +
-            "-merge\n#SBATCH --cpus-per-task=1\n#SBATCH --output=" + s.log_dir + "/" + s.name + "-merge-%j.log\nset -euo pipefail\nexec " +
+            "-merge\n#SBATCH --cpus-per-task=1\n" + limit(s.merge_minutes) + "#SBATCH --output=" + s.log_dir + "/" + s.name + "-merge-%j.log\nset -euo pipefail\nexec " +
             s.merge_command + "\n",
         true);
   submit += "sbatch --dependency=afterany${deps} merge.sbatch\n";

@@ -40,6 +40,9 @@ struct SlurmSweep {
   std::string merge_command;             // the command the merge job runs
   std::string log_dir;                   // where Slurm writes the tasks' output
   int cpus_per_task = 2;
+  // Wall-clock limits (#SBATCH --time): a cluster's default limit may be shorter than a point.
+  int task_minutes = 60;   // each array task: one point
+  int merge_minutes = 10;  // the merge
 };
 
 // InputError unless `scheduler` is "slurm" and both folders can be named in a

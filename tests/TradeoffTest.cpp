@@ -184,11 +184,14 @@ TEST(Tradeoff, SlurmScriptsHaveTheSweepsShape) {
   s.point_command = "echo point $ID";
   s.merge_command = "echo merge";
   s.log_dir = dir.path();
+  s.task_minutes = 1500;  // 1 day, 1 hour
   const auto files = sim::write_slurm_sweep(dir.file("slurm"), s);
   EXPECT_EQ(files.size(), 6u);
   const std::string shared = slurp(dir.file("slurm/points-shared.sbatch"));
   EXPECT_NE(shared.find("#SBATCH --array=0-2\n"), std::string::npos) << shared;
   EXPECT_EQ(shared.find("--exclusive"), std::string::npos);
+  EXPECT_NE(shared.find("#SBATCH --time=1-01:00:00\n"), std::string::npos) << shared;
+  EXPECT_NE(slurp(dir.file("slurm/merge.sbatch")).find("#SBATCH --time=0-00:10:00\n"), std::string::npos);
   const std::string excl = slurp(dir.file("slurm/points-exclusive.sbatch"));
   EXPECT_NE(excl.find("#SBATCH --array=0-0\n"), std::string::npos) << excl;
   EXPECT_NE(excl.find("#SBATCH --exclusive\n"), std::string::npos);
@@ -303,6 +306,9 @@ TEST(Tradeoff, LevelPointsRunAsProcessesAndTheMergeComparesTheirFrames) {
   const auto no_plan = test::run_command(std::string(ARPSIM_BINARY) + " tradeoff --merge --out " + dir.file("nowhere"));
   EXPECT_EQ(no_plan.status, 2);
   EXPECT_NE(no_plan.output.find("plan.json"), std::string::npos) << no_plan.output;
+  const auto time_alone = test::run_command(a + " --plan-only --slurm-time 5");
+  EXPECT_EQ(time_alone.status, 2);
+  EXPECT_NE(time_alone.output.find("--slurm-time: only with --emit"), std::string::npos) << time_alone.output;
 }
 
 TEST(Tradeoff, TheCommittedPageHasTheTablesCurrentStructure) {

@@ -30,6 +30,7 @@ struct TradeoffArgs {
   std::vector<std::string> emit;
   bool quick = false, merge = false, plan_only = false, list = false, quiet = false;
   int jobs = 0;
+  int slurm_minutes = 0;  // 0: SlurmSweep's default
 };
 
 std::string today() {
@@ -71,6 +72,7 @@ int run_tradeoff(TradeoffArgs& a) {
   if (!a.doc.empty() && (!a.point.empty() || !a.emit.empty() || a.plan_only))
     throw InputError("--doc", a.doc, "only a sweep or --merge writes the tables");
   if (!a.doc.empty()) sim::update_trade_doc(read_input_file(a.doc, 1 << 22, "doc"), "", a.doc);  // its markers, before hours of work
+  if (a.slurm_minutes > 0 && a.emit.empty()) throw InputError("--slurm-time", "", "only with --emit slurm DIR");
   if (!a.emit.empty()) sim::check_slurm_sweep_paths(a.emit[0], a.emit[1], fs::absolute(a.out).string());
   if (!a.point.empty()) {  // one point: what every local process and every array task runs
     const sim::TradePlan plan = sim::read_trade_plan(a.out);
@@ -98,6 +100,7 @@ int run_tradeoff(TradeoffArgs& a) {
     s.point_command = bin + " tradeoff -q --out " + out_abs + " --point \"$ID\" > " + out_abs + "/points/\"$ID\".log 2>&1";
     s.merge_command = bin + " tradeoff --out " + out_abs + " --merge";
     s.log_dir = (fs::path(out_abs) / "points").string();
+    if (a.slurm_minutes > 0) s.task_minutes = a.slurm_minutes;
     for (const auto& f : sim::write_slurm_sweep(a.emit[1], s)) std::printf("written %s\n", f.c_str());
     std::printf("submit with: %s/submit.sh   (plan: %s/plan.json, %zu points)\n", a.emit[1].c_str(), a.out.c_str(), plan.points.size());
     return 0;
@@ -141,6 +144,10 @@ Runner add_tradeoff_command(CLI::App& app) {
   cmd->add_flag("--merge", a->merge, "Only merge the results in OUT into the tables");
   cmd->add_flag("--plan-only", a->plan_only, "Only write OUT/plan.json");
   cmd->add_option("--emit", a->emit, "Write the sweep as a job array: --emit slurm DIR")->expected(2);
+  cmd->add_option("--slurm-time", a->slurm_minutes,
+                  "--emit slurm: the wall-clock limit of each point's task, minutes (default 60; the full sweep's longest point "
+                  "takes about a minute on 2 cores)")
+      ->check(CLI::Range(1, 10080));
   cmd->add_option("--doc", a->doc, "Also replace the generated block of this markdown file with the tables");
   cmd->add_flag("--list", a->list, "List the points (with --quick: the quick sweep's)");
   cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
