@@ -4,7 +4,9 @@
 // points as rows, the local runner keeps speed points alone, the Slurm
 // scripts have the sweep's shape, and docs/tradeoff.md has the tables'
 // current structure.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -156,6 +158,18 @@ TEST(Tradeoff, APointThatCannotStartFailsAloneWithTheReasonInItsLog) {
   EXPECT_EQ(o.exit_status.at("gone"), 127);
   EXPECT_EQ(o.exit_status.at("fine"), 0);
   EXPECT_NE(slurp(dir.file("gone.log")).find("cannot start"), std::string::npos);
+}
+
+// A point inherits standard input (/dev/null), output and error (its log) and no other file of the sweep's process.
+TEST(Tradeoff, APointInheritsNoOtherFileOfTheSweep) {
+  test::TempDir dir;
+  const int fd = ::open(dir.file("held").c_str(), O_WRONLY | O_CREAT, 0644);  // no O_CLOEXEC: would be inherited by default
+  ASSERT_GE(fd, 3);
+  const std::string probe = "test -e /proc/self/fd/" + std::to_string(fd) + " && echo inherited || echo closed";
+  const auto o = sim::run_sweep_locally({{"probe", {"/bin/sh", "-c", probe}, dir.file("probe.log"), false, ""}}, 1, {}, {});
+  ::close(fd);
+  EXPECT_EQ(o.exit_status.at("probe"), 0);
+  EXPECT_EQ(slurp(dir.file("probe.log")), "closed\n");
 }
 
 TEST(Tradeoff, AStoppedSweepEndsItsRunningPointsAndStartsNoMore) {
