@@ -491,6 +491,16 @@ std::vector<std::string> trade_markdown_structure(const std::string& markdown) {
   return s;
 }
 
+namespace {
+// Column `csv` of a kind's CSV, numbered as gnuplot counts (1: the point id), from the one column list.
+std::string csv_column(TradeKind k, const std::string& csv) {
+  const auto cols = columns(k);
+  for (size_t i = 0; i < cols.size(); ++i)
+    if (cols[i].csv == csv) return std::to_string(i + 2);
+  throw std::logic_error(std::string("trade table ") + trade_kind_key(k) + " has no column " + csv);
+}
+}  // namespace
+
 std::vector<std::string> write_trade_outputs(const std::string& dir, const TradeTables& t, const std::string& date) {
   std::vector<std::string> notes;
   const fs::path d(dir);
@@ -501,26 +511,33 @@ std::vector<std::string> write_trade_outputs(const std::string& dir, const Trade
   write_text_atomic((d / "tradeoff.md").string(), "# The speed–accuracy trade\n\n" + trade_markdown(t, date));
   const std::string common = "set terminal pngcairo size 960,600 font ',11'\nset datafile separator ','\nset key outside right\n"
                              "set grid\n";
+  using K = TradeKind;
+  auto col = csv_column;
+  auto file = [](TradeKind k) { return std::string("'") + trade_kind_key(k) + ".csv'"; };
+  const std::string w_err = col(K::Width, "texel_max"), w_speed = col(K::Width, "pixel_clocks_per_s"), w_name = col(K::Width, "width");
+  const std::string t_load = col(K::Theta, "triangles_per_s"), t_psnr = col(K::Theta, "mean_psnr_db"), t_name = col(K::Theta, "theta");
+  const std::string r_load = col(K::Region, "triangles_per_s"), r_psnr = col(K::Region, "mean_psnr_db"), r_name = col(K::Region, "region");
   const std::string speed =
       common +
       "set output 'speed-vs-error.png'\nset title 'Speed against texel error: one point per datapath width (functional level)'\n"
       "set logscale xy\nset xlabel 'worst texel-position error against the golden reference (texels)'\n"
       "set ylabel 'simulated pixel clocks per second'\n"
-      "plot 'widths.csv' every ::1 using 4:10 with points pt 7 ps 1.5 title 'widths', "
-      "'' every ::1 using 4:10:2 with labels offset 1,0.6 left notitle\n";
+      "plot " + file(K::Width) + " every ::1 using " + w_err + ":" + w_speed + " with points pt 7 ps 1.5 title 'widths', "
+      "'' every ::1 using " + w_err + ":" + w_speed + ":" + w_name + " with labels offset 1,0.6 left notitle\n";
   const std::string load =
       common +
       "set output 'load-vs-error.png'\nset title 'Rendering load against image error on the gallery walk'\n"
       "set xlabel 'triangles rendered per second'\nset ylabel 'mean PSNR against the truth (dB)'\nset logscale x\n"
-      "plot 'theta.csv' every ::1 using 3:5 with linespoints pt 7 lw 2 title 'theta_t', "
-      "'' every ::1 using 3:5:2 with labels offset 0.8,0.8 left notitle, "
-      "'regions.csv' every ::1 using 3:5 with points pt 5 ps 1.5 title 'region size', "
-      "'' every ::1 using 3:5:2 with labels offset 0.8,-0.8 left notitle\n";
+      "plot " + file(K::Theta) + " every ::1 using " + t_load + ":" + t_psnr + " with linespoints pt 7 lw 2 title 'theta_t', "
+      "'' every ::1 using " + t_load + ":" + t_psnr + ":" + t_name + " with labels offset 0.8,0.8 left notitle, " +
+      file(K::Region) + " every ::1 using " + r_load + ":" + r_psnr + " with points pt 5 ps 1.5 title 'region size', "
+      "'' every ::1 using " + r_load + ":" + r_psnr + ":" + r_name + " with labels offset 0.8,-0.8 left notitle\n";
   const std::string levels =
       common +
       "set output 'levels-speed.png'\nset title 'Simulation speed of each fidelity level'\nset style data histogram\n"
       "set style fill solid 0.6\nset logscale y\nset ylabel 'simulated pixel clocks per second'\nset xtics rotate by -30\n"
-      "plot 'levels.csv' every ::1 using 4:xtic(2) title 'pixel clocks/s'\n";
+      "plot " + file(K::Level) + " every ::1 using " + col(K::Level, "pixel_clocks_per_s") + ":xtic(" + col(K::Level, "level") +
+      ") title 'pixel clocks/s'\n";
   // The latency plot's data: min, median and max per change, in microseconds.
   std::string lat = "change,min_us,median_us,max_us\n";
   for (const auto& p : t.plan.points) {
