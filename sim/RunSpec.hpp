@@ -50,6 +50,7 @@ struct RunSpec {
   std::string trace;                             // --trace FILE
   std::string live;                              // --live usb
   std::string device;                            // --device SERIAL|BUS:ADDR: which tracker
+  double mag_yaw_gain = 0;                       // --mag-yaw: the magnetometer's yaw correction, 1/s (0: off)
   HostSpec host;
   int64_t first_frame = 0, frames = 60;
   std::vector<std::string> stalls;               // --stall STAGE:CLOCK:CYCLES

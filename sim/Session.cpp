@@ -181,7 +181,7 @@ void Session::build_motion() {
     };
   }
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
-  if ((live_ = tracker::live_source(spec_.live, spec_.device))) motion_source_ = "live " + live_->describe();
+  if ((live_ = tracker::live_source(spec_.live, spec_.device, spec_.mag_yaw_gain))) motion_source_ = "live " + live_->describe();
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
   extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));

@@ -380,6 +380,8 @@ TEST(Extremes, ThresholdAnglesAtBothEndsAndWalksAt0And100MetresPerSecond) {
   auto walk = [&](double speed, double theta_deg) {
     sim::RunSpec spec;
     spec.config.memory.face_size = 128;  // small faces: the host's choices, not its resolution, are under test
+    spec.config.timing.h_active = 320;  // and a small display
+    spec.config.timing.v_active = 240;
     spec.memories.scene = "gallery";
     spec.host.walk = "gallery";
     spec.host.walk_speed = speed;

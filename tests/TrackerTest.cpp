@@ -386,6 +386,47 @@ TEST(Fusion, AnHourOfNoisyBiasedShakingKeepsTiltAndMemory) {
   EXPECT_LT(static_cast<double>(arp::peak_resident_bytes()) - rss0, 16e6);
 }
 
+// Yaw from the magnetometer, against the closed form of a proportional
+// correction: a still, level head whose gyroscope reads a constant bias w about
+// the vertical (bias learning off) drifts in yaw at w without the magnetometer
+// (w t after t seconds); with it, the error obeys de/dt = w - k e and settles
+// at w / k (k = yaw_gain), whatever the time. A field whose strength is off by
+// more than mag_tolerance is refused, and the drift is then the gyroscope's.
+TEST(Fusion, TheMagnetometerHoldsYawAtBiasOverGain) {
+  const double w = glm::radians(0.5), k = 0.5, dt = 1e-3, seconds = 60.0;
+  const glm::dvec3 field = ImuNoise{}.mag_field;
+  auto run = [&](double gain, double field_scale_after_first) {
+    FusionParams p;
+    p.estimate_bias = false;
+    p.yaw_gain = gain;
+    Fusion f(p);
+    for (int i = 0; i < static_cast<int>(seconds / dt); ++i)
+      f.update(glm::dvec3(0, w, 0), glm::dvec3(0, kStandardGravity, 0), field * (i == 0 ? 1.0 : field_scale_after_first), dt);
+    return f;
+  };
+  const Fusion without = run(0.0, 1.0), with = run(k, 1.0), disturbed = run(k, 1.5);
+  EXPECT_NEAR(angle_between_deg(without.orientation(), glm::dquat(1, 0, 0, 0)), 0.5 * seconds, 1e-6);
+  EXPECT_NEAR(angle_between_deg(with.orientation(), glm::dquat(1, 0, 0, 0)), glm::degrees(w / k), 0.01 * glm::degrees(w / k));
+  EXPECT_EQ(with.mag_used(), static_cast<int64_t>(seconds / dt) - 1);
+  EXPECT_EQ(disturbed.mag_refused(), static_cast<int64_t>(seconds / dt) - 1);
+  EXPECT_NEAR(angle_between_deg(disturbed.orientation(), glm::dquat(1, 0, 0, 0)), 0.5 * seconds, 1e-6);
+  FusionParams bad;
+  bad.yaw_gain = -1;
+  EXPECT_THROW(Fusion{bad}, std::invalid_argument);
+}
+
+// The drift scenario (shaking bursts, an IMU with bias and noise, a
+// magnetometer with 2 milligauss of noise) with the magnetometer: the yaw no
+// longer accumulates what the bias learning has not yet removed.
+TEST(Fusion, TheMagnetometerBoundsTheDriftScenariosYaw) {
+  FusionParams mag;
+  mag.yaw_gain = 0.1;
+  const DriftResult without = run_drift(FusionParams{}, 600.0), with = run_drift(mag, 600.0);
+  EXPECT_GT(without.total_deg, 30.0);
+  EXPECT_LT(with.total_deg, 1.0);
+  EXPECT_LT(with.tilt_deg, 1.0);
+}
+
 TEST(SyntheticImu, AtRestTheAccelerometerReadsGravityUp) {
   SamplingSpec s;
   s.duration_s = 0.0;
@@ -396,6 +437,20 @@ TEST(SyntheticImu, AtRestTheAccelerometerReadsGravityUp) {
   still[0].orientation = glm::angleAxis(glm::radians(90.0), glm::dvec3(1, 0, 0));  // looking straight up
   imu = synthesize_imu(still, ImuNoise{});
   EXPECT_NEAR(imu[0].accel.z, -kStandardGravity, 1e-12);  // world up is where the face points: the head's -z
+  // The magnetometer reads the field in the head frame: looking straight up, north (world -z, 0.22 gauss)
+  // is toward the chin (the head's -y), and the field's downward part (0.42 gauss) leaves through the back
+  // of the head (+z).
+  EXPECT_NEAR(imu[0].mag.x, 0.0, 1e-12);
+  EXPECT_NEAR(imu[0].mag.y, -0.22, 1e-12);
+  EXPECT_NEAR(imu[0].mag.z, 0.42, 1e-12);
+  ImuNoise noisy;
+  noisy.mag_noise = 0.01;
+  noisy.gyro_noise = 0.01;
+  ImuNoise quiet_mag = noisy;
+  quiet_mag.mag_noise = 0;
+  const auto a = synthesize_imu(still, noisy), b = synthesize_imu(still, quiet_mag);
+  EXPECT_EQ(a[0].gyro, b[0].gyro) << "the magnetometer's noise is its own stream";
+  EXPECT_NE(a[0].mag, b[0].mag);
   still[0].has_angular_velocity = false;
   EXPECT_THROW(synthesize_imu(still, ImuNoise{}), std::invalid_argument);
 }

@@ -42,7 +42,11 @@ Fusion stream_fusion(const FusionParams& params, const ImuNoise& noise, double d
   for (int64_t i = 1; i < n; ++i) {
     last = truth_at(static_cast<double>(i) * 1e-3);
     const ImuReading r = imu_reading(last, noise, rng);
-    f.update(r.gyro, r.accel, static_cast<double>(r.time_ps - prev.time_ps) * 1e-12);
+    const double dt = static_cast<double>(r.time_ps - prev.time_ps) * 1e-12;
+    if (params.yaw_gain > 0)
+      f.update(r.gyro, r.accel, r.mag, dt);
+    else
+      f.update(r.gyro, r.accel, dt);
     prev = r;
   }
   return f;
@@ -55,6 +59,7 @@ ImuNoise drift_imu_noise(uint64_t seed) {
   n.gyro_bias = glm::radians(glm::dvec3(0.5, -0.3, 0.4));  // deg/s, a plausible MEMS gyro offset
   n.gyro_noise = 0.01;
   n.accel_noise = 0.05;
+  n.mag_noise = 0.002;  // gauss: 0.4 % of the field, a few milligauss as MEMS magnetometers read
   n.seed = seed;
   return n;
 }

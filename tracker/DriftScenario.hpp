@@ -1,5 +1,7 @@
 // The reproducible scenarios behind the fusion figures, each streamed sample
-// by sample (constant memory: an hour is 3.6 million samples):
+// by sample (constant memory: an hour is 3.6 million samples); the IMU has a
+// magnetometer (drift_imu_noise: 2 milligauss of noise), which fusion uses when
+// FusionParams::yaw_gain > 0:
 // - drift: bursts of head shaking about a tilted axis (2 s at 150 deg/s peak)
 //   separated by 3 s of stillness, sampled at 1 kHz, read by an IMU with a
 //   constant gyro bias and white noise;

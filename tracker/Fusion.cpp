@@ -34,7 +34,8 @@ double angle_between_deg(const glm::dquat& a, const glm::dquat& b) {
 
 Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)) {
   if (!(p.tilt_gain >= 0 && p.tilt_gain <= 1000) || !(p.tilt_still_rate > 0) || !(p.bias_still_rate > 0) ||
-      !(p.bias_time_constant > 0) || !(p.max_bias >= 0) || !(p.still_filter_s > 0) || !(p.gravity_tolerance > 0))
+      !(p.bias_time_constant > 0) || !(p.max_bias >= 0) || !(p.still_filter_s > 0) || !(p.gravity_tolerance > 0) ||
+      !(p.yaw_gain >= 0 && p.yaw_gain <= 10) || !(p.mag_tolerance > 0))
     throw std::invalid_argument("fusion parameters out of range (tracker/Fusion.hpp states each range)");
 }
 
@@ -74,6 +75,31 @@ void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, double dt) 
       q_ = glm::normalize(q_ * glm::angleAxis(std::min(1.0, p_.tilt_gain * dt) * err, axis / s));
     }
   }
+}
+
+void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, const glm::dvec3& mag, double dt) {
+  update(gyro, accel, dt);
+  if (!(p_.yaw_gain > 0) || !(dt > 0.0) || !std::isfinite(dt)) return;
+  const double strength = glm::length(mag);
+  if (!(strength > 0) || !std::isfinite(strength)) return;
+  const glm::dvec3 world = q_ * mag;
+  glm::dvec3 h(world.x, 0.0, world.z);
+  const double hl = glm::length(h);
+  if (hl < 1e-3 * strength) return;  // a field (nearly) vertical has no heading
+  h /= hl;
+  if (field_ref_ == 0) {
+    heading_ref_ = h;
+    field_ref_ = strength;
+    return;
+  }
+  if (std::abs(strength - field_ref_) > p_.mag_tolerance * field_ref_) {
+    ++mag_refused_;
+    return;
+  }
+  ++mag_used_;
+  // The angle that turns the measured heading onto the reference, about world up.
+  const double err = std::atan2(glm::cross(h, heading_ref_).y, glm::dot(h, heading_ref_));
+  q_ = glm::normalize(glm::angleAxis(std::min(1.0, p_.yaw_gain * dt) * err, glm::dvec3(0.0, 1.0, 0.0)) * q_);
 }
 
 }  // namespace arp::tracker

@@ -5,6 +5,18 @@
 // without the magnetometer: its drift is what a residual bias leaves
 // (docs/tracker.md has the figures).
 //
+// Yaw from the magnetometer (optional, yaw_gain > 0; the vendor SDK's yaw
+// correction): the field measured in the head frame, turned into the world
+// frame by the fused orientation, has a horizontal direction; the first
+// reading fixes it as the reference heading, and every later one pulls the
+// yaw toward it by yaw_gain of the error per second. Readings whose strength
+// differs from the reference's by more than mag_tolerance (a nearby magnet or
+// steel) are not used. A constant yaw rate error w (a residual gyro bias
+// about the vertical) then settles at w / yaw_gain instead of growing. Off by
+// default: a magnetometer must be calibrated (hard-iron offsets) first, and
+// an uncalibrated one pulls the yaw by an amount that depends on the
+// orientation.
+//
 // The bias model. To a gyroscope and an accelerometer, a steady slow turn
 // about the vertical and a gyro bias look alike: both are a constant rate with
 // gravity unchanged. So the bias is learned only while the rate averaged over
@@ -30,6 +42,8 @@ struct FusionParams {
   double gravity_tolerance = 0.3;   // m/s^2: | |a| - g | below which the accelerometer sees only gravity (> 0)
   bool correct_tilt = true;
   bool estimate_bias = true;
+  double yaw_gain = 0.0;            // 1/s: fraction of the heading error removed per second (0: no magnetometer) (0..10)
+  double mag_tolerance = 0.3;       // fraction: |field| this far from the reference's is a disturbance, not used (> 0)
 };
 
 class Fusion {
@@ -37,6 +51,11 @@ class Fusion {
   explicit Fusion(const FusionParams& p = {}, const glm::dquat& start = glm::dquat(1, 0, 0, 0));
   // One IMU reading (head frame) after dt seconds.
   void update(const glm::dvec3& gyro_rad_s, const glm::dvec3& accel_m_s2, double dt);
+  // The same with a magnetometer reading (head frame; only its direction and relative strength are used).
+  void update(const glm::dvec3& gyro_rad_s, const glm::dvec3& accel_m_s2, const glm::dvec3& mag, double dt);
+  // Magnetometer readings used for yaw, and refused as disturbances, so far.
+  int64_t mag_used() const { return mag_used_; }
+  int64_t mag_refused() const { return mag_refused_; }
   const glm::dquat& orientation() const { return q_; }
   const glm::dvec3& bias() const { return bias_; }
   const glm::dvec3& rate() const { return rate_; }  // last bias-corrected angular velocity, head frame
@@ -47,6 +66,9 @@ class Fusion {
   glm::dvec3 bias_{0.0}, rate_{0.0};
   glm::dvec3 gyro_lp_{0.0};  // the raw gyro, low-passed over still_filter_s
   bool lp_started_ = false;
+  glm::dvec3 heading_ref_{0.0};  // world-frame horizontal field direction (unit; zero: not yet taken)
+  double field_ref_ = 0;         // its strength
+  int64_t mag_used_ = 0, mag_refused_ = 0;
 };
 
 // Rotation of q by a head-frame angular velocity w held for dt seconds.

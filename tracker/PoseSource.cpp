@@ -32,6 +32,7 @@ class UsbSource : public PoseSource {
  public:
   explicit UsbSource(const RiftStreamOptions& o) : stream_(o) {}
   bool open(std::string& error) { return stream_.open(error); }
+  bool choice_refused() const { return stream_.choice_refused(); }
   std::string describe() const override {
     return stream_.model() == RiftModel::DK1 ? "Oculus Rift DK1 (USB)" : "Oculus Rift DK2 (USB)";
   }
@@ -69,23 +70,30 @@ std::unique_ptr<PoseSource> dataset_source(const std::string& path, const Datase
   return recorded_source(read_head_motion_dataset(path, layout), path);
 }
 
-std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device) {
+std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device, double mag_yaw_gain) {
   if (live.empty()) {
     if (!device.empty()) throw InputError("--device", device, "chooses the tracker of --live usb; give --live usb too");
+    if (mag_yaw_gain != 0) throw InputError("--mag-yaw", "", "corrects the yaw of --live usb; give --live usb too");
     return nullptr;
   }
   if (live != "usb") throw InputError("--live", live, "the live source is usb (an Oculus Rift DK1/DK2)");
   RiftStreamOptions o;
   o.device = device;
+  o.fusion.yaw_gain = mag_yaw_gain;
   std::string err;
-  auto s = usb_source(err, o);
-  if (!s) throw InputError("--live usb", "", err);
+  bool bad_choice = false;
+  auto s = usb_source(err, o, &bad_choice);
+  if (!s) throw InputError(bad_choice ? "--device" : "--live usb", bad_choice ? device : "", err);
   return s;
 }
 
-std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options) {
+std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options, bool* choice_refused) {
   auto s = std::make_unique<UsbSource>(options);
-  if (!s->open(error)) return nullptr;
+  if (choice_refused) *choice_refused = false;
+  if (!s->open(error)) {
+    if (choice_refused) *choice_refused = s->choice_refused();
+    return nullptr;
+  }
   return s;
 }
 

@@ -38,10 +38,11 @@ std::unique_ptr<PoseSource> recorded_source(std::vector<PoseSample> samples, std
 std::unique_ptr<PoseSource> trace_file_source(const std::string& path);
 std::unique_ptr<PoseSource> dataset_source(const std::string& path, const DatasetLayout& layout);
 // The DK1/DK2 on USB that options.device names (or the only one); nullptr with the reason in `error`
-// when it cannot be opened.
-std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options = {});
+// when it cannot be opened, and *choice_refused set when the reason is the choice (--device names
+// none of the trackers attached, or several are attached and none was named) rather than the machine.
+std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options = {}, bool* choice_refused = nullptr);
 // What --live names ("usb"; empty: none, and then --device must be empty too), opened: InputError naming
 // the option and the reason otherwise.
-std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device);
+std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device, double mag_yaw_gain = 0);
 
 }  // namespace arp::tracker

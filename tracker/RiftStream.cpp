@@ -48,6 +48,7 @@ struct RiftStream::Impl {
   std::atomic<RiftModel> model{RiftModel::DK1};
   std::atomic<bool> is_connected{false};
   bool ever_opened = false;
+  bool choice_refused = false;  // the last connect() failed choosing among the trackers attached
   std::string streamed_serial;  // of the tracker streamed first: reconnections take only it (connect() only)
   // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
   mutable std::mutex mu;
@@ -238,7 +239,14 @@ struct RiftStream::Impl {
         dt_ps = kSamplePs;  // the timeline moved to the arrival; the device sampled at its own period
       }
       first_after_reanchor = false;
-      fusion.update(gyro, accel, static_cast<double>(dt_ps) * 1e-12);
+      if (opt.fusion.yaw_gain > 0) {
+        // The report's one magnetometer reading (1e-4 gauss, the gyroscope's axes) for each of its samples.
+        const glm::dvec3 mag(r.magnetometer[0] * 1e-4, r.magnetometer[1] * 1e-4, r.magnetometer[2] * 1e-4);
+        fusion.update(gyro, accel, mag, static_cast<double>(dt_ps) * 1e-12);
+        stats.mag_disturbed = fusion.mag_refused();
+      } else {
+        fusion.update(gyro, accel, static_cast<double>(dt_ps) * 1e-12);
+      }
       fusion_started = true;
       last_sample_ps = t;
       ++stats.samples;
@@ -275,6 +283,7 @@ struct RiftStream::Impl {
     std::vector<UsbTrackerInfo> infos;
     for (const auto& f : all) infos.push_back(f.info);
     const int k = choose_tracker(infos, streamed_serial.empty() ? opt.device : streamed_serial, error);
+    choice_refused = k < 0 && !infos.empty();
     if (k < 0) {
       libusb_free_device_list(list, 1);
       // None at all keeps choose_tracker's "no Oculus Rift ..." (an absent device is not a refusal: step() stays quiet).
@@ -479,6 +488,8 @@ RiftStream::~RiftStream() {
     }
   }
 }
+
+bool RiftStream::choice_refused() const { return p_->choice_refused; }
 
 bool RiftStream::open(std::string& error) {
   if (!p_->ctx) {

@@ -64,6 +64,7 @@ struct StreamStats {
   int64_t stalls = 0;                  // endpoint halts cleared
   int64_t transfer_errors = 0;         // transfers that failed transiently and were resubmitted
   int64_t reconnect_failures = 0;      // a device found but refused while reconnecting
+  int64_t mag_disturbed = 0;           // magnetometer readings not used for yaw (fusion.yaw_gain > 0): the field's strength was off
   double gap_s = 0;                    // their total length, s
   bool kernel_driver_detached = false;
 };
@@ -87,6 +88,7 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("stalls", s.stalls);
   f("transfer_errors", s.transfer_errors);
   f("reconnect_failures", s.reconnect_failures);
+  f("mag_disturbed", s.mag_disturbed);
   f("disconnects", s.disconnects);
   f("reconnects", s.reconnects);
   f("keep_alives", s.keep_alives);
@@ -105,6 +107,9 @@ class RiftStream {
   // Opens the first DK1/DK2. false, with the reason in `error`, when there is
   // none, USB is unavailable, or it cannot be opened (permission: see kUdevRulesHint).
   bool open(std::string& error);
+  // Whether the last failed open was a choice the trackers attached cannot satisfy: --device names none of
+  // them, or several are attached and none was named (a usage error; no tracker at all is not one).
+  bool choice_refused() const;
   // Handles USB events for up to timeout_ms (and keep-alives, reconnection);
   // appends the poses fused since the last call to `out`.
   void poll(int timeout_ms, std::vector<PoseSample>& out);

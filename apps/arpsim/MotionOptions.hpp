@@ -9,7 +9,8 @@ namespace arp::app {
 
 // `required`: --motion must be given.
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required);
-// --device SERIAL|BUS:ADDR: which USB tracker (tracker record, --live usb).
-void add_device_option(CLI::App& cmd, std::string& device);
+// --device SERIAL|BUS:ADDR: which USB tracker, and --mag-yaw GAIN: its magnetometer's yaw correction
+// (tracker record, --live usb).
+void add_device_option(CLI::App& cmd, std::string& device, double& mag_yaw_gain);
 
 }  // namespace arp::app

@@ -94,7 +94,7 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--live", s.live,
                   "Live head motion: usb (an Oculus Rift DK1/DK2; --device chooses one), fed to the pipeline frame by frame as it arrives, "
                   "at the display's pace (functional level)");
-  add_device_option(*cmd, s.device);
+  add_device_option(*cmd, s.device, s.mag_yaw_gain);
   add_motion_options(*cmd, s.motion, false);
   cmd->add_option("--frames", s.frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", s.first_frame, "Index of the first frame (sets its time)")->capture_default_str();

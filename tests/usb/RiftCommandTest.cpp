@@ -179,8 +179,11 @@ TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
             std::string::npos)
       << list.output;
   const auto unchosen = arp::test::run_command(arpsim + " tracker record -q --seconds 0.2 " + d.file("a.csv"));
-  EXPECT_EQ(unchosen.status, 1) << unchosen.output;
-  EXPECT_NE(unchosen.output.find("2 trackers attached"), std::string::npos) << unchosen.output;
+  EXPECT_EQ(unchosen.status, 2) << "a choice to make is a usage error, as in run --live usb: " << unchosen.output;
+  EXPECT_NE(unchosen.output.find("--device: 2 trackers attached"), std::string::npos) << unchosen.output;
+  const auto nomatch = arp::test::run_command(arpsim + " tracker record -q --seconds 0.2 --device NOMATCH " + d.file("a.csv"));
+  EXPECT_EQ(nomatch.status, 2) << nomatch.output;
+  EXPECT_NE(nomatch.output.find("--device: NOMATCH: no tracker is 'NOMATCH'"), std::string::npos) << nomatch.output;
   EXPECT_FALSE(std::filesystem::exists(d.file("a.csv")));
   const auto chosen = arp::test::run_command(arpsim + " tracker record -q --seconds 0.3 --device DK2-B " + d.file("b.csv"));
   ASSERT_EQ(chosen.status, 0) << chosen.output;
@@ -190,8 +193,8 @@ TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
     std::string args, says;
   } bad[] = {
       {"run -q --frames 1 --device DK1-A", "--device: DK1-A: chooses the tracker of --live usb"},
-      {"run -q --frames 1 --live usb", "2 trackers attached"},
-      {"run -q --frames 1 --live usb --device 9:9", "no tracker is '9:9'"},
+      {"run -q --frames 1 --live usb", "--device: 2 trackers attached"},
+      {"run -q --frames 1 --live usb --device 9:9", "--device: 9:9: no tracker is '9:9'"},
   };
   for (const auto& b : bad) {
     const auto r = arp::test::run_command(arpsim + " " + b.args + " --every 0");

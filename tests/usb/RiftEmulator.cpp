@@ -344,6 +344,7 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
     for (int a = 0; a < 3; ++a) {
       r.samples[0].gyro[static_cast<size_t>(a)] = static_cast<int32_t>(std::lround(imu[k].gyro[a] * 1e4));
       r.samples[0].accel[static_cast<size_t>(a)] = static_cast<int32_t>(std::lround(imu[k].accel[a] * 1e4));
+      r.magnetometer[static_cast<size_t>(a)] = static_cast<int16_t>(std::lround(imu[k].mag[a] * 1e4));  // 1e-4 gauss
     }
     s_->reports.push_back(tracker::encode_report(r));
   }

@@ -3,7 +3,8 @@
 // standing in for the kernel's usbdevfs -- kernel-driver query and detach,
 // interface claim, HID feature reports (recorded), interrupt IN transfers on
 // 0x81 answered at 1000 reports per second of wall time with reports encoded
-// from a synthetic head motion (the DK1's 16-bit millisecond counter starts
+// from a synthetic head motion (gyroscope, accelerometer and the earth's
+// field on the magnetometer, tracker/SyntheticImu; the DK1's 16-bit millisecond counter starts
 // just before its wrap), the device stopping when its keep-alive runs out,
 // and on request: malformed reports, 62-byte reports, a sample count larger
 // than a report holds, a restarted counter, unplugging and replugging. Each

@@ -108,6 +108,28 @@ TEST(RiftStream, Dk1StreamsAcrossTheCounterWrapAndKeepsItsKeepAlive) {
   EXPECT_GE(static_cast<int64_t>(f.size()), 1 + keep_alives);
 }
 
+// The magnetometer's yaw correction on the live path (--mag-yaw): the emulated
+// DK1 and DK2 read the earth's field in the gyroscope's axes (at their own
+// report offsets); with the strongest correction the fused yaw still follows a
+// 90 deg/s turn -- a field read in other axes or at the wrong offset turns the
+// wrong way as the head turns and pulls the yaw off -- and no reading is taken
+// for a disturbance.
+TEST(RiftStream, TheMagnetometerIsReadInTheGyroscopesAxes) {
+  for (RiftModel model : {RiftModel::DK1, RiftModel::DK2}) {
+    const auto truth = yaw_90(4.0);
+    test::RiftEmulator device(model, truth);
+    RiftStreamOptions o;
+    o.fusion.yaw_gain = 10;
+    RiftStream r(o);
+    std::string err;
+    ASSERT_TRUE(r.open(err)) << err;
+    std::vector<PoseSample> poses;
+    ASSERT_NO_FATAL_FAILURE(stream_until(r, [&] { return r.stats().samples >= 800; }, poses, "800 samples"));
+    expect_fused_motion(r, truth);
+    EXPECT_EQ(r.stats().mag_disturbed, 0);
+  }
+}
+
 TEST(RiftStream, Dk2MalformedReportUnplugAndReplug) {
   const auto truth = yaw_90(6.0);
   test::RiftEmulator dk2(RiftModel::DK2, truth);
