@@ -34,12 +34,7 @@ const std::string kArpsim = ARPSIM_BINARY;
 const std::string kDataFile = std::string(ARPSIM_SOURCE_DIR) + "/tests/data/bit-identity.json";
 const std::set<std::string> kVolatileKeys{"wall_seconds", "pixel_clocks_per_second", "host_wall_ms_per_frame", "peak_resident_mb"};
 
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using arp::test::read_text;
 
 json load_data() {
   std::ifstream in(kDataFile);
@@ -71,7 +66,7 @@ void drop_volatile(json& j) {
 // The file's bytes as they must repeat: the run folder named OUT, wall-clock
 // keys dropped from JSON, a VCD from its timescale on.
 std::string normalised(const std::string& path, const std::string& out_dir) {
-  std::string text = read_all(path);
+  std::string text = read_text(path);
   const auto ends_with = [&](const char* e) {
     const std::string ext(e);
     return path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;

@@ -35,11 +35,8 @@ TEST(ConfigFile, DefaultsAreTheBriefsAndRoundTrip) {
 }
 
 TEST(ConfigFile, TheCommittedReferenceDocIsGeneratedFromTheParameterTable) {
-  std::ifstream in(std::string(ARPSIM_SOURCE_DIR) + "/docs/configuration.md");
-  ASSERT_TRUE(in) << "docs/configuration.md missing";
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string doc = ss.str();
+  const std::string doc = test::read_text(std::string(ARPSIM_SOURCE_DIR) + "/docs/configuration.md");
+  ASSERT_FALSE(doc.empty()) << "docs/configuration.md missing";
   EXPECT_EQ(config::update_reference_doc(doc), doc)
       << "docs/configuration.md is stale: build/apps/arpsim/arpsim config --update-doc docs/configuration.md";
   // Every key appears, once, in a generated table with its default.

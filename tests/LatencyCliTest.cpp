@@ -15,10 +15,7 @@ using arp::test::TempDir;
 
 namespace {
 const std::string kArpsim = ARPSIM_BINARY;
-nlohmann::json load(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
+nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
 }  // namespace
 
 TEST(LatencyCli, ComparesTheArchitecturesAndReproducesOlano) {

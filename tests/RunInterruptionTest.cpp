@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json load(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
+nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
 
 size_t lines_of(const std::string& path) {
   std::ifstream in(path);

@@ -5,7 +5,10 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "common/InputError.hpp"
@@ -46,6 +49,17 @@ class TempDir {
  private:
   std::string path_;
 };
+
+// A file's bytes as text (empty if it cannot be read: the expectations that follow then fail).
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A JSON file, parsed (throws, failing the test, when it is not JSON).
+inline nlohmann::json load_json(const std::string& path) { return nlohmann::json::parse(read_text(path)); }
 
 struct CommandResult {
   int status = -1;

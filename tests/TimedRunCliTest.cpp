@@ -22,17 +22,8 @@ const std::string kArpsim = ARPSIM_BINARY;
 const std::string kSmall =
     " --set display.h_active=96 --set display.v_active=64 --set memory.face_size=128 --set pipeline.latch=\\\"pixel\\\"";
 
-nlohmann::json load(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using arp::test::read_text;
+nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
 }  // namespace
 
 TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics) {
@@ -53,7 +44,7 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
         EXPECT_EQ(rep[level]["frames"][f][k], rep["functional"]["frames"][f][k]) << level << " frame " << f << " " << k;
       EXPECT_EQ(rep[level]["frames"][f]["underflows"], 0);
     }
-    EXPECT_EQ(read_all(d.file(level + ".csv")), read_all(d.file("functional.csv"))) << level;
+    EXPECT_EQ(read_text(d.file(level + ".csv")), read_text(d.file("functional.csv"))) << level;
   }
   // The fast and the detailed cycle-accurate models: the same FIFO and stage statistics.
   EXPECT_EQ(rep["cycle"]["fifos"], rep["detailed"]["fifos"]);
@@ -91,7 +82,7 @@ TEST(TimedRunCli, TheVerilatedLevelGivesTheFunctionalLevelsFrames) {
   for (size_t i = 0; i < 2; ++i)
     for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "first_sample", "last_sample"})
       EXPECT_EQ(vr["frames"][i][k], fr["frames"][i][k]) << "frame " << i << " " << k;
-  EXPECT_EQ(read_all(d.file("v.csv")), read_all(d.file("f.csv")));
+  EXPECT_EQ(read_text(d.file("v.csv")), read_text(d.file("f.csv")));
   const auto bad = run_command(kArpsim + common + " --fidelity verilated --set datapath.vec_frac=13");
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.output.find("14/14/14/1 (default)"), std::string::npos) << bad.output;
@@ -102,17 +93,17 @@ TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
   const auto r = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0 --vcd " + d.file("w/arp.vcd") +
                              " --vcd-lines 0:3");
   ASSERT_EQ(r.status, 0) << r.output;
-  const std::string vcd = read_all(d.file("w/arp.vcd"));
+  const std::string vcd = read_text(d.file("w/arp.vcd"));
   for (const char* sig : {"pixel_clk", "h_count", "v_count", "valid_out", "ready_in", "occupancy", "matrix_sample",
                           "front_select", "display_rgb", "qw_q14"})
     EXPECT_NE(vcd.find(sig), std::string::npos) << sig;
   // The save file written beside it is the one committed in waveforms/ (but for the file it names).
   auto body = [](std::string s) { return s.substr(s.find('\n', s.find("[dumpfile]"))); };
-  EXPECT_EQ(body(read_all(d.file("w/arp.gtkw"))), body(read_all(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/arp.gtkw")));
-  EXPECT_NE(read_all(d.file("w/arp.gtkw")).find("SystemC.arp.video_timing_generator.h_count[31:0]"), std::string::npos);
+  EXPECT_EQ(body(read_text(d.file("w/arp.gtkw"))), body(read_text(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/arp.gtkw")));
+  EXPECT_NE(read_text(d.file("w/arp.gtkw")).find("SystemC.arp.video_timing_generator.h_count[31:0]"), std::string::npos);
   // The view opens at the traced window (the VCD's first timestamp, not 0) zoomed to two lines
   // (2^-zoom ps per pixel across 1000 pixels), where the scan moves.
-  const std::string gtkw = read_all(d.file("w/arp.gtkw"));
+  const std::string gtkw = read_text(d.file("w/arp.gtkw"));
   const auto ts = gtkw.find("[timestart] "), zl = gtkw.find("\n*");
   ASSERT_NE(ts, std::string::npos);
   ASSERT_NE(zl, std::string::npos);
@@ -203,8 +194,8 @@ TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {
     const std::string vcd = d.file("bench_" + m + ".vcd");
     ASSERT_TRUE(std::filesystem::exists(vcd)) << m;
     ASSERT_EQ(run_command(kArpsim + " gtkw " + vcd).status, 0) << m;
-    EXPECT_EQ(read_all(d.file("bench_" + m + ".gtkw")),
-              read_all(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/bench_" + m + ".gtkw"))
+    EXPECT_EQ(read_text(d.file("bench_" + m + ".gtkw")),
+              read_text(std::string(ARPSIM_SOURCE_DIR) + "/waveforms/bench_" + m + ".gtkw"))
         << m;
   }
 }

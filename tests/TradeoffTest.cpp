@@ -29,12 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using sim::TradeKind;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const std::string& path) { return test::read_text(path); }
 
 // docs/hdl-cost.csv read here on its own: (configuration, module) -> cells.
 std::map<std::pair<std::string, std::string>, int64_t> csv_cells() {

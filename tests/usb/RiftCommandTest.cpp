@@ -23,12 +23,7 @@ namespace {
 
 using test::yaw_90;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using arp::test::read_text;
 
 }  // namespace
 
