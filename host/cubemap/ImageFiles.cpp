@@ -1,6 +1,6 @@
 #include "ImageFiles.hpp"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <system_error>
 
+#include "OiioModule.hpp"
 #include "common/AtomicFile.hpp"
+#include "common/CompanionFile.hpp"
 #include "common/InputError.hpp"
 #include "common/InputFile.hpp"
 
@@ -46,20 +48,78 @@ class QuietStderr {
   int saved_;
 };
 
+// The image module, loaded on the first image (OiioModule.hpp says why); InputError naming `path`
+// when it cannot be.
+struct Oiio {
+  decltype(&arp_oiio_open) open = nullptr;
+  decltype(&arp_oiio_read) read = nullptr;
+  decltype(&arp_oiio_close) close = nullptr;
+  decltype(&arp_oiio_write) write = nullptr;
+  std::string problem;  // why it is not loaded, if it is not
+};
+
+const Oiio& oiio(const std::string& path) {
+  static const Oiio api = [] {
+    Oiio a;
+#ifdef ARPSIM_OIIO_MODULE_BUILT
+    const std::string where = companion_file("ARPSIM_OIIO_MODULE", "libarp_oiio.so", ARPSIM_OIIO_MODULE_BUILT);
+#else
+    const std::string where = companion_file("ARPSIM_OIIO_MODULE", "libarp_oiio.so", nullptr);
+#endif
+    if (where.empty()) {
+      a.problem = "arpsim's image module libarp_oiio.so is not beside this program (set ARPSIM_OIIO_MODULE)";
+      return a;
+    }
+    void* h = ::dlopen(where.c_str(), RTLD_NOW | RTLD_LOCAL);  // never closed: images may be read until exit
+    if (!h) {
+      const char* e = ::dlerror();
+      a.problem = "cannot load arpsim's image module " + where + ": " + (e ? e : "unknown reason");
+      return a;
+    }
+    a.open = reinterpret_cast<decltype(a.open)>(::dlsym(h, "arp_oiio_open"));
+    a.read = reinterpret_cast<decltype(a.read)>(::dlsym(h, "arp_oiio_read"));
+    a.close = reinterpret_cast<decltype(a.close)>(::dlsym(h, "arp_oiio_close"));
+    a.write = reinterpret_cast<decltype(a.write)>(::dlsym(h, "arp_oiio_write"));
+    if (!a.open || !a.read || !a.close || !a.write) a.problem = where + " is not arpsim's image module (a function is missing)";
+    return a;
+  }();
+  if (!api.problem.empty()) throw InputError(path, "", "cannot read or write images: " + api.problem);
+  return api;
+}
+
+// An open image of the module, closed when it goes.
+class OpenImage {
+ public:
+  OpenImage(const Oiio& api, void* h) : api_(api), h_(h) {}
+  ~OpenImage() { api_.close(h_); }
+  OpenImage(const OpenImage&) = delete;
+  OpenImage& operator=(const OpenImage&) = delete;
+  void* get() const { return h_; }
+
+ private:
+  const Oiio& api_;
+  void* h_;
+};
+
+constexpr size_t kErrorLength = 512;
+
 }  // namespace
 
 RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>& check_size) {
   regular_file_size(path, "image");
+  const Oiio& api = oiio(path);
   const QuietStderr quiet;  // declared before the reader: restored after it is gone (it may print as it closes)
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw InputError(path, "", "cannot read as an image: " + quoted(OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
+  char err[kErrorLength] = "";
+  ArpOiioSpec spec{};
+  void* handle = api.open(path.c_str(), &spec, err, sizeof err);
+  if (!handle) throw InputError(path, "", "cannot read as an image: " + quoted(err));
+  const OpenImage in(api, handle);
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError(path, "header", "image has no pixels");
   // What reading it would take, before anything is allocated: the header decides, not the file's size.
   const uint64_t pixels = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
   const uint64_t bytes = pixels > kMaxImagePixels ? UINT64_MAX  // (and the product below cannot overflow)
-                                                  : pixels * static_cast<uint64_t>(spec.nchannels) * (spec.format.is_floating_point() ? 4 : 1);
+                                                  : pixels * static_cast<uint64_t>(spec.nchannels) * (spec.is_float ? 4 : 1);
   if (pixels > kMaxImagePixels || bytes > kMaxImageBytes)
     throw InputError(path, "header",
                      std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) +
@@ -68,11 +128,11 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>&
                          std::to_string(kMaxImageBytes >> 20) + " MB and 2^28 pixels");
   if (check_size) check_size(spec.width, spec.height);
   const int nc = spec.nchannels;
-  if (spec.format.is_floating_point()) {
+  if (spec.is_float) {
     // High dynamic range faces: every value must be a number.
     std::vector<float> f(pixels * static_cast<size_t>(nc));
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, f.data()))
-      throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(in->geterror()));
+    if (!api.read(in.get(), 1, f.data(), err, sizeof err))
+      throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(err));
     for (size_t i = 0; i < f.size(); ++i)
       if (!std::isfinite(f[i]))
         throw InputError(path, "pixel (" + std::to_string(i / static_cast<size_t>(nc) % static_cast<size_t>(spec.width)) + ", " +
@@ -80,29 +140,26 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>&
                          "is not a finite number (NaN or infinity)");
   }
   std::vector<uint8_t> raw(static_cast<size_t>(pixels) * static_cast<size_t>(nc));
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, raw.data()))
-    throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(in->geterror()));
-  in->close();
+  if (!api.read(in.get(), 0, raw.data(), err, sizeof err))
+    throw InputError(path, "pixels", "corrupt or truncated image data: " + quoted(err));
   RgbImage img(spec.width, spec.height);
-  for (size_t i = 0; i < static_cast<size_t>(spec.width) * spec.height; ++i)
+  for (size_t i = 0; i < static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height); ++i)
     for (int c = 0; c < 3; ++c) img.rgb[i * 3 + static_cast<size_t>(c)] = raw[i * static_cast<size_t>(nc) + static_cast<size_t>(nc >= 3 ? c : 0)];
   return img;
 }
 
 void write_rgb8(const std::string& path, const RgbImage& img) {
+  const Oiio& api = oiio(path);
   const fs::path tmp = temp_path_beside(path);  // keeps the extension: OpenImageIO picks the format by it
-  auto out = OIIO::ImageOutput::create(tmp.string());
-  if (!out)
-    throw InputError(path, "", "no image format for extension '" + fs::path(path).extension().string() + "': " + OIIO::geterror());
-  OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT8);
-  bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, img.rgb.data());
-  std::string err = ok ? "" : out->geterror();
-  ok = out->close() && ok;
-  if (!ok) {
-    discard_temp_file(tmp);
-    throw InputError(path, "", "cannot write image: " + (err.empty() ? out->geterror() : err));
+  char err[kErrorLength] = "";
+  const int rc = api.write(tmp.string().c_str(), img.width, img.height, img.rgb.data(), err, sizeof err);
+  if (rc == 0) {
+    commit_temp_file(tmp, path);
+    return;
   }
-  commit_temp_file(tmp, path);
+  discard_temp_file(tmp);
+  if (rc == 1) throw InputError(path, "", "no image format for extension '" + fs::path(path).extension().string() + "': " + err);
+  throw InputError(path, "", "cannot write image: " + std::string(err));
 }
 
 }  // namespace arp::host

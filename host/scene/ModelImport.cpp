@@ -18,6 +18,7 @@
 
 #include "MeshWire.hpp"
 #include "ModelPrecheck.hpp"
+#include "common/CompanionFile.hpp"
 #include "common/InputError.hpp"
 
 extern char** environ;
@@ -37,14 +38,11 @@ std::string env_or(const char* name, const std::string& fallback) {
 // The helper: named by ARPSIM_IMPORT_HELPER, else beside the running
 // program, else where this build put it.
 std::string helper_path() {
-  if (const char* e = std::getenv("ARPSIM_IMPORT_HELPER"); e && *e) return e;
-  std::error_code ec;
-  const fs::path beside = fs::read_symlink("/proc/self/exe", ec).parent_path() / "arpsim-import";
-  if (!ec && fs::exists(beside, ec)) return beside.string();
 #ifdef ARPSIM_IMPORT_HELPER_BUILT
-  if (fs::exists(ARPSIM_IMPORT_HELPER_BUILT, ec)) return ARPSIM_IMPORT_HELPER_BUILT;
+  return companion_file("ARPSIM_IMPORT_HELPER", "arpsim-import", ARPSIM_IMPORT_HELPER_BUILT);
+#else
+  return companion_file("ARPSIM_IMPORT_HELPER", "arpsim-import", nullptr);
 #endif
-  return "";
 }
 
 // Resident memory of a process, bytes (0 once it is gone).
