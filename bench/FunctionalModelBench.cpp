@@ -17,23 +17,14 @@
 
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
+#include "BenchInputs.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
 namespace {
 
 using namespace arp;
-
-constexpr double kCompulsoryBytesPerPixel = 16.0;
-
-// A head turning at 200 deg/s, sampled at 1 kHz, over the benchmarked frame.
-dp::OrientationStream turning_head() {
-  std::vector<dp::OrientationSample> s;
-  for (int i = 0; i <= 40; ++i) {
-    const double t = i * 1e-3;
-    s.push_back({static_cast<int64_t>(t * 1e12), dp::from_yaw_pitch_roll_deg(20.0 + 200.0 * t, 10.0, 5.0)});
-  }
-  return dp::OrientationStream(s, "benchmark");
-}
+using bench::kCompulsoryBytesPerPixel;
+using bench::turning_head;
 
 struct Fixture {
   dp::ArpConfig cfg;
@@ -84,19 +75,18 @@ BENCHMARK(BM_FunctionalFrame)
 // counted as STREAM does (read + write).
 void BM_StreamCopy(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
-  const size_t n = size_t{64} << 20;  // 64 Mi doubles = 512 MiB per array
   static std::vector<double> a, b;
-  if (a.size() != n) {
-    a.assign(n, 1.0);
-    b.assign(n, 2.0);
+  if (a.empty()) {
+    a.assign(bench::kStreamDoubles, 1.0);
+    b.assign(bench::kStreamDoubles, 2.0);
   }
+  int64_t bytes = 0;
   for (auto _ : state) {
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (int64_t i = 0; i < static_cast<int64_t>(n); ++i) a[static_cast<size_t>(i)] = b[static_cast<size_t>(i)];
+    bytes += bench::stream_copy(a, b, threads);
     benchmark::DoNotOptimize(a.data());
     benchmark::ClobberMemory();
   }
-  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(2 * n * sizeof(double)));
+  state.SetBytesProcessed(bytes);
 }
 BENCHMARK(BM_StreamCopy)->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 

@@ -14,6 +14,7 @@ PKGS=(
   libsystemc-dev
   libassimp-dev assimp-testmodels glmark2-data gnuplot-nox
   verilator yosys
+  libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   "$@"
 )
 missing=()

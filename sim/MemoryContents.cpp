@@ -12,13 +12,14 @@
 #include "host/cubemap/CubeMapLoader.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/motion/WalkPath.hpp"
-#include "host/render/CubeFaceRenderer.hpp"
+#include "BankRenderer.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
 
 namespace arp::sim {
 
 void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const {
+  check_renderer(*this);
   if (scene.empty()) {
     if (!position.empty()) throw InputError("--position", "", "only with --scene");
     host::load_into_memories(mem, 0, load(mem.format().face_size, source), host::far_depth(mem.format()));
@@ -39,10 +40,10 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
                                                     " m, the farthest a view is supported (docs/accuracy.md)");
   }
   const glm::dquat q(head.w, head.x, head.y, head.z);
-  const host::CubeFaceRenderer renderer;
+  const auto render = make_bank_renderer(renderer);
   for (int e = 0; e < mem.eyes(); ++e) {
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
-    renderer.render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank);
+    render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank, nullptr);
     bank.vblank();
   }
   source = "scene " + sc.name + " (" + std::to_string(sc.objects.size()) + " objects, " +

@@ -17,6 +17,7 @@ struct MemoryContents {
   std::string position;                // --scene: head position x,y,z (default: the gallery walk's start)
   double time_s = 0.0;                 // --scene: animation time
   double ipd_m = 0.064;                // distance between the eyes
+  std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
 
   // The cube map chosen, at face size S; `source` names it for messages.
   host::CubeMapImages load(int face_size, std::string& source) const;

@@ -1,5 +1,7 @@
 #include "Session.hpp"
 
+#include "BankRenderer.hpp"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -82,6 +84,9 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
   if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
+  check_renderer(s.memories);
+  if (h.warp && s.memories.renderer != "software")
+    throw InputError("--renderer", s.memories.renderer, "region warping (--warp) moves vertices on the CPU: it needs --renderer software");
   if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);
   check_output_paths({{"--report", o.report}, {"--csv", o.csv}, {"--host-csv", o.host_csv}, {"--tear-image", o.tear_image},
                       {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
@@ -265,10 +270,12 @@ void Session::build_memories() {
     if (!(h.warp_falloff >= 0) || h.warp_falloff > h.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
     host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : h.region_size / 2);
   }
+  if (spec_.memories.renderer != "software") host_->use_renderer(make_bank_renderer(spec_.memories.renderer));
   host_->prime(seconds_of(start_ps_));
   memory_source_ = "scene " + scene_->name + " (" + std::to_string(scene_->objects.size()) + " objects, " +
                    std::to_string(scene_->triangles()) + " triangles), host rendering " +
-                   (h.baseline ? "everything every frame (baseline)" : "by priority");
+                   (h.baseline ? "everything every frame (baseline)" : "by priority") +
+                   (spec_.memories.renderer == "software" ? "" : ", " + spec_.memories.renderer + " renderer");
 }
 
 // Live: before each frame, take what the device has sent until the frame's

@@ -72,6 +72,10 @@ void add_memory_options(CLI::App& cmd, sim::MemoryContents& m) {
   g->require_option(0, 1);
   cmd.add_option("--position", m.position, "--scene: head position x,y,z in metres (default: the gallery walk's start)");
   cmd.add_option("--time", m.time_s, "--scene: scene time in seconds (animations)")->capture_default_str();
+  cmd.add_option("--renderer", m.renderer,
+                 "--scene: draw with 'software' (the deterministic reference) or 'gl' (OpenGL through EGL: the GPU, or "
+                 "Mesa's llvmpipe without one; docs/performance.md)")
+      ->capture_default_str();
   cmd.add_option("--ipd", m.ipd_m, "--scene: distance between the eyes, metres")->capture_default_str();
 }
 

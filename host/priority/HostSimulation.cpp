@@ -70,7 +70,7 @@ void HostSimulation::prime(double t) {
         bank.commit();
         for (auto& f : ids) f.object.clear();
       } else {
-        renderer_.render(scene_, objs, t, eye, bank, &ids);
+        bank_renderer_ ? bank_renderer_(scene_, objs, t, eye, bank, &ids) : renderer_.render(scene_, objs, t, eye, bank, &ids);
       }
       bank.vblank();
       from_[static_cast<size_t>(m * 2 + e)] = eye;
@@ -176,7 +176,8 @@ void HostSimulation::before_frame(int64_t f, double t) {
         };
         st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids, &warp);
       } else {
-        st = renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids);
+        st = bank_renderer_ ? bank_renderer_(scene_, objs, start, eye, mem_.bank(e, m), &ids)
+                            : renderer_.render(scene_, objs, start, eye, mem_.bank(e, m), &ids);
       }
       sum.objects += st.objects;
       sum.triangles += st.triangles;

@@ -37,6 +37,12 @@ class HostSimulation {
                  std::function<glm::dquat(double)> head, dp::DisplayMemorySet& mem, double ipd_m,
                  double display_hz);
 
+  // Draws objects into a bank as CubeFaceRenderer::render does (no vertex warp): how another
+  // renderer (OpenGL, sim/Session) replaces the software one. Region warping needs the software one.
+  using BankRenderer = std::function<RenderStats(const Scene&, const std::vector<size_t>&, double, const glm::dvec3&,
+                                                 dp::DisplayMemoryBank&, std::vector<FaceImage>*)>;
+  void use_renderer(BankRenderer r) { bank_renderer_ = std::move(r); }
+
   // Region priority rendering instead of object-level: each object of the
   // (segmented) scene belongs to `object_region[i]`, whose memory the region
   // scheduler decides; memories update on need; a re-assignment re-renders
@@ -91,6 +97,7 @@ class HostSimulation {
   double ipd_, display_hz_;
   bool baseline_;
   CubeFaceRenderer renderer_;
+  BankRenderer bank_renderer_;  // empty: renderer_
   std::vector<MemoryLoad> load_;
   std::vector<PendingImage> pending_;
   std::vector<glm::dvec3> from_, pending_from_;

@@ -1,5 +1,7 @@
 #include "CubeFaceRenderer.hpp"
 
+#include "FaceFrustum.hpp"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
@@ -9,20 +11,6 @@
 namespace arp::host {
 
 namespace {
-
-// Face f's frame: texel (x, y) centre looks along fwd + sc a + tc b, with
-// sc = 2 (x + 1/2) / S - 1 (memory_texel_direction, inverted).
-struct FaceFrame {
-  glm::dvec3 fwd, a, b;
-};
-const FaceFrame kFaces[6] = {
-    {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}},   // +X
-    {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}},   // -X
-    {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}},     // +Y
-    {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}},   // -Y
-    {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}},    // +Z
-    {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}},  // -Z
-};
 
 struct ClipVertex {
   double u, v, w;
@@ -140,16 +128,6 @@ void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled,
   }
 }
 
-// Can a sphere (centre relative to the eye) reach face f's frustum?
-bool sphere_meets_face(const glm::dvec3& c, double r, int f, double near) {
-  const FaceFrame& F = kFaces[f];
-  const double k = 1.0 / std::sqrt(2.0);
-  if (glm::dot(c, F.fwd) < near - r) return false;
-  for (const glm::dvec3& side : {F.a, -F.a, F.b, -F.b})
-    if (glm::dot(c, (F.fwd - side) * k) < -r) return false;
-  return true;
-}
-
 }  // namespace
 
 void FaceImage::reset(int s) {
@@ -201,7 +179,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     }
     img.reset(S);
     ++st.faces_rendered;
-    const FaceFrame& F = kFaces[f];
+    const FaceFrame& F = face_frames()[static_cast<size_t>(f)];
     for (size_t i : per_face[static_cast<size_t>(f)]) {
       const SceneObject& o = scene.objects[i];
       const Mesh& m = *o.mesh;
