@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <random>
+#include <vector>
+
 #include <stdexcept>
 
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
@@ -98,6 +101,58 @@ TEST(DisplayMemoryBank, ApronsMirrorTheNeighbouringTilesWhicheverIsWrittenFirst)
     EXPECT_EQ(texel_color(tile[DisplayMemoryBank::tile_word(32, 32)]), 3000u);
     EXPECT_EQ(texel_color(b.read(1, 40, 40)), 5u);
   }
+}
+
+// write_face against write(): sparse random faces (isolated texels, tile borders, a patch across a corner)
+// over a buffer already holding texels, at a face size that is and one that is not a multiple of the tile.
+// Every stored word, aprons included, and the tile count must agree.
+TEST(DisplayMemoryBank, AWholeFaceIsWrittenAsTexelByTexel) {
+  for (int S : {128, 100}) {
+    MemoryConfig mc;
+    mc.face_size = S;
+    const MemoryFormat fmt(mc);
+    DisplayMemoryBank by_texel(fmt), by_face(fmt);
+    std::mt19937 rng(static_cast<unsigned>(S));
+    std::vector<uint64_t> words(static_cast<size_t>(S) * static_cast<size_t>(S), fmt.empty_word());
+    for (int i = 0; i < 300; ++i) {
+      const int x = static_cast<int>(rng() % static_cast<unsigned>(S)), y = static_cast<int>(rng() % static_cast<unsigned>(S));
+      words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{rng() % 60000u} << 32) | (rng() & 0xFFFFFFu);
+    }
+    for (int y = 60; y < 70; ++y)  // across the corner of four tiles
+      for (int x = 60; x < 70; ++x) words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{9} << 32) | 0x10203;
+    words[static_cast<size_t>(32) * static_cast<size_t>(S) + 32] = (uint64_t{4} << 32) | 7;  // a tile's (0, 0) only
+    for (DisplayMemoryBank* b : {&by_texel, &by_face}) {
+      b->write(3, 5, 5, 0x111111, 100);  // already there: another face, and this face
+      b->write(2, 31, 31, 0x222222, 200);
+    }
+    int64_t n = 0;
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        const uint64_t w = words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)];
+        if (w == fmt.empty_word()) continue;
+        by_texel.write(2, x, y, texel_color(w), texel_depth(w));
+        ++n;
+      }
+    EXPECT_EQ(by_face.write_face(2, words.data(), fmt.empty_word()), n);
+    EXPECT_EQ(by_face.tiles_allocated(), by_texel.tiles_allocated()) << S;
+    for (DisplayMemoryBank* b : {&by_texel, &by_face}) {
+      b->commit();
+      b->vblank();
+    }
+    for (int f : {2, 3})
+      for (int t = 0; t < by_face.tiles_per_row() * by_face.tiles_per_row(); ++t) {
+        const int32_t ta = by_texel.front_tile_index(f)[t], tb = by_face.front_tile_index(f)[t];
+        ASSERT_EQ(ta == 0, tb == 0) << "face " << f << " tile " << t;
+        const uint64_t* pa = by_texel.front_pool() + static_cast<size_t>(ta) * DisplayMemoryBank::kTileWords;
+        const uint64_t* pb = by_face.front_pool() + static_cast<size_t>(tb) * DisplayMemoryBank::kTileWords;
+        for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
+      }
+  }
+  DisplayMemoryBank b{MemoryFormat{}};
+  std::vector<uint64_t> wide(512 * 512, MemoryFormat{}.empty_word());
+  wide[7] = uint64_t{1} << 24;  // a 25-bit colour
+  EXPECT_THROW(b.write_face(0, wide.data(), MemoryFormat{}.empty_word()), std::out_of_range);
+  EXPECT_THROW(b.write_face(6, wide.data(), MemoryFormat{}.empty_word()), std::out_of_range);
 }
 
 TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {

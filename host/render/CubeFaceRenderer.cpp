@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -74,8 +76,20 @@ glm::dvec3 sample(const RgbImage& img, glm::dvec2 uv) {
 // A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
 bool top_left(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
 
-void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled, uint32_t object_id,
-            const RgbImage* texture) {
+// The radial factor sqrt(1 + sc^2 + tc^2) of every texel of a face of size S:
+// radial distance = w * factor (the same expression per texel, tabulated).
+std::vector<double> radial_factors(int S) {
+  std::vector<double> f(static_cast<size_t>(S) * static_cast<size_t>(S));
+  for (int y = 0; y < S; ++y)
+    for (int x = 0; x < S; ++x) {
+      const double sc = 2.0 * (x + 0.5) / S - 1.0, tc = 2.0 * (y + 0.5) / S - 1.0;
+      f[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = std::sqrt(1.0 + sc * sc + tc * tc);
+    }
+  return f;
+}
+
+void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, const double* radial, int64_t& filled,
+            uint32_t object_id, const RgbImage* texture) {
   int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
   if (area == 0) return;
   if (area < 0) {  // one winding for the edge tests; both are drawn
@@ -88,36 +102,38 @@ void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, int64_t& filled,
   const int64_t miny = std::max<int64_t>(0, (std::min({v0.y, v1.y, v2.y}) - 128) >> 8);
   const int64_t maxy = std::min<int64_t>(S - 1, (std::max({v0.y, v1.y, v2.y}) + 127) >> 8);
   // Edge e_i is opposite vertex i: e0 = v1 -> v2, e1 = v2 -> v0, e2 = v0 -> v1.
+  // e_i(x, y) = ex_i (py - a_i.y) - ey_i (px - a_i.x), exact in 64 bits; one texel
+  // to the right subtracts ey_i * 256 (incremental, still exact).
   const Snapped* p[3] = {&v0, &v1, &v2};
-  int64_t ex[3], ey[3];
-  bool incl[3];
+  int64_t ex[3], ey[3], step[3];
+  int64_t bias[3];  // 0 for a top-left edge (e == 0 is inside), 1 otherwise: inside iff e >= bias
   for (int i = 0; i < 3; ++i) {
     const Snapped& a = *p[(i + 1) % 3];
     const Snapped& b = *p[(i + 2) % 3];
     ex[i] = b.x - a.x;
     ey[i] = b.y - a.y;
-    incl[i] = top_left(ex[i], ey[i]);
+    step[i] = ey[i] * 256;
+    bias[i] = top_left(ex[i], ey[i]) ? 0 : 1;
   }
   const double inv_area = 1.0 / static_cast<double>(area);
+  const bool count_hits = !img.hits.empty();
   for (int64_t y = miny; y <= maxy; ++y) {
-    const int64_t py = (y << 8) + 128;
-    for (int64_t x = minx; x <= maxx; ++x) {
-      const int64_t px = (x << 8) + 128;
-      int64_t e[3];
-      bool in = true;
-      for (int i = 0; i < 3 && in; ++i) {
-        const Snapped& a = *p[(i + 1) % 3];
-        e[i] = ex[i] * (py - a.y) - ey[i] * (px - a.x);
-        in = e[i] > 0 || (e[i] == 0 && incl[i]);
-      }
-      if (!in) continue;
-      if (!img.hits.empty()) ++img.hits[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)];
-      const double l0 = e[0] * inv_area, l1 = e[1] * inv_area, l2 = e[2] * inv_area;
+    const int64_t py = (y << 8) + 128, px0 = (minx << 8) + 128;
+    int64_t e[3];
+    for (int i = 0; i < 3; ++i) {
+      const Snapped& a = *p[(i + 1) % 3];
+      e[i] = ex[i] * (py - a.y) - ey[i] * (px0 - a.x);
+    }
+    const size_t row = static_cast<size_t>(y) * static_cast<size_t>(S);
+    for (int64_t x = minx; x <= maxx; ++x, e[0] -= step[0], e[1] -= step[1], e[2] -= step[2]) {
+      if (e[0] < bias[0] || e[1] < bias[1] || e[2] < bias[2]) continue;
+      const size_t k = row + static_cast<size_t>(x);
+      if (count_hits) ++img.hits[k];
+      const double l0 = static_cast<double>(e[0]) * inv_area, l1 = static_cast<double>(e[1]) * inv_area,
+                   l2 = static_cast<double>(e[2]) * inv_area;
       const double inv_w = l0 * v0.inv_w + l1 * v1.inv_w + l2 * v2.inv_w;
       const double w = 1.0 / inv_w;
-      const double sc = 2.0 * (x + 0.5) / S - 1.0, tc = 2.0 * (y + 0.5) / S - 1.0;
-      const double r = w * std::sqrt(1.0 + sc * sc + tc * tc);
-      const size_t k = static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x);
+      const double r = w * radial[k];
       if (!(r < img.distance[k])) continue;
       img.distance[k] = r;
       img.color[k] = (l0 * v0.color_over_w + l1 * v1.color_over_w + l2 * v2.color_over_w) * w;
@@ -153,6 +169,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
   // Per face, the objects whose bound reaches it (drawn in scene order: deterministic ties).
   std::vector<std::vector<size_t>> per_face(6);
   std::vector<glm::dmat4> model(scene.objects.size());
+  std::vector<char> drawn(scene.objects.size(), 0);
   for (size_t i : *list) {
     const SceneObject& o = scene.objects[i];
     model[i] = o.model_at(t);
@@ -163,10 +180,34 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         per_face[static_cast<size_t>(f)].push_back(i);
         any = true;
       }
+    drawn[i] = any ? 1 : 0;
     st.objects += any ? 1 : 0;
   }
-  std::vector<ClipVertex> poly, tmp;
-  std::vector<glm::dvec3> world, normal;
+  // Each drawn object's vertices in the world (warped) and its normals, once for all the faces it reaches.
+  struct Placed {
+    std::vector<glm::dvec3> world, normal;
+  };
+  std::vector<Placed> placed(scene.objects.size());
+  for (size_t i : *list) {
+    const SceneObject& o = scene.objects[i];
+    const Mesh& m = *o.mesh;
+    if (!drawn[i]) continue;
+    Placed& pl = placed[i];
+    pl.world.resize(m.positions.size());
+    for (size_t k = 0; k < m.positions.size(); ++k) pl.world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
+    if (warp)
+      for (auto& w : pl.world) w = (*warp)(i, w);
+    if (o.material.smooth && !m.normals.empty()) {
+      const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
+      pl.normal.resize(m.normals.size());
+      for (size_t k = 0; k < m.normals.size(); ++k) pl.normal[k] = glm::normalize(nmat * m.normals[k]);
+    }
+  }
+  const std::vector<double> radial = radial_factors(S);
+  // The faces are independent: one thread each (dynamic: their loads differ), the same bits on any count.
+  int64_t triangles = 0, filled = 0, rendered = 0;
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : triangles, filled, rendered)
   for (int f = 0; f < 6; ++f) {
     FaceImage& img = faces[static_cast<size_t>(f)];
     if (per_face[static_cast<size_t>(f)].empty()) {  // nothing reaches it: no storage, nothing drawn
@@ -178,23 +219,18 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       continue;
     }
     img.reset(S);
-    ++st.faces_rendered;
+    ++rendered;
     const FaceFrame& F = face_frames()[static_cast<size_t>(f)];
+    std::vector<ClipVertex> poly, tmp;
+    std::vector<Snapped> sn;
     for (size_t i : per_face[static_cast<size_t>(f)]) {
       const SceneObject& o = scene.objects[i];
       const Mesh& m = *o.mesh;
-      st.triangles += static_cast<int64_t>(m.triangles());  // submitted to this face
-      const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
-      world.resize(m.positions.size());
-      for (size_t k = 0; k < m.positions.size(); ++k) world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
-      if (warp)
-        for (auto& w : world) w = (*warp)(i, w);
-      const bool smooth = o.material.smooth && !m.normals.empty();
+      triangles += static_cast<int64_t>(m.triangles());  // submitted to this face
+      const std::vector<glm::dvec3>& world = placed[i].world;
+      const std::vector<glm::dvec3>& normal = placed[i].normal;
+      const bool smooth = !normal.empty();
       const RgbImage* texture = o.material.texture && !m.uvs.empty() ? o.material.texture.get() : nullptr;
-      if (smooth) {
-        normal.resize(m.normals.size());
-        for (size_t k = 0; k < m.normals.size(); ++k) normal[k] = glm::normalize(nmat * m.normals[k]);
-      }
       auto shade = [&](const glm::dvec3& n) {
         return o.material.color * (light_.ambient + light_.diffuse * std::abs(glm::dot(n, light_.direction)));
       };
@@ -203,7 +239,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         const glm::dvec3 fn = glm::cross(world[id[1]] - world[id[0]], world[id[2]] - world[id[0]]);
         const double fl = glm::length(fn);
         if (!(fl > 0)) continue;  // degenerate in world space
-        const glm::dvec3 flat = shade(fn / fl);
+        const glm::dvec3 flat = smooth ? glm::dvec3(0.0) : shade(fn / fl);
         poly.clear();
         for (uint32_t k : id) {
           const glm::dvec3 d = world[k] - eye;
@@ -212,17 +248,19 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         }
         clip(poly, tmp, depth_.near_m);
         if (poly.size() < 3) continue;
-        std::vector<Snapped> sn;
-        sn.reserve(poly.size());
+        sn.clear();
         for (const ClipVertex& c : poly) {
           const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
           sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w, c.uv / c.w});
         }
         for (size_t k = 1; k + 1 < sn.size(); ++k)
-          raster(sn[0], sn[k], sn[k + 1], img, st.texels_filled, static_cast<uint32_t>(i + 1), texture);
+          raster(sn[0], sn[k], sn[k + 1], img, radial.data(), filled, static_cast<uint32_t>(i + 1), texture);
       }
     }
   }
+  st.triangles = triangles;
+  st.texels_filled = filled;
+  st.faces_rendered = static_cast<int>(rendered);
   return st;
 }
 
@@ -255,25 +293,42 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
                                      const glm::dvec3& eye, dp::DisplayMemoryBank& bank,
                                      std::vector<FaceImage>* visible, const VertexWarp* warp) const {
   const dp::MemoryFormat& fmt = bank.format();
-  std::vector<FaceImage> faces;
+  // Per thread, reused: at 512^2 the six float faces are ~56 MB, allocated and zeroed afresh on every render otherwise.
+  // (Named through references: inside the parallel region a thread_local name is each worker's own.)
+  thread_local std::vector<FaceImage> faces_of_thread;
+  thread_local std::vector<uint64_t> words_of_thread;
+  std::vector<FaceImage>& faces = faces_of_thread;
+  std::vector<uint64_t>& words = words_of_thread;
   RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces, warp);
   DepthCode dc = depth_;
   dc.bits = fmt.depth_bits;
-  bank.clear_back();
+  // Colour and depth code per texel, face by face in parallel (a logarithm and three roundings each); then
+  // each face stored whole (DisplayMemoryBank::write_face).
+  const int S = fmt.face_size;
+  const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
+  words.resize(6 * n);
+  const uint64_t empty = fmt.empty_word();
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int f = 0; f < 6; ++f) {
     const FaceImage& img = faces[static_cast<size_t>(f)];
+    uint64_t* out = words.data() + static_cast<size_t>(f) * n;
     if (img.distance.empty()) continue;
-    for (int y = 0; y < img.size; ++y)
-      for (int x = 0; x < img.size; ++x) {
-        const size_t k = static_cast<size_t>(y) * static_cast<size_t>(img.size) + static_cast<size_t>(x);
-        if (!std::isfinite(img.distance[k])) continue;
-        const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
-        bank.write(f, x, y, fmt.pack_rgb8(static_cast<int>(std::lround(c.r)), static_cast<int>(std::lround(c.g)),
-                                          static_cast<int>(std::lround(c.b))),
-                   dc.code(img.distance[k]));
-        ++st.texels_written;
+    for (size_t k = 0; k < n; ++k) {
+      if (!std::isfinite(img.distance[k])) {
+        out[k] = empty;
+        continue;
       }
+      const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
+      out[k] = (uint64_t{dc.code(img.distance[k])} << 32) |
+               fmt.pack_rgb8(static_cast<int>(std::lround(c.r)), static_cast<int>(std::lround(c.g)),
+                             static_cast<int>(std::lround(c.b)));
+    }
   }
+  bank.clear_back();
+  for (int f = 0; f < 6; ++f)
+    if (!faces[static_cast<size_t>(f)].distance.empty())
+      st.texels_written += bank.write_face(f, words.data() + static_cast<size_t>(f) * n, empty);
   bank.commit();
   if (visible) {
     visible->resize(6);

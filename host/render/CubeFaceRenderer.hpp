@@ -16,7 +16,8 @@
 //   (the first drawn on an exact tie); stored as a DepthCode.
 // - Shading: a fixed light; flat (the triangle's normal) or Gouraud (vertex
 //   normals, perspective-correct), colour quantised by the memory's format.
-// Results are deterministic: doubles without fast-math, a fixed order.
+// Results are deterministic: doubles without fast-math, a fixed order within
+// each face, and faces drawn independently (in parallel: set_threads).
 // A face no object's bounding sphere can reach is not rendered at all.
 #pragma once
 #include <cstdint>
@@ -75,10 +76,13 @@ class CubeFaceRenderer {
   RenderStats count(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye) const;
 
   const DepthCode& depth() const { return depth_; }
+  // Threads drawing faces (one face each) and storing them: 0, every hardware thread. Any count gives the same bits.
+  void set_threads(int n) { threads_ = n; }
 
  private:
   DepthCode depth_;
   LightModel light_;
+  int threads_ = 0;
 };
 
 }  // namespace arp::host

@@ -72,6 +72,37 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   if (lx == 0 && ly == 0 && tx > 0 && ty > 0) put(face, tx - 1, ty - 1, kTile, kTile, word);
 }
 
+int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t skip) {
+  const int S = fmt_.face_size;
+  if (face < 0 || face >= 6) throw std::out_of_range("display memory write outside the cube: face " + std::to_string(face));
+  const uint64_t color_mask = fmt_.color_bits_total() < 32 ? ~((uint64_t{1} << fmt_.color_bits_total()) - 1) & 0xFFFFFFFFu : 0;
+  const uint64_t depth_mask = fmt_.depth_bits < 32 ? ~((uint64_t{1} << fmt_.depth_bits) - 1) & 0xFFFFFFFFu : 0;
+  int64_t written = 0;
+  for (size_t k = 0; k < static_cast<size_t>(S) * static_cast<size_t>(S); ++k) {
+    if (words[k] == skip) continue;
+    if ((words[k] & color_mask) != 0) throw std::out_of_range("colour code wider than the memory's colour format");
+    if (((words[k] >> 32) & depth_mask) != 0) throw std::out_of_range("depth code wider than the memory's depth format");
+    ++written;
+  }
+  // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
+  // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
+  for (int ty = 0; ty < tiles_per_row_; ++ty)
+    for (int tx = 0; tx < tiles_per_row_; ++tx) {
+      const int x0 = tx * kTile, y0 = ty * kTile;
+      const int w = std::min(kTile + 1, S - x0), h = std::min(kTile + 1, S - y0);
+      int32_t tile = -1;
+      for (int ly = 0; ly < h; ++ly) {
+        const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
+        for (int lx = 0; lx < w; ++lx) {
+          if (row[lx] == skip) continue;
+          if (tile < 0) tile = back_tile(face, tx, ty);
+          buffers_[back_].pool[static_cast<size_t>(tile) * kTileWords + static_cast<size_t>(tile_word(lx, ly))] = row[lx];
+        }
+      }
+    }
+  return written;
+}
+
 void DisplayMemoryBank::clear_back() {
   Buffer& b = buffers_[back_];
   for (auto& t : b.index) std::vector<int32_t>().swap(t);

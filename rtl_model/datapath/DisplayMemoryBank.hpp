@@ -59,6 +59,10 @@ class DisplayMemoryBank {
   // Host port (back buffer). Coordinates and codes are checked: out of range throws std::out_of_range.
   void write(int face, int x, int y, uint32_t color, uint32_t depth);
   uint64_t read_back(int face, int x, int y) const { return fetch(back_, face, x, y); }
+  // A whole face at once (S x S words, row-major): every word but those equal to `skip` written as write()
+  // would, texel by texel -- the same tiles allocated, the same aprons -- a tile at a time. Returns the
+  // words written; std::out_of_range as write() for a bad face or a code wider than the format.
+  int64_t write_face(int face, const uint64_t* words, uint64_t skip);
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }

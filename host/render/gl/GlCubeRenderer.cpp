@@ -345,28 +345,35 @@ RenderStats GlCubeRenderer::render(const Scene& scene, const std::vector<size_t>
   const int S = fmt.face_size;
   RenderStats st = draw(scene, objects, t, eye, S, fmt.depth_bits);
   const Gl& g = *gl_;
+  // As the software renderer stores: words per texel in parallel, then a face at a time into the bank.
+  // Window row y is memory row y (the face's clip space maps texel rows upward).
+  const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
+  words_.resize(6 * n);
+  const uint64_t empty = fmt.empty_word();
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int f = 0; f < 6; ++f) {
+    if (!g.drawn[f]) continue;
+    uint64_t* out = words_.data() + static_cast<size_t>(f) * n;
+    const uint32_t* code = g.code[f].data();
+    const uint8_t* color = g.color[f].data();
+    for (size_t k = 0; k < n; ++k)
+      out[k] = code[2 * k] == kNoCode ? empty
+                                      : (uint64_t{code[2 * k]} << 32) | fmt.pack_rgb8(color[4 * k], color[4 * k + 1], color[4 * k + 2]);
+  }
   bank.clear_back();
   if (visible) visible->assign(6, FaceImage{});
   for (int f = 0; f < 6; ++f) {
     if (visible) (*visible)[static_cast<size_t>(f)].size = S;
     if (!g.drawn[f]) continue;
-    // Window row y is memory row y (the face's clip space maps texel rows upward).
     std::vector<uint32_t>* ids = nullptr;
     if (visible) {
       ids = &(*visible)[static_cast<size_t>(f)].object;
-      ids->assign(static_cast<size_t>(S) * static_cast<size_t>(S), 0);
+      ids->assign(n, 0);
     }
-    const uint32_t* code = g.code[f].data();
-    const uint8_t* color = g.color[f].data();
-    for (int y = 0; y < S; ++y)
-      for (int x = 0; x < S; ++x) {
-        const size_t k = static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x);
-        if (code[2 * k] == kNoCode) continue;
-        const uint8_t* c = &color[4 * k];
-        bank.write(f, x, y, fmt.pack_rgb8(c[0], c[1], c[2]), code[2 * k]);
-        if (ids) (*ids)[k] = code[2 * k + 1];
-        ++st.texels_written;
-      }
+    const uint64_t* in = words_.data() + static_cast<size_t>(f) * n;
+    st.texels_written += bank.write_face(f, in, empty);
+    if (ids)
+      for (size_t k = 0; k < n; ++k) (*ids)[k] = in[k] == empty ? 0u : g.code[f][2 * k + 1];
   }
   bank.commit();
   return st;

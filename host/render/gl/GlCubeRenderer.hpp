@@ -47,6 +47,7 @@ class GlCubeRenderer {
   DepthCode depth_;
   LightModel light_;
   std::unique_ptr<Gl> gl_;
+  std::vector<uint64_t> words_;  // the six faces' texel words, stored into the bank after the readback
 };
 
 }  // namespace arp::host
