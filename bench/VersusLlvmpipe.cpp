@@ -200,6 +200,7 @@ int main(int argc, char** argv) {
         eo.software = true;
         eo.threads = th;
         host::GlCubeRenderer gl(host::DepthCode{}, host::LightModel{}, eo);
+        gl.set_threads(th == 0 ? 1 : 2);  // its store into the memory: one core, or two
         renderer = gl.context().renderer() + ", OpenGL " + gl.context().version();
         if (!gl.context().is_llvmpipe()) throw std::runtime_error("not llvmpipe: " + renderer);
         if (cube) {

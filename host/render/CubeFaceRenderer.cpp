@@ -73,6 +73,14 @@ glm::dvec3 sample(const RgbImage& img, glm::dvec2 uv) {
   return (at(ix, iy) * (1 - ax) + at(ix + 1, iy) * ax) * (1 - ay) + (at(ix, iy + 1) * (1 - ax) + at(ix + 1, iy + 1) * ax) * ay;
 }
 
+// std::lround of a channel value 0 .. 255 (halves away from zero), without the library call: c - r is
+// exact for 0 <= r <= c < r + 1. A NaN (never produced) reads as 0.
+int round_channel(double c) {
+  if (!(c >= 0.0)) return 0;
+  const int r = static_cast<int>(c);
+  return r + (c - r >= 0.5 ? 1 : 0);
+}
+
 // A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
 bool top_left(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
 
@@ -183,9 +191,12 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     drawn[i] = any ? 1 : 0;
     st.objects += any ? 1 : 0;
   }
-  // Each drawn object's vertices in the world (warped) and its normals, once for all the faces it reaches.
+  auto shade = [&](const glm::dvec3& color, const glm::dvec3& n) {
+    return color * (light_.ambient + light_.diffuse * std::abs(glm::dot(n, light_.direction)));
+  };
+  // Each drawn object's vertices in the world (warped) and their shades, once for all the faces it reaches.
   struct Placed {
-    std::vector<glm::dvec3> world, normal;
+    std::vector<glm::dvec3> world, shade;  // shade: the lit colour per vertex (Gouraud), empty when flat
   };
   std::vector<Placed> placed(scene.objects.size());
   for (size_t i : *list) {
@@ -199,8 +210,8 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       for (auto& w : pl.world) w = (*warp)(i, w);
     if (o.material.smooth && !m.normals.empty()) {
       const glm::dmat3 nmat = glm::inverseTranspose(glm::dmat3(model[i]));
-      pl.normal.resize(m.normals.size());
-      for (size_t k = 0; k < m.normals.size(); ++k) pl.normal[k] = glm::normalize(nmat * m.normals[k]);
+      pl.shade.resize(m.normals.size());
+      for (size_t k = 0; k < m.normals.size(); ++k) pl.shade[k] = shade(o.material.color, glm::normalize(nmat * m.normals[k]));
     }
   }
   const std::vector<double> radial = radial_factors(S);
@@ -223,35 +234,62 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     const FaceFrame& F = face_frames()[static_cast<size_t>(f)];
     std::vector<ClipVertex> poly, tmp;
     std::vector<Snapped> sn;
+    // Each vertex on this face once: its face coordinates, whether it is inside all five clip planes, and
+    // then its snapped position. A triangle with three inside vertices needs no clipping (the clipper
+    // would return it unchanged) and takes its vertices from here.
+    struct OnFace {
+      double u, v, w;
+      int64_t x, y;
+      bool inside;
+    };
+    std::vector<OnFace> on;
+    const double near = depth_.near_m;
     for (size_t i : per_face[static_cast<size_t>(f)]) {
       const SceneObject& o = scene.objects[i];
       const Mesh& m = *o.mesh;
       triangles += static_cast<int64_t>(m.triangles());  // submitted to this face
       const std::vector<glm::dvec3>& world = placed[i].world;
-      const std::vector<glm::dvec3>& normal = placed[i].normal;
-      const bool smooth = !normal.empty();
+      const std::vector<glm::dvec3>& vshade = placed[i].shade;
+      const bool smooth = !vshade.empty();
       const RgbImage* texture = o.material.texture && !m.uvs.empty() ? o.material.texture.get() : nullptr;
-      auto shade = [&](const glm::dvec3& n) {
-        return o.material.color * (light_.ambient + light_.diffuse * std::abs(glm::dot(n, light_.direction)));
-      };
+      on.resize(world.size());
+      for (size_t k = 0; k < world.size(); ++k) {
+        const glm::dvec3 d = world[k] - eye;
+        OnFace& p = on[k];
+        p.u = glm::dot(d, F.a);
+        p.v = glm::dot(d, F.b);
+        p.w = glm::dot(d, F.fwd);
+        p.inside = p.w - near >= 0 && p.w - p.u >= 0 && p.w + p.u >= 0 && p.w - p.v >= 0 && p.w + p.v >= 0;
+        if (p.inside) {
+          const double X = (p.u / p.w + 1.0) * 0.5 * S, Y = (p.v / p.w + 1.0) * 0.5 * S;
+          p.x = std::llround(X * 256.0);
+          p.y = std::llround(Y * 256.0);
+        }
+      }
       for (size_t t3 = 0; t3 + 2 < m.indices.size(); t3 += 3) {
         const uint32_t id[3] = {m.indices[t3], m.indices[t3 + 1], m.indices[t3 + 2]};
         const glm::dvec3 fn = glm::cross(world[id[1]] - world[id[0]], world[id[2]] - world[id[0]]);
         const double fl = glm::length(fn);
         if (!(fl > 0)) continue;  // degenerate in world space
-        const glm::dvec3 flat = smooth ? glm::dvec3(0.0) : shade(fn / fl);
-        poly.clear();
-        for (uint32_t k : id) {
-          const glm::dvec3 d = world[k] - eye;
-          poly.push_back({glm::dot(d, F.a), glm::dot(d, F.b), glm::dot(d, F.fwd), smooth ? shade(normal[k]) : flat,
-                          texture ? m.uvs[k] : glm::dvec2(0.0)});
-        }
-        clip(poly, tmp, depth_.near_m);
-        if (poly.size() < 3) continue;
+        const glm::dvec3 flat = smooth ? glm::dvec3(0.0) : shade(o.material.color, fn / fl);
         sn.clear();
-        for (const ClipVertex& c : poly) {
-          const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
-          sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w, c.uv / c.w});
+        if (on[id[0]].inside && on[id[1]].inside && on[id[2]].inside) {
+          for (uint32_t k : id) {
+            const OnFace& p = on[k];
+            const glm::dvec3 c = smooth ? vshade[k] : flat;
+            const glm::dvec2 uv = texture ? m.uvs[k] : glm::dvec2(0.0);
+            sn.push_back({p.x, p.y, 1.0 / p.w, c / p.w, uv / p.w});
+          }
+        } else {
+          poly.clear();
+          for (uint32_t k : id)
+            poly.push_back({on[k].u, on[k].v, on[k].w, smooth ? vshade[k] : flat, texture ? m.uvs[k] : glm::dvec2(0.0)});
+          clip(poly, tmp, near);
+          if (poly.size() < 3) continue;
+          for (const ClipVertex& c : poly) {
+            const double X = (c.u / c.w + 1.0) * 0.5 * S, Y = (c.v / c.w + 1.0) * 0.5 * S;
+            sn.push_back({std::llround(X * 256.0), std::llround(Y * 256.0), 1.0 / c.w, c.color / c.w, c.uv / c.w});
+          }
         }
         for (size_t k = 1; k + 1 < sn.size(); ++k)
           raster(sn[0], sn[k], sn[k + 1], img, radial.data(), filled, static_cast<uint32_t>(i + 1), texture);
@@ -308,6 +346,7 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
+  const double log_range = dc.log_range();
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int f = 0; f < 6; ++f) {
@@ -320,9 +359,7 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
         continue;
       }
       const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
-      out[k] = (uint64_t{dc.code(img.distance[k])} << 32) |
-               fmt.pack_rgb8(static_cast<int>(std::lround(c.r)), static_cast<int>(std::lround(c.g)),
-                             static_cast<int>(std::lround(c.b)));
+      out[k] = (uint64_t{dc.code(img.distance[k], log_range)} << 32) | fmt.pack_rgb8(round_channel(c.r), round_channel(c.g), round_channel(c.b));
     }
   }
   bank.clear_back();

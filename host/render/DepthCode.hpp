@@ -15,8 +15,11 @@ struct DepthCode {
   double near_m = 0.05, far_m = 1000.0;
   int bits = 16;
   uint32_t max_code() const { return static_cast<uint32_t>((uint64_t{1} << bits) - 2); }
-  uint32_t code(double distance_m) const {
-    const double t = std::log(std::max(distance_m, near_m) / near_m) / std::log(far_m / near_m);
+  uint32_t code(double distance_m) const { return code(distance_m, log_range()); }
+  // The same with log(far / near) given (a loop over many texels takes it once).
+  double log_range() const { return std::log(far_m / near_m); }
+  uint32_t code(double distance_m, double log_range) const {
+    const double t = std::log(std::max(distance_m, near_m) / near_m) / log_range;
     const double c = std::nearbyint(std::min(t, 1.0) * max_code());
     return static_cast<uint32_t>(c);
   }

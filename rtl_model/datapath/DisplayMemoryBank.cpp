@@ -8,6 +8,7 @@ namespace arp::dp {
 
 uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
   auto q = [](int v8, int bits) {
+    if (bits == 8) return static_cast<uint32_t>(std::clamp(v8, 0, 255));  // (510 v + 255) / 510 = v
     const uint32_t maxc = static_cast<uint32_t>((uint64_t{1} << bits) - 1);
     return static_cast<uint32_t>((static_cast<uint64_t>(std::clamp(v8, 0, 255)) * maxc * 2 + 255) / 510);
   };

@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <omp.h>
+
 #include <cmath>
 #include <map>
 #include <utility>
@@ -350,7 +352,7 @@ RenderStats GlCubeRenderer::render(const Scene& scene, const std::vector<size_t>
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words_.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_ > 0 ? threads_ : omp_get_max_threads())
   for (int f = 0; f < 6; ++f) {
     if (!g.drawn[f]) continue;
     uint64_t* out = words_.data() + static_cast<size_t>(f) * n;

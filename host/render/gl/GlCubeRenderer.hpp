@@ -39,6 +39,10 @@ class GlCubeRenderer {
   RenderStats draw(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
                    int face_size, int depth_bits);
 
+  // Threads converting the read-back faces into memory words (0: every hardware thread), as
+  // CubeFaceRenderer::set_threads; OpenGL's own threads are EglOptions::threads.
+  void set_threads(int n) { threads_ = n; }
+
   const EglContext& context() const;
   const DepthCode& depth() const { return depth_; }
 
@@ -47,7 +51,8 @@ class GlCubeRenderer {
   DepthCode depth_;
   LightModel light_;
   std::unique_ptr<Gl> gl_;
-  std::vector<uint64_t> words_;  // the six faces' texel words, stored into the bank after the readback
+  std::vector<uint64_t> words_;
+  int threads_ = 0;  // the six faces' texel words, stored into the bank after the readback
 };
 
 }  // namespace arp::host
