@@ -35,6 +35,7 @@
 #include "BenchInputs.hpp"
 #include "GlPerPixel.hpp"
 #include "common/AtomicFile.hpp"
+#include "common/ProgressLine.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
@@ -119,6 +120,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
+    for (const std::string& out : {md_path, csv_path})  // a missing folder is found now, not after the run
+      if (!out.empty()) temp_path_beside(out);
     // --- inputs, shared by both sides -----------------------------------
     const host::Scene gallery = host::make_gallery();
     const glm::dvec3 eye = host::gallery_walk().front();
@@ -164,8 +167,7 @@ int main(int argc, char** argv) {
     std::vector<host::FaceImage> soft_visible, gl_visible, faces;
     HmdFrame frame;
     std::vector<uint32_t> rgba;
-    const int total = reps * 3;
-    int step = 0;
+    ProgressLine progress("arp_versus_llvmpipe", true, int64_t{reps} * 4);  // per repetition: arpsim, llvmpipe x 3
     const bool cube = only != "pixel", pixel = only != "cube";
     for (int r = 0; r < reps; ++r) {
       // STREAM, arpsim's renderer (one thread: it has no other), arpsim's functional model.
@@ -191,11 +193,11 @@ int main(int argc, char** argv) {
             arp_px[{bilinear, filled, th}].add(
                 px_per_frame * rate([&] { models[bilinear]->render(*mems[filled], head, 0, frame, ro); }, min_s));
           }
+      progress.step("repetition " + std::to_string(r + 1) + ": arpsim");
       // llvmpipe with 0, 1 and 2 rasteriser threads: a fresh display each (it reads LP_NUM_THREADS when it
       // starts). 0: everything on the calling thread (one core, against arpsim's one thread); 1: a rasteriser
       // beside the calling thread, which transforms and bins (two cores); 2: two rasterisers.
       for (int th : {0, 1, 2}) {
-        std::fprintf(stderr, "\r[%d/%d] repetition %d, LP_NUM_THREADS=%d   ", ++step, total, r + 1, th);
         host::EglOptions eo;
         eo.software = true;
         eo.threads = th;
@@ -225,9 +227,9 @@ int main(int argc, char** argv) {
                 agree_px[{bilinear, filled, arp_threads}] = same_colour(frame, rgba, bilinear ? 2 : 0);
               }
             }
+        progress.step("repetition " + std::to_string(r + 1) + ": llvmpipe, LP_NUM_THREADS=" + std::to_string(th));
       }
     }
-    std::fprintf(stderr, "\r%60s\r", "");
     const double bw = std::max(stream[1].value, stream[2].value);
     const double bound = bw / bench::kCompulsoryBytesPerPixel;
 

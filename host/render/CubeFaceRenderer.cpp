@@ -168,29 +168,10 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
                                            const VertexWarp* warp) const {
   RenderStats st;
   faces.resize(6);
-  std::vector<size_t> all;
-  const std::vector<size_t>* list = &objects;
-  if (objects.empty()) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) all.push_back(i);
-    list = &all;
-  }
-  // Per face, the objects whose bound reaches it (drawn in scene order: deterministic ties).
-  std::vector<std::vector<size_t>> per_face(6);
-  std::vector<glm::dmat4> model(scene.objects.size());
-  std::vector<char> drawn(scene.objects.size(), 0);
-  for (size_t i : *list) {
-    const SceneObject& o = scene.objects[i];
-    model[i] = o.model_at(t);
-    const Sphere b = o.world_bound(t);
-    bool any = false;
-    for (int f = 0; f < 6; ++f)
-      if (sphere_meets_face(b.center - eye, b.radius, f, depth_.near_m)) {
-        per_face[static_cast<size_t>(f)].push_back(i);
-        any = true;
-      }
-    drawn[i] = any ? 1 : 0;
-    st.objects += any ? 1 : 0;
-  }
+  FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m);
+  const auto& per_face = lists.per_face;
+  const auto& model = lists.model;
+  st.objects = lists.objects;
   auto shade = [&](const glm::dvec3& color, const glm::dvec3& n) {
     return color * (light_.ambient + light_.diffuse * std::abs(glm::dot(n, light_.direction)));
   };
@@ -199,10 +180,10 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     std::vector<glm::dvec3> world, shade;  // shade: the lit colour per vertex (Gouraud), empty when flat
   };
   std::vector<Placed> placed(scene.objects.size());
-  for (size_t i : *list) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!lists.drawn[i]) continue;
     const SceneObject& o = scene.objects[i];
     const Mesh& m = *o.mesh;
-    if (!drawn[i]) continue;
     Placed& pl = placed[i];
     pl.world.resize(m.positions.size());
     for (size_t k = 0; k < m.positions.size(); ++k) pl.world[k] = glm::dvec3(model[i] * glm::dvec4(m.positions[k], 1.0));
@@ -304,26 +285,13 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
 
 RenderStats CubeFaceRenderer::count(const Scene& scene, const std::vector<size_t>& objects, double t,
                                     const glm::dvec3& eye) const {
+  const FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m);
   RenderStats st;
-  std::vector<size_t> all;
-  const std::vector<size_t>* list = &objects;
-  if (objects.empty()) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) all.push_back(i);
-    list = &all;
+  st.objects = lists.objects;
+  for (const auto& on_face : lists.per_face) {
+    for (size_t i : on_face) st.triangles += static_cast<int64_t>(scene.objects[i].mesh->triangles());
+    st.faces_rendered += on_face.empty() ? 0 : 1;
   }
-  bool face_used[6] = {};
-  for (size_t i : *list) {
-    const SceneObject& o = scene.objects[i];
-    const Sphere b = o.world_bound(t);
-    bool any = false;
-    for (int f = 0; f < 6; ++f)
-      if (sphere_meets_face(b.center - eye, b.radius, f, depth_.near_m)) {
-        st.triangles += static_cast<int64_t>(o.mesh->triangles());
-        face_used[f] = any = true;
-      }
-    st.objects += any ? 1 : 0;
-  }
-  for (bool u : face_used) st.faces_rendered += u ? 1 : 0;
   return st;
 }
 

@@ -25,4 +25,29 @@ bool sphere_meets_face(const glm::dvec3& c, double r, int f, double near) {
   return true;
 }
 
+FaceLists cull_to_faces(const Scene& scene, const std::vector<size_t>& objects, double t, const glm::dvec3& eye,
+                        double near_m) {
+  FaceLists c;
+  c.model.resize(scene.objects.size());
+  c.drawn.assign(scene.objects.size(), 0);
+  auto one = [&](size_t i) {
+    const SceneObject& o = scene.objects[i];
+    const Sphere b = o.world_bound(t);
+    bool any = false;
+    for (int f = 0; f < 6; ++f)
+      if (sphere_meets_face(b.center - eye, b.radius, f, near_m)) {
+        c.per_face[static_cast<size_t>(f)].push_back(i);
+        any = true;
+      }
+    if (any) c.model[i] = o.model_at(t);
+    c.drawn[i] = any ? 1 : 0;
+    c.objects += any ? 1 : 0;
+  };
+  if (objects.empty())
+    for (size_t i = 0; i < scene.objects.size(); ++i) one(i);
+  else
+    for (size_t i : objects) one(i);
+  return c;
+}
+
 }  // namespace arp::host

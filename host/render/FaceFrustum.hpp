@@ -7,6 +7,10 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
+#include <vector>
+
+#include "host/scene/Scene.hpp"
 
 namespace arp::host {
 
@@ -19,5 +23,17 @@ const std::array<FaceFrame, 6>& face_frames();
 // Can a sphere (centre relative to the eye, radius r) reach face f's 90-degree
 // frustum beyond the near distance? Conservative: true may still draw nothing.
 bool sphere_meets_face(const glm::dvec3& center, double r, int face, double near_m);
+
+// What a render at time t from `eye` submits: per face, the objects (indices into scene.objects, `objects`,
+// or all if it is empty) whose bound reaches it, in scene order (deterministic ties); each drawn object's
+// model matrix at t; how many objects reach any face.
+struct FaceLists {
+  std::array<std::vector<size_t>, 6> per_face;
+  std::vector<glm::dmat4> model;  // by scene index, set for the objects drawn
+  std::vector<char> drawn;        // by scene index
+  int64_t objects = 0;
+};
+FaceLists cull_to_faces(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
+                        double near_m);
 
 }  // namespace arp::host

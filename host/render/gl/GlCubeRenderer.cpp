@@ -235,26 +235,10 @@ RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& 
   Gl& g = *gl_;
   g.targets(S);
   RenderStats st;
-  std::vector<size_t> all;
-  const std::vector<size_t>* list = &objects;
-  if (objects.empty()) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) all.push_back(i);
-    list = &all;
-  }
-  std::vector<std::vector<size_t>> per_face(6);
-  std::vector<glm::dmat4> model(scene.objects.size());
-  for (size_t i : *list) {
-    const SceneObject& o = scene.objects[i];
-    model[i] = o.model_at(t);
-    const Sphere b = o.world_bound(t);
-    bool any = false;
-    for (int f = 0; f < 6; ++f)
-      if (sphere_meets_face(b.center - eye, b.radius, f, dc.near_m)) {
-        per_face[static_cast<size_t>(f)].push_back(i);
-        any = true;
-      }
-    st.objects += any ? 1 : 0;
-  }
+  const FaceLists lists = cull_to_faces(scene, objects, t, eye, dc.near_m);
+  const auto& per_face = lists.per_face;
+  const auto& model = lists.model;
+  st.objects = lists.objects;
 
   g.program.use();
   glViewport(0, 0, S, S);
