@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -196,11 +197,18 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     }
   }
   const std::vector<double> radial = radial_factors(S);
-  // The faces are independent: one thread each (dynamic: their loads differ), the same bits on any count.
+  // The faces are independent: one thread each, the same bits on any count. Their loads differ, so the
+  // heaviest (most triangles) go first and a thread takes the next face when it is free.
+  std::array<int, 6> order{0, 1, 2, 3, 4, 5};
+  std::array<int64_t, 6> load{};
+  for (int f = 0; f < 6; ++f)
+    for (size_t i : per_face[static_cast<size_t>(f)]) load[static_cast<size_t>(f)] += static_cast<int64_t>(scene.objects[i].mesh->triangles());
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return load[static_cast<size_t>(a)] > load[static_cast<size_t>(b)]; });
   int64_t triangles = 0, filled = 0, rendered = 0;
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : triangles, filled, rendered)
-  for (int f = 0; f < 6; ++f) {
+  for (int slot = 0; slot < 6; ++slot) {
+    const int f = order[static_cast<size_t>(slot)];
     FaceImage& img = faces[static_cast<size_t>(f)];
     if (per_face[static_cast<size_t>(f)].empty()) {  // nothing reaches it: no storage, nothing drawn
       img.size = S;
@@ -305,22 +313,18 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   thread_local std::vector<uint64_t> words_of_thread;
   std::vector<FaceImage>& faces = faces_of_thread;
   std::vector<uint64_t>& words = words_of_thread;
-  RenderStats st = render_faces(scene, objects, t, eye, fmt.face_size, faces, warp);
   DepthCode dc = depth_;
   dc.bits = fmt.depth_bits;
-  // Colour and depth code per texel, face by face in parallel (a logarithm and three roundings each); then
-  // each face stored whole (DisplayMemoryBank::write_face).
+  // Colour and depth code per texel (a logarithm and three roundings each), faces in parallel; then each
+  // face stored whole (DisplayMemoryBank::write_face).
   const int S = fmt.face_size;
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
   const double log_range = dc.log_range();
-  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int f = 0; f < 6; ++f) {
+  auto convert = [&](int f) {
     const FaceImage& img = faces[static_cast<size_t>(f)];
     uint64_t* out = words.data() + static_cast<size_t>(f) * n;
-    if (img.distance.empty()) continue;
     for (size_t k = 0; k < n; ++k) {
       if (!std::isfinite(img.distance[k])) {
         out[k] = empty;
@@ -329,7 +333,14 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
       const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
       out[k] = (uint64_t{dc.code(img.distance[k], log_range)} << 32) | fmt.pack_rgb8(round_channel(c.r), round_channel(c.g), round_channel(c.b));
     }
-  }
+  };
+  RenderStats st = render_faces(scene, objects, t, eye, S, faces, warp);
+  // (After the drawing, not on the thread that drew each face: conversion costs the same for every face and
+  // balances; tied to the drawing it would follow the faces' unequal loads -- measured slower.)
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int f = 0; f < 6; ++f)
+    if (!faces[static_cast<size_t>(f)].distance.empty()) convert(f);
   bank.clear_back();
   for (int f = 0; f < 6; ++f)
     if (!faces[static_cast<size_t>(f)].distance.empty())
