@@ -67,6 +67,11 @@ void main() {
 
 constexpr GLuint kNoCode = 0xFFFFFFFFu;
 
+// The shaders' uniforms: their names, and the index of each location in Gl::u.
+enum Uniform { kModelRel, kNormalMat, kFaceClip, kColor, kLightDir, kAmbient, kDiffuse, kTextured, kImage, kObjectId, kNearM, kLogRange, kMaxCode, kUniforms };
+constexpr const char* kUniformName[kUniforms] = {"model_rel", "normal_mat", "face_clip", "color", "light_dir", "ambient", "diffuse",
+                                                 "textured", "image", "object_id", "near_m", "log_range", "max_code"};
+
 struct MeshBuffers {
   std::shared_ptr<const Mesh> keep;  // the cache is keyed by address: the mesh must outlive its entry
   GLuint vao = 0, vbo = 0, ebo = 0;
@@ -79,8 +84,7 @@ struct MeshBuffers {
 struct GlCubeRenderer::Gl {
   EglContext ctx;
   GlProgram program;
-  int u_model, u_normal, u_face, u_color, u_light, u_ambient, u_diffuse, u_textured, u_image, u_object, u_near,
-      u_log_range, u_max_code;
+  int u[kUniforms];  // locations, by Uniform
   GLuint query[6] = {};
   // One framebuffer per face: all six are drawn before any is read back, so
   // llvmpipe rasterises a face while the next one is being bound.
@@ -94,20 +98,8 @@ struct GlCubeRenderer::Gl {
 
   explicit Gl(const EglOptions& o)
       : ctx(o),
-        program(kVertex, kFragment, "cube-face renderer"),
-        u_model(program.uniform("model_rel")),
-        u_normal(program.uniform("normal_mat")),
-        u_face(program.uniform("face_clip")),
-        u_color(program.uniform("color")),
-        u_light(program.uniform("light_dir")),
-        u_ambient(program.uniform("ambient")),
-        u_diffuse(program.uniform("diffuse")),
-        u_textured(program.uniform("textured")),
-        u_image(program.uniform("image")),
-        u_object(program.uniform("object_id")),
-        u_near(program.uniform("near_m")),
-        u_log_range(program.uniform("log_range")),
-        u_max_code(program.uniform("max_code")) {
+        program(kVertex, kFragment, "cube-face renderer") {
+    for (int i = 0; i < kUniforms; ++i) u[i] = program.uniform(kUniformName[i]);
     glGenQueries(6, query);
   }
 
@@ -245,14 +237,14 @@ RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);  // the first drawn keeps an exact tie, as in the software renderer
   glDisable(GL_CULL_FACE);  // both windings are drawn
-  glUniform3f(g.u_light, static_cast<float>(light_.direction.x), static_cast<float>(light_.direction.y),
+  glUniform3f(g.u[kLightDir], static_cast<float>(light_.direction.x), static_cast<float>(light_.direction.y),
               static_cast<float>(light_.direction.z));
-  glUniform1f(g.u_ambient, static_cast<float>(light_.ambient));
-  glUniform1f(g.u_diffuse, static_cast<float>(light_.diffuse));
-  glUniform1f(g.u_near, static_cast<float>(dc.near_m));
-  glUniform1f(g.u_log_range, static_cast<float>(std::log(dc.far_m / dc.near_m)));
-  glUniform1f(g.u_max_code, static_cast<float>(dc.max_code()));
-  glUniform1i(g.u_image, 0);
+  glUniform1f(g.u[kAmbient], static_cast<float>(light_.ambient));
+  glUniform1f(g.u[kDiffuse], static_cast<float>(light_.diffuse));
+  glUniform1f(g.u[kNearM], static_cast<float>(dc.near_m));
+  glUniform1f(g.u[kLogRange], static_cast<float>(std::log(dc.far_m / dc.near_m)));
+  glUniform1f(g.u[kMaxCode], static_cast<float>(dc.max_code()));
+  glUniform1i(g.u[kImage], 0);
   // The z-buffer's far plane lies far beyond any depth code (codes saturate at far_m, objects still draw).
   const double n = dc.near_m, far = std::max(dc.far_m, 1.0) * 1e4;
   const double A = (far + n) / (far - n), B = -2.0 * far * n / (far - n);
@@ -272,7 +264,7 @@ RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& 
       clip[c][3] = static_cast<float>(F.fwd[c]);
     }
     clip[3][2] = static_cast<float>(B);
-    glUniformMatrix4fv(g.u_face, 1, GL_FALSE, glm::value_ptr(clip));
+    glUniformMatrix4fv(g.u[kFaceClip], 1, GL_FALSE, glm::value_ptr(clip));
     const GLfloat black[4] = {0, 0, 0, 0};
     const GLuint none[4] = {kNoCode, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, black);
@@ -290,17 +282,17 @@ RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& 
       rel[3] = glm::dvec4(glm::dvec3(rel[3]) - eye, 1.0);
       const glm::mat4 relf(rel);
       const glm::mat3 nm(glm::inverseTranspose(glm::dmat3(model[i])));
-      glUniformMatrix4fv(g.u_model, 1, GL_FALSE, glm::value_ptr(relf));
-      glUniformMatrix3fv(g.u_normal, 1, GL_FALSE, glm::value_ptr(nm));
-      glUniform3f(g.u_color, static_cast<float>(o.material.color.r), static_cast<float>(o.material.color.g),
+      glUniformMatrix4fv(g.u[kModelRel], 1, GL_FALSE, glm::value_ptr(relf));
+      glUniformMatrix3fv(g.u[kNormalMat], 1, GL_FALSE, glm::value_ptr(nm));
+      glUniform3f(g.u[kColor], static_cast<float>(o.material.color.r), static_cast<float>(o.material.color.g),
                   static_cast<float>(o.material.color.b));
       const bool textured = o.material.texture && !m.uvs.empty();
-      glUniform1i(g.u_textured, textured ? 1 : 0);
+      glUniform1i(g.u[kTextured], textured ? 1 : 0);
       if (textured) {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, g.texture(o.material.texture));
       }
-      glUniform1ui(g.u_object, static_cast<GLuint>(i + 1));
+      glUniform1ui(g.u[kObjectId], static_cast<GLuint>(i + 1));
       glBindVertexArray(b.vao);
       if (b.indexed)
         glDrawElements(GL_TRIANGLES, b.count, GL_UNSIGNED_INT, nullptr);
