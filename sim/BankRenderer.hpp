@@ -11,10 +11,13 @@ namespace arp::sim {
 
 constexpr const char* kRendererNames = "software or gl";
 
-// InputError naming --renderer: an unknown name, or a renderer other than the default with no scene to draw.
-void check_renderer(const MemoryContents& m);
+// InputError naming --renderer: an unknown name, a renderer other than the default with no scene to
+// draw, or GL with depth codes wider than it computes exactly (memory.depth_bits).
+void check_renderer(const MemoryContents& m, int depth_bits);
 
-// InputError naming --renderer for an unknown name, or when OpenGL cannot be had (the reason from EGL).
-host::HostSimulation::BankRenderer make_bank_renderer(const std::string& name);
+// The renderer named, drawing on `threads` threads (0: every core; the software renderer's faces, GL's
+// conversion into memory words -- the run's --threads). InputError naming --renderer for an unknown
+// name, or when OpenGL cannot be had (the reason from EGL), then or at a later draw.
+host::HostSimulation::BankRenderer make_bank_renderer(const std::string& name, int threads);
 
 }  // namespace arp::sim

@@ -18,8 +18,8 @@
 
 namespace arp::sim {
 
-void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const {
-  check_renderer(*this);
+void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads) const {
+  check_renderer(*this, mem.format().depth_bits);
   if (scene.empty()) {
     if (!position.empty()) throw InputError("--position", "", "only with --scene");
     host::load_into_memories(mem, 0, load(mem.format().face_size, source), host::far_depth(mem.format()));
@@ -40,7 +40,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
                                                     " m, the farthest a view is supported (docs/accuracy.md)");
   }
   const glm::dquat q(head.w, head.x, head.y, head.z);
-  const auto render = make_bank_renderer(renderer);
+  const auto render = make_bank_renderer(renderer, threads);
   for (int e = 0; e < mem.eyes(); ++e) {
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
     render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank, nullptr);

@@ -22,8 +22,8 @@ struct MemoryContents {
   // The cube map chosen, at face size S; `source` names it for messages.
   host::CubeMapImages load(int face_size, std::string& source) const;
   // Fills memory 0 of every eye and swaps it in: the cube map, or the scene
-  // rendered from each eye's position (head orientation `head`).
-  void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source) const;
+  // rendered from each eye's position (head orientation `head`) on `threads` threads (0: every core).
+  void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads = 0) const;
   // The scene named by `scene` (notes about stand-ins go to stderr).
   host::Scene load_scene() const;
 };

@@ -84,7 +84,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
   if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
-  check_renderer(s.memories);
+  check_renderer(s.memories, s.config.memory.depth_bits);
   if (h.warp && s.memories.renderer != "software")
     throw InputError("--renderer", s.memories.renderer, "region warping (--warp) moves vertices on the CPU: it needs --renderer software");
   if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);
@@ -228,7 +228,7 @@ void Session::build_memories() {
   const HostSpec& h = spec_.host;
   const dp::ArpConfig& c = spec_.config;
   if (!walk_) {
-    spec_.memories.fill(memories_, stream_[stream_.index_at(start_ps_)].q, memory_source_);
+    spec_.memories.fill(memories_, stream_[stream_.index_at(start_ps_)].q, memory_source_, spec_.threads);
     return;
   }
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
@@ -270,7 +270,8 @@ void Session::build_memories() {
     if (!(h.warp_falloff >= 0) || h.warp_falloff > h.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
     host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : h.region_size / 2);
   }
-  if (spec_.memories.renderer != "software") host_->use_renderer(make_bank_renderer(spec_.memories.renderer));
+  if (spec_.memories.renderer != "software") host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads));
+  host_->set_render_threads(spec_.threads);
   host_->prime(seconds_of(start_ps_));
   memory_source_ = "scene " + scene_->name + " (" + std::to_string(scene_->objects.size()) + " objects, " +
                    std::to_string(scene_->triangles()) + " triangles), host rendering " +

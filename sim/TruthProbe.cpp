@@ -70,7 +70,8 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
   const double tm = static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame) + t.frame_cycles() / 2)) * 1e-12;
   const dp::Quat& hq = stream[stream.index_at(static_cast<int64_t>(std::llround(tm * 1e12)))].q;
   const glm::dquat q(hq.w, hq.x, hq.y, hq.z);
-  const host::CubeFaceRenderer renderer;
+  host::CubeFaceRenderer renderer;
+  renderer.set_threads(s_.threads);
   for (int e = 0; e < c.timing.eyes; ++e) {
     renderer.render(scene, {}, tm, host::eye_position(s_.walk->position(tm), q, e, c.timing.eyes, s_.ipd_m), truth_mem_->bank(e, 0),
                     &truth_ids_[static_cast<size_t>(e)]);

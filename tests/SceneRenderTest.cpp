@@ -219,6 +219,9 @@ TEST(CubeFaceRenderer, AnyThreadCountGivesTheSameBits) {
   EXPECT_EQ(sf[0].texels_filled, sf[1].texels_filled);
   EXPECT_EQ(sf[0].triangles, sf[1].triangles);
   EXPECT_EQ(st[0].texels_written, st[1].texels_written);
+  EXPECT_EQ(st[0].texels_filled, st[1].texels_filled);
+  EXPECT_EQ(st[0].objects, st[1].objects);
+  EXPECT_EQ(st[0].faces_rendered, st[1].faces_rendered);
   EXPECT_GT(st[0].texels_written, 6 * 96 * 96 / 2);
   for (size_t f = 0; f < 6; ++f) {
     EXPECT_EQ(faces[0][f].distance, faces[1][f].distance) << f;
@@ -228,6 +231,42 @@ TEST(CubeFaceRenderer, AnyThreadCountGivesTheSameBits) {
       for (int x = 0; x < 96; ++x)
         ASSERT_EQ(bank0.read_back(static_cast<int>(f), x, y), bank1.read_back(static_cast<int>(f), x, y)) << f << " " << x << " " << y;
   }
+}
+
+// The renderer's output pinned: the gallery from three points of its walk at 96^2, every memory word,
+// every texel's object and the counts, hashed (FNV-1a). The expected value is what the renderer of
+// commit 4107c2e computed -- before it was made parallel and incremental -- built on its own from
+// that commit with this same function; a change to the renderer's arithmetic shows here.
+namespace {
+uint64_t gallery_render_hash(int threads) {
+  const Scene g = make_gallery();
+  dp::MemoryConfig mc;
+  mc.face_size = 96;
+  dp::DisplayMemoryBank bank{dp::MemoryFormat(mc)};
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&](uint64_t v) {
+    h ^= v;
+    h *= 1099511628211ull;
+  };
+  CubeFaceRenderer r;
+  r.set_threads(threads);
+  std::vector<FaceImage> ids;
+  const auto walk = gallery_walk();
+  for (size_t i = 0; i < walk.size(); i += walk.size() / 3) {
+    const RenderStats st = r.render(g, {}, 0.5 + static_cast<double>(i), walk[i], bank, &ids);
+    for (int f = 0; f < 6; ++f)
+      for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) mix(bank.read_back(f, x, y));
+    for (const auto& v : ids)
+      for (auto o : v.object) mix(static_cast<uint64_t>(o));
+    for (const int64_t n : {st.triangles, st.texels_filled, st.texels_written, st.objects}) mix(static_cast<uint64_t>(n));
+  }
+  return h;
+}
+}  // namespace
+
+TEST(CubeFaceRenderer, TheGalleryRendersToThePinnedBits) {
+  for (const int threads : {1, 2}) EXPECT_EQ(gallery_render_hash(threads), 0x96a4d3071e355c73ull) << threads << " threads";
 }
 
 TEST(Scenes, GalleryHasRoomsPillarsPicturesAndExhibits) {

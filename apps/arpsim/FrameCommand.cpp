@@ -83,7 +83,7 @@ Runner add_frame_command(CLI::App& app) {
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
   cmd->add_option("--frame", args->spec.frame, "Frame index (sets the photon times)")
       ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()));
-  cmd->add_option("--threads", args->spec.threads, "Worker threads (0: all cores)")->check(CLI::Range(0, 256));
+  cmd->add_option("--threads", args->spec.threads, "Worker threads of the functional model and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
   cmd->add_option("--report", args->report, "Also write a JSON report of the frame");
   return [args] { return run_frame(*args); };
 }

@@ -119,7 +119,7 @@ Runner add_live_command(CLI::App& app) {
   cmd->add_option("--seconds", a->spec.seconds, "Run this long (0: until the window is closed or Esc)")->capture_default_str();
   cmd->add_option("--scale", a->scale, "Window pixels per display pixel")->capture_default_str();
   cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)");
-  cmd->add_option("--threads", a->spec.threads, "Worker threads of the functional model (0: all cores)")->check(CLI::Range(0, 256));
+  cmd->add_option("--threads", a->spec.threads, "Worker threads of the functional model and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
   cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
   return [a] { return run_live(*a); };
 }

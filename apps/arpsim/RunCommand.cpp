@@ -98,7 +98,7 @@ Runner add_run_command(CLI::App& app) {
   add_motion_options(*cmd, s.motion, false);
   cmd->add_option("--frames", s.frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", s.first_frame, "Index of the first frame (sets its time)")->capture_default_str();
-  cmd->add_option("--threads", s.threads, "Worker threads of the functional level (0: all cores)")->check(CLI::Range(0, 256));
+  cmd->add_option("--threads", s.threads, "Worker threads of the functional level and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
   add_output_options(cmd, s.out);
   add_host_options(cmd, *a);
   cmd->add_option("--stall", s.stalls, "Inject a stall, STAGE:CLOCK:CYCLES (clock counted from the first frame's first pixel); repeatable")

@@ -42,6 +42,8 @@ class HostSimulation {
   using BankRenderer = std::function<RenderStats(const Scene&, const std::vector<size_t>&, double, const glm::dvec3&,
                                                  dp::DisplayMemoryBank&, std::vector<FaceImage>*)>;
   void use_renderer(BankRenderer r) { bank_renderer_ = std::move(r); }
+  // Threads the software renderer draws faces on (0: every core): the run's --threads.
+  void set_render_threads(int n) { renderer_.set_threads(n); }
 
   // Region priority rendering instead of object-level: each object of the
   // (segmented) scene belongs to `object_region[i]`, whose memory the region

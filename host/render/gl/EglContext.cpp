@@ -5,7 +5,9 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 namespace arp::host {
@@ -18,13 +20,38 @@ std::string egl_error(const char* what) {
   return std::string("OpenGL through EGL is not available: ") + what + " failed (EGL error " + code + ")";
 }
 
+// An environment variable set for the lifetime of the object, then put back as it was: Mesa reads its
+// options from the environment, and programs the process starts later must not inherit them.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
+    if (!value) return;
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value->c_str(), 1);
+    set_ = true;
+  }
+  ~ScopedEnv() {
+    if (!set_) return;
+    if (old_) setenv(name_, old_->c_str(), 1);
+    else unsetenv(name_);
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+  bool set_ = false;
+};
+
 }  // namespace
 
 EglContext::EglContext(const EglOptions& opt) {
-  // Mesa reads both at display initialisation (a later context with other
-  // values re-initialises: the destructor terminates the display).
-  if (opt.software) setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
-  if (opt.threads >= 0) setenv("LP_NUM_THREADS", std::to_string(opt.threads).c_str(), 1);
+  // Mesa reads both while the display is initialised and the context made
+  // (a later context with other values re-initialises: the destructor
+  // terminates the display).
+  const ScopedEnv software("LIBGL_ALWAYS_SOFTWARE", opt.software ? std::optional<std::string>("1") : std::nullopt);
+  const ScopedEnv threads("LP_NUM_THREADS", opt.threads >= 0 ? std::optional<std::string>(std::to_string(opt.threads)) : std::nullopt);
   EGLDisplay d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (d == EGL_NO_DISPLAY) throw GlUnavailable(egl_error("eglGetPlatformDisplay(surfaceless)"));
   EGLint major = 0, minor = 0;

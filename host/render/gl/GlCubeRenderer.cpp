@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "GlProgram.hpp"
@@ -137,8 +139,10 @@ struct GlCubeRenderer::Gl {
         glRenderbufferStorage(GL_RENDERBUFFER, formats[i], S, S);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, points[i], GL_RENDERBUFFER, rb[3 * f + i]);
       }
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        release_targets();  // not kept as if made: the next draw tries again
         throw GlUnavailable("OpenGL: the cube-face framebuffer (RGBA8, RG32UI, depth 32F) is not complete");
+      }
       glDrawBuffers(2, draw);
     }
     for (int f = 0; f < 6; ++f) {
@@ -222,6 +226,9 @@ const EglContext& GlCubeRenderer::context() const { return gl_->ctx; }
 
 RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& objects, double t,
                                  const glm::dvec3& eye, int S, int depth_bits) {
+  if (depth_bits > kMaxDepthBits)
+    throw std::invalid_argument("GlCubeRenderer: " + std::to_string(depth_bits) + "-bit depth codes (at most " +
+                                std::to_string(kMaxDepthBits) + ")");
   DepthCode dc = depth_;
   dc.bits = depth_bits;
   Gl& g = *gl_;

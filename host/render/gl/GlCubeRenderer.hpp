@@ -22,6 +22,9 @@ namespace arp::host {
 
 class GlCubeRenderer {
  public:
+  // The widest depth code the fragment shader computes exactly: it codes in float (a 24-bit significand).
+  static constexpr int kMaxDepthBits = 24;
+
   // GlUnavailable if EGL or OpenGL 3.3 cannot be had.
   explicit GlCubeRenderer(DepthCode depth = {}, LightModel light = {}, const EglOptions& egl = {});
   ~GlCubeRenderer();
@@ -33,7 +36,7 @@ class GlCubeRenderer {
   RenderStats render(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
                      dp::DisplayMemoryBank& bank, std::vector<FaceImage>* visible = nullptr);
 
-  // Only the OpenGL part: the six faces drawn and read back into the renderer's
+  // Only the OpenGL part (std::invalid_argument for depth_bits above kMaxDepthBits): the six faces drawn and read back into the renderer's
   // own RGBA8 and depth-code/object buffers (texels_written stays 0) -- what a
   // GL user has before anything is stored in a display memory.
   RenderStats draw(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
