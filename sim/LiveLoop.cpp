@@ -59,7 +59,9 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
     }
     usb_ = source_->live() ? source_.get() : nullptr;
   }
-  spec_.memories.fill(mem_, dp::Quat{}, memory_source_, spec_.threads);
+  MemoryContents contents = spec_.memories;
+  contents.expect_plan(spec_.config, "the configuration");
+  contents.fill(mem_, dp::Quat{}, memory_source_, spec_.threads);
   wall0_ = Clock::now();
   usb_offset_ = usb_ ? -usb_->now_ps() : 0;
 }

@@ -61,6 +61,13 @@ host::CubeMapImages MemoryContents::load(int S, std::string& source) const {
 host::Scene MemoryContents::load_scene() const {
   host::Scene sc = scene == "gallery" ? host::make_gallery() : host::load_scene_file(scene);
   for (const auto& n : sc.notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());
+  if (plan_scene_hash != 0) {
+    const int64_t h = host::scene_hash(sc);
+    if (h != plan_scene_hash)
+      std::fprintf(stderr, "arpsim: warning: %s was planned for another scene (plan.scene_hash %lld); scene %s hashes to %lld: "
+                           "run `arpsim plan` for it\n",
+                   plan_source.c_str(), static_cast<long long>(plan_scene_hash), sc.name.c_str(), static_cast<long long>(h));
+  }
   return sc;
 }
 

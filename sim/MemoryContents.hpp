@@ -6,6 +6,7 @@
 
 #include "host/cubemap/CubeMapImages.hpp"
 #include "host/scene/Scene.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 
@@ -18,13 +19,21 @@ struct MemoryContents {
   double time_s = 0.0;                 // --scene: animation time
   double ipd_m = 0.064;                // distance between the eyes
   std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
+  // The scene the configuration was planned for (plan.scene_hash; 0: none) and the configuration's
+  // name: load_scene() warns once when the scene is another (expect_plan sets both).
+  int64_t plan_scene_hash = 0;
+  std::string plan_source;
+  void expect_plan(const dp::ArpConfig& c, const std::string& source) {
+    plan_scene_hash = c.plan.scene_hash;
+    plan_source = source;
+  }
 
   // The cube map chosen, at face size S; `source` names it for messages.
   host::CubeMapImages load(int face_size, std::string& source) const;
   // Fills memory 0 of every eye and swaps it in: the cube map, or the scene
   // rendered from each eye's position (head orientation `head`) on `threads` threads (0: every core).
   void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads = 0) const;
-  // The scene named by `scene` (notes about stand-ins go to stderr).
+  // The scene named by `scene` (notes about stand-ins, and a plan made for another scene, go to stderr).
   host::Scene load_scene() const;
 };
 

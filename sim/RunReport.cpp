@@ -7,21 +7,19 @@
 #include <cstdio>
 
 #include "ConfigFile.hpp"
+#include "common/Fingerprint.hpp"
 #include "common/ResourceUsage.hpp"
 
 namespace arp::sim {
 
 namespace {
 
-// A word-wise FNV-1a style fingerprint.
-uint64_t fnv(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001b3ull; }
-
 template <class V>
 std::string hash_of(const V& values) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (const auto v : values) h = fnv(h, static_cast<uint64_t>(v));
+  Fingerprint h;
+  for (const auto v : values) h.add(static_cast<uint64_t>(v));
   char hex[24];
-  std::snprintf(hex, sizeof hex, "%016" PRIx64, h);
+  std::snprintf(hex, sizeof hex, "%016" PRIx64, h.value());
   return hex;
 }
 

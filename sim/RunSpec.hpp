@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "MemoryContents.hpp"
+#include "host/motion/WalkPath.hpp"
 #include "host/priority/RenderCost.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "tracker/SyntheticMotion.hpp"
@@ -28,6 +29,9 @@ struct HostSpec {
   bool segmentation = true;     // not --no-segmentation
   bool warp = false;            // --warp
   double warp_falloff = 0;      // --warp-falloff, m (0: half a region)
+
+  // The walk named (InputError naming --speed for a speed out of range, or the walk file's own errors).
+  host::WalkPath make_walk() const;
 };
 
 // What a run writes.

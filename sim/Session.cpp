@@ -13,6 +13,7 @@
 #include <fstream>
 
 #include "FrameImage.hpp"
+#include "HardwareCost.hpp"
 #include "PoseConversion.hpp"
 #include "TruthProbe.hpp"
 #include "common/AtomicFile.hpp"
@@ -109,6 +110,7 @@ Session::Session(RunSpec spec)
       timing_(spec_.config.timing),
       stream_(dp::OrientationStream::constant(dp::Quat{})),
       memories_(spec_.config.memory, spec_.config.timing.eyes) {
+  spec_.memories.expect_plan(spec_.config, spec_.config_source);
   if (!scm::parse(spec_.fidelity, fidelity_))
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
   check_spec(spec_, fidelity_);
@@ -125,19 +127,21 @@ Session::~Session() = default;
 // motion (synthetic, or the still head of a walk) is not held for the whole
 // run: the stream is extended a window ahead before each frame and trimmed
 // behind it (extend_motion), so memory does not grow with the run's length.
+host::WalkPath HostSpec::make_walk() const {
+  if (walk_speed && !(*walk_speed >= 0 && *walk_speed <= 1000))
+    throw InputError("--speed", "", "must be 0 .. 1000 m/s (0: standing at the walk's first point)");
+  if (walk == "gallery") return host::WalkPath(host::gallery_walk(), walk_speed.value_or(1.0), "gallery walk");
+  host::WalkPath w = host::load_walk_file(walk);
+  if (walk_speed) w = host::WalkPath(w.points(), *walk_speed, walk);
+  return w;
+}
+
 // A trace is read over the run's window only and held.
 void Session::build_motion() {
   const HostSpec& h = spec_.host;
   if (!h.walk.empty()) {
     if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
-    if (h.walk_speed && !(*h.walk_speed >= 0 && *h.walk_speed <= 1000))
-      throw InputError("--speed", "", "must be 0 .. 1000 m/s (0: standing at the walk's first point)");
-    if (h.walk == "gallery") {
-      walk_ = std::make_unique<host::WalkPath>(host::gallery_walk(), h.walk_speed.value_or(1.0), "gallery walk");
-    } else {
-      walk_ = std::make_unique<host::WalkPath>(host::load_walk_file(h.walk));
-      if (h.walk_speed) *walk_ = host::WalkPath(walk_->points(), *h.walk_speed, h.walk);
-    }
+    walk_ = std::make_unique<host::WalkPath>(h.make_walk());
   }
   if (!spec_.trace.empty()) {
     // Only what the run can latch: a second of margin before the first frame covers every lead.
@@ -234,6 +238,8 @@ void Session::build_memories() {
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
   host::PriorityConfig pc;
   pc.memories = c.memory.count;
+  pc.update_frames = c.memory.update_frames;
+  pc.update_ratio = c.memory.update_ratio;
   pc.display_hz = timing_.refresh_hz();
   pc.baseline = h.baseline;
   if (!(h.threshold_deg >= 0) || h.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
@@ -388,6 +394,7 @@ std::vector<stage::StallWindow> Session::stall_windows() const {
 
 void Session::on_scanned_out(const HmdFrame& f, const stage::FrameReport& r) {
   const OutputSpec& o = spec_.out;
+  memory_peak_bytes_ = std::max(memory_peak_bytes_, memories_.bytes_allocated());
   const std::string ph = pixel_hash(f), th = photon_hash(f);
   const int64_t k = r.frame - spec_.first_frame;
   if (o.every > 0 && k % o.every == 0) {
@@ -553,6 +560,11 @@ RunSummary Session::run() {
   r["motion"] = motion_source_;
   r["cube_map"] = memory_source_;
   r["images"] = images_;
+  // What was modelled: the display memories' storage (sparse tiles, both buffers) against what the
+  // configuration's hardware holds (every face of every memory, double-buffered).
+  r["footprint"] = {{"display_memory_bytes_peak", std::max(memory_peak_bytes_, memories_.bytes_allocated())},
+                    {"display_memory_tiles_at_end", memories_.tiles_allocated()},
+                    {"display_memory_bytes_hardware", display_memory_bytes(spec_.config)}};
   if (trace_summary_) {
     const tracker::MotionSummary& m = *trace_summary_;
     r["trace"] = {{"samples", m.samples},           {"rate_hz", m.rate_hz()},       {"gaps", m.gaps},

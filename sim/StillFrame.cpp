@@ -15,7 +15,9 @@ StillFrame render_still(const StillSpec& spec) {
     throw InputError("--frame", "", why);
   dp::DisplayMemorySet mem(spec.config.memory, spec.config.timing.eyes);
   StillFrame s;
-  spec.memories.fill(mem, spec.orientation, s.source, spec.threads);
+  MemoryContents contents = spec.memories;
+  contents.expect_plan(spec.config, "the configuration");
+  contents.fill(mem, spec.orientation, s.source, spec.threads);
   RenderOptions ro;
   ro.threads = spec.threads;
   ro.photon_times = true;

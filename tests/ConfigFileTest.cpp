@@ -51,14 +51,14 @@ TEST(ConfigFile, TheCommittedReferenceDocIsGeneratedFromTheParameterTable) {
 
 TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
   const auto& t = dp::arp_parameters();
-  EXPECT_EQ(t.sections(), (std::vector<std::string>{"display", "lens", "datapath", "memory", "pipeline", "timed"}));
+  EXPECT_EQ(t.sections(), (std::vector<std::string>{"display", "lens", "datapath", "memory", "pipeline", "timed", "plan"}));
   size_t n = 0;
   for (const auto& p : t.all()) {
     ++n;
     EXPECT_FALSE(p.doc.empty()) << p.key;
     EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
   }
-  EXPECT_EQ(n, 12u + 3 + 12 + 7 + 5 + 2 * dp::kStageCount + 4);
+  EXPECT_EQ(n, 12u + 3 + 12 + 9 + 5 + 2 * dp::kStageCount + 4 + 1);  // display, lens, datapath, memory, pipeline, timed, plan
   // The table and the JSON writer agree: every key written is declared, and the other way round.
   const json j = config::to_json(dp::ArpConfig{});
   size_t written = 0;

@@ -6,7 +6,12 @@
 
 namespace arp::host {
 
-namespace {
+Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed, double t, double threshold_rad) {
+  const Sphere b = o.world_bound(t);
+  const auto& a = o.animation;
+  const double own_speed = (a.path.size() >= 2 && a.path_speed > 0) ? a.path_speed : 0.0;
+  return validity({glm::length(b.center - eye), b.radius, user_speed + own_speed, std::abs(a.spin_deg_per_s) * kPi / 180.0},
+                  threshold_rad);
 }
 
 PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size)
@@ -20,14 +25,7 @@ void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double 
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     int m = 0;
     if (!cfg_.baseline) {
-      const SceneObject& o = scene_.objects[i];
-      const Sphere b = o.world_bound(t);
-      const auto& a = o.animation;
-      const double own_speed = (a.path.size() >= 2 && a.path_speed > 0) ? a.path_speed : 0.0;
-      const Validity v = validity({glm::length(b.center - eye), b.radius, user_speed + own_speed,
-                                   std::abs(a.spin_deg_per_s) * kPi / 180.0},
-                                  threshold_);
-      const double p = v.period_s();
+      const double p = object_validity(scene_.objects[i], eye, user_speed, t, threshold_).period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
     }
     desired_[i] = m;

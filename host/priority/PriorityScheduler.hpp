@@ -1,5 +1,5 @@
 // Object-level priority rendering (Regan & Pose): N display memories updated
-// at harmonic rates of the display (60, 30, 15, 7.5 Hz by default); each
+// at rates dividing the display's (60, 30, 15, 7.5 Hz by default; memory.update_*); each
 // object belongs in the slowest memory whose update period is within its
 // validity period (memory 0 if none is), so objects whose image stays right
 // longer are rendered less often. assign() works out where each object
@@ -12,24 +12,32 @@
 #include <vector>
 
 #include "Validity.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
 #include "host/scene/Scene.hpp"
 
 namespace arp::host {
 
 struct PriorityConfig {
   int memories = 4;
+  int update_frames = 1, update_ratio = 2;  // memory m: every update_frames x update_ratio^m frames (memory.update_*)
   double display_hz = 60.0;
   double threshold_rad = 0.0;   // 0: the angle of one display-memory texel at a face centre, (pi/2) / face_size
   bool baseline = false;        // everything in memory 0, rendered every frame
 };
 
+// How long object o's image stays within threshold_rad for a user at `eye` moving at user_speed at time
+// t (its own path speed and spin included): the rule assign() places objects by.
+Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed_m_s, double t_s, double threshold_rad);
+
 class PriorityScheduler {
  public:
   PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size);
 
-  // Frames between updates of memory m: 1, 2, 4, 8, ...
-  int frames_per_update(int m) const { return cfg_.baseline ? 1 : 1 << m; }
-  double period_s(int m) const { return frames_per_update(m) / cfg_.display_hz; }
+  // Frames between updates of memory m: update_frames x update_ratio^m (1, 2, 4, 8, ... by default).
+  int64_t frames_per_update(int m) const {
+    return cfg_.baseline ? 1 : dp::update_period_frames(cfg_.update_frames, cfg_.update_ratio, m);
+  }
+  double period_s(int m) const { return static_cast<double>(frames_per_update(m)) / cfg_.display_hz; }
   double threshold_rad() const { return threshold_; }
 
   // Works out where every object belongs for the user at `eye` moving at `user_speed` at time t.

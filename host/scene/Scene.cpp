@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/Fingerprint.hpp"
+
 namespace arp::host {
 
 glm::dvec3 SceneObject::position_at(double t) const {
@@ -55,6 +57,33 @@ SceneObject& add_object(Scene& s, std::string name, std::shared_ptr<const Mesh> 
   o.material = material;
   s.objects.push_back(std::move(o));
   return s.objects.back();
+}
+
+int64_t scene_hash(const Scene& s) {
+  Fingerprint h;
+  auto vec = [&](const glm::dvec3& v) { h.add(v.x).add(v.y).add(v.z); };
+  h.add(static_cast<uint64_t>(s.objects.size()));
+  for (const SceneObject& o : s.objects) {
+    h.add(o.name);
+    vec(o.position);
+    vec(o.rotation_deg);
+    vec(o.scale);
+    vec(o.material.color);
+    h.add(uint64_t{o.material.smooth}).add(uint64_t{o.material.texture != nullptr});
+    if (o.material.texture) {
+      h.add(static_cast<uint64_t>(o.material.texture->width)).add(static_cast<uint64_t>(o.material.texture->height));
+      for (const uint8_t b : o.material.texture->rgb) h.add(uint64_t{b});
+    }
+    vec(o.animation.spin_axis);
+    h.add(o.animation.spin_deg_per_s).add(o.animation.path_speed).add(static_cast<uint64_t>(o.animation.path.size()));
+    for (const auto& p : o.animation.path) vec(p);
+    const Mesh& m = *o.mesh;
+    h.add(static_cast<uint64_t>(m.positions.size())).add(static_cast<uint64_t>(m.indices.size()));
+    for (const auto& p : m.positions) vec(p);
+    for (const uint32_t i : m.indices) h.add(uint64_t{i});
+  }
+  const int64_t v = static_cast<int64_t>(h.value() >> 1);
+  return v == 0 ? 1 : v;
 }
 
 }  // namespace arp::host

@@ -58,6 +58,11 @@ struct Scene {
   size_t triangles() const;
 };
 
+// What the scene is, as a number (common/Fingerprint over every object's name,
+// placement, material, animation and mesh; 63 bits, never 0): the scene a plan
+// was made for (plan.scene_hash).
+int64_t scene_hash(const Scene& s);
+
 // Adds an object with a shared mesh; computes its bound.
 SceneObject& add_object(Scene& s, std::string name, std::shared_ptr<const Mesh> mesh, const glm::dvec3& position,
                         const Material& material);

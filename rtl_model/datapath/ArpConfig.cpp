@@ -1,6 +1,7 @@
 #include "ArpConfig.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "PipelineSchedule.hpp"
@@ -116,6 +117,10 @@ ParameterTable<ArpConfig> make_parameters() {
             "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
   t.integer_array("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
                   "colour shown where every memory is empty");
+  t.integer("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
+            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
+  t.integer("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
+            "each next memory is updated this many times less often (Regan & Pose: 2, harmonic rates)");
   // pipeline: latch, filtering and scan-out
   t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
            "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "
@@ -145,6 +150,9 @@ ParameterTable<ArpConfig> make_parameters() {
             "clock of the host's write port into display memory");
   t.integer("timed.host_texels_per_cycle", [](auto& c) -> auto& { return c.timed.host_texels_per_cycle; }, 1, 1 << 20,
             "texels", "texels the write port stores per host clock (its bandwidth)");
+  // plan: what `arpsim plan` records (sim/Planner)
+  t.integer("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
+            "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");
   return t;
 }
 
@@ -195,6 +203,15 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
   }
 
   if (c.memory.color_bits() > 32) ck.fail("memory.red_bits", "red+green+blue bits must not exceed 32");
+  if (issues.empty()) {
+    // The slowest memory's period, without overflow: each factor is at most 64 and checked as it grows.
+    int64_t f = c.memory.update_frames;
+    for (int m = 1; m < c.memory.count && f <= MemoryConfig::kMaxUpdateFrames; ++m) f *= c.memory.update_ratio;
+    if (f > MemoryConfig::kMaxUpdateFrames)
+      ck.fail("memory.update_ratio", "memory " + std::to_string(c.memory.count - 1) + " would be updated every " +
+                                         "update_frames x update_ratio^" + std::to_string(c.memory.count - 1) +
+                                         " frames, more than " + std::to_string(MemoryConfig::kMaxUpdateFrames));
+  }
   if (c.pipeline.aa == AaMode::Bilinear && c.widths.texel_frac < 1)
     ck.fail("datapath.texel_frac", "bilinear anti-aliasing needs at least 1 sub-texel bit");
   return issues;

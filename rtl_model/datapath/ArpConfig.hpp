@@ -73,13 +73,33 @@ struct DatapathWidths {
   Rounding texel_rounding = Rounding::Floor;
 };
 
+// Frames between host updates of memory m when memory 0 updates every `first` frames and each next
+// one `ratio` times less often (Regan & Pose's priority rendering; memory.update_*).
+inline int64_t update_period_frames(int64_t first, int64_t ratio, int m) {
+  int64_t f = first;
+  for (int i = 0; i < m; ++i) f *= ratio;
+  return f;
+}
+
 struct MemoryConfig {
   int count = 4;                          // display memories per eye
   int face_size = 512;                    // S: each face is S x S texels
   int red_bits = 8, green_bits = 8, blue_bits = 8;
   int depth_bits = 16;                    // code 2^depth_bits-1 is reserved for "empty"
   std::array<int, 3> background{0, 0, 0};  // RGB8 shown where every memory is empty
+  // Object-level priority rendering (Regan & Pose): memory m is updated every
+  // update_frames x update_ratio^m display frames (1, 2, 4, 8 by default).
+  int update_frames = 1;
+  int update_ratio = 2;
   int color_bits() const { return red_bits + green_bits + blue_bits; }
+  // Frames between host updates of memory m (validate() keeps it within kMaxUpdateFrames).
+  int64_t frames_per_update(int m) const { return update_period_frames(update_frames, update_ratio, m); }
+  static constexpr int64_t kMaxUpdateFrames = int64_t{1} << 20;
+};
+
+// What `arpsim plan` records of the scene it planned for.
+struct PlanRecord {
+  int64_t scene_hash = 0;  // host::scene_hash of the scene (0: not planned)
 };
 
 struct PipelineConfig {
@@ -128,6 +148,7 @@ struct ArpConfig {
   MemoryConfig memory;
   PipelineConfig pipeline;
   TimedConfig timed;
+  PlanRecord plan;
 };
 
 using arp::ConfigIssue;

@@ -147,6 +147,12 @@ size_t DisplayMemorySet::bytes_allocated() const {
   return s;
 }
 
+size_t DisplayMemorySet::tiles_allocated() const {
+  size_t s = 0;
+  for (const auto& b : banks_) s += b->tiles_allocated();
+  return s;
+}
+
 bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
   const MemoryFormat& f = mem.format();
   const MemoryFormat want(c.memory);

@@ -127,6 +127,7 @@ class DisplayMemorySet {
   }
   void vblank();  // every bank
   size_t bytes_allocated() const;
+  size_t tiles_allocated() const;  // written tiles, every bank
 
  private:
   MemoryFormat fmt_;
