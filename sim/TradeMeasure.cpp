@@ -38,17 +38,6 @@ std::string level_turn_axis() {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The accuracy harness's sample at each scale (the full one is `arpsim verify`'s default).
-accuracy::Options accuracy_options(const TradeScale& s) {
-  accuracy::Options o;
-  if (s.quick) {
-    o.frame_orientations = 1;
-    o.random_orientations = 8;
-    o.random_pixels = 2048;
-    o.color_orientations = 1;
-  }
-  return o;
-}
 
 RunSpec level_run(const dp::ArpConfig& c, const std::string& fidelity, int64_t frames, const std::string& scratch) {
   RunSpec r;
@@ -265,6 +254,17 @@ nlohmann::json measure_latency(const TradePoint& p, const dp::ArpConfig& c, cons
 }
 
 }  // namespace
+
+accuracy::Options accuracy_options(const TradeScale& s) {
+  accuracy::Options o;
+  if (s.quick) {
+    o.frame_orientations = 1;
+    o.random_orientations = 8;
+    o.random_pixels = 2048;
+    o.color_orientations = 1;
+  }
+  return o;
+}
 
 dp::ArpConfig trade_config(const TradePoint& p) { return config::resolve("", p.sets); }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "TradePoints.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 
 namespace arp::sim {
@@ -22,6 +23,10 @@ dp::ArpConfig trade_config(const TradePoint& p);
 // own report, removed after. The result's "figures" hold the table's columns.
 nlohmann::json measure_trade_point(const TradePoint& p, const TradeScale& s, const std::string& scratch,
                                    const std::function<void(double, const std::string&)>& progress = {});
+
+// The accuracy harness's sample at each scale (the full one is `arpsim verify`'s default); the planner
+// sizes widths with the quick one.
+accuracy::Options accuracy_options(const TradeScale& s);
 
 // The machine the figures were measured on ("AMD EPYC 9R14, 2 cores"), for result files and tables.
 std::string machine_description();

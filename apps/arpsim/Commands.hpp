@@ -17,5 +17,6 @@ Runner add_gtkw_command(CLI::App& app);
 Runner add_latency_command(CLI::App& app);
 Runner add_live_command(CLI::App& app);
 Runner add_tradeoff_command(CLI::App& app);
+Runner add_plan_command(CLI::App& app);
 
 }  // namespace arp::app

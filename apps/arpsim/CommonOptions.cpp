@@ -63,6 +63,14 @@ void ConfigOptions::add_to(CLI::App& cmd) {
       ->type_name("SECTION.KEY=VALUE");
 }
 
+void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg) {
+  cmd.add_option("--walk", walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
+                 "the host renders by priority between frames");
+  cmd.add_option("--speed", speed, "Walking speed, m/s, 0 .. 1000 (default 1, or the walk file's; 0: standing at the walk's first point)");
+  cmd.add_option("--threshold-deg", threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
+      ->capture_default_str();
+}
+
 void add_memory_options(CLI::App& cmd, sim::MemoryContents& m) {
   auto* g = cmd.add_option_group("cube map", "Display memory contents (default: the calibration pattern)");
   g->add_option("--faces", m.faces, "Folder with px nx py ny pz nz.<ext>, each face_size square");

@@ -1,6 +1,7 @@
 // Options every arpsim command shares: the configuration file and overrides.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct ConfigOptions {
 // and clamps 2^63 silently) inside its 64-bit range; a real number is finite
 // and not an overflow ("1e400"). Applied once, after every command is added.
 void strict_numbers(CLI::App& app);
+
+// The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
+void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg);
 
 // The display memory contents' options (--faces, --cross, --equirect, --scene, --position, --time, --ipd).
 void add_memory_options(CLI::App& cmd, sim::MemoryContents& m);

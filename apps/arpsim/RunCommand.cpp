@@ -57,9 +57,7 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
 
 void add_host_options(CLI::App* cmd, RunArgs& a) {
   sim::HostSpec& h = a.spec.host;
-  cmd->add_option("--walk", h.walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
-                  "the host renders by priority between frames");
-  cmd->add_option("--speed", h.walk_speed, "Walking speed, m/s, 0 .. 1000 (default 1, or the walk file's; 0: standing at the walk's first point)");
+  add_walk_options(*cmd, h.walk, h.walk_speed, h.threshold_deg);
   cmd->add_option("--regions", h.region_size,
                   "With --walk: region priority rendering with square columns of this size, metres (0: object-level)")
       ->capture_default_str();
@@ -70,8 +68,6 @@ void add_host_options(CLI::App* cmd, RunArgs& a) {
   cmd->add_flag("--warp", h.warp, "--regions: warp the regions' edges toward slower neighbours (hides tearing)");
   cmd->add_option("--warp-falloff", h.warp_falloff, "--warp: distance inside a region over which the warp fades, metres (0: half a region)");
   cmd->add_flag("--baseline", h.baseline, "Host baseline: everything in memory 0, rendered every frame");
-  cmd->add_option("--threshold-deg", h.threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
-      ->capture_default_str();
   cmd->add_option("--engine-triangles", h.engine.triangles_per_s, "Simulated renderer: triangles per second")->capture_default_str();
   cmd->add_option("--engine-fill", h.engine.pixels_per_s, "Simulated renderer: texels filled per second")->capture_default_str();
   cmd->add_option("--engine-setup", h.engine.object_setup_s, "Simulated renderer: set-up per object, seconds")->capture_default_str();

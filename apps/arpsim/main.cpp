@@ -26,6 +26,7 @@ int sc_main(int argc, char** argv) {
   add(arp::app::add_latency_command(app));
   add(arp::app::add_live_command(app));
   add(arp::app::add_tradeoff_command(app));
+  add(arp::app::add_plan_command(app));
   arp::app::strict_numbers(app);
   try {
     app.parse(argc, argv);

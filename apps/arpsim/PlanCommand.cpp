@@ -1,0 +1,68 @@
+// arpsim plan: a configuration sized for a scene and its motion (sim/Planner),
+// written as a configuration file every command accepts, with plan.md beside it.
+#include <cstdio>
+#include <filesystem>
+
+#include "CommonOptions.hpp"
+#include "Commands.hpp"
+#include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
+#include "sim/Planner.hpp"
+
+namespace arp::app {
+
+namespace {
+
+struct PlanArgs {
+  ConfigOptions cfg;
+  sim::PlanRequest req;
+  std::string out = "plan.json";
+  bool quiet = false;
+};
+
+int run_plan(PlanArgs& a) {
+  sim::PlanRequest& r = a.req;
+  r.base = a.cfg.resolve();
+  r.base_source = (a.cfg.file.empty() ? std::string("the default configuration") : a.cfg.file) + (a.cfg.sets.empty() ? "" : " with --set");
+  const std::string md = std::filesystem::path(a.out).replace_extension(".md").string();
+  check_output_paths({{"--out", a.out}, {"--out's account", md}},
+                     {{"--config", a.cfg.file}, {"--walk", r.walk == "gallery" ? "" : r.walk},
+                      {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}});
+  ProgressLine progress("plan", !a.quiet);
+  r.progress = [&](double f, const std::string& w) { progress.update(f, w); };
+  const sim::Plan p = sim::make_plan(r);
+  progress.finish();
+  const std::string text = sim::plan_markdown(p, r);
+  write_text_atomic(a.out, sim::plan_config_text(p));
+  write_text_atomic(md, text);
+  std::printf("%s\narpsim plan: %s and %s written; run with --config %s\n", text.c_str(), a.out.c_str(), md.c_str(), a.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Runner add_plan_command(CLI::App& app) {
+  auto a = std::make_shared<PlanArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "plan", "Size a configuration for a scene and its motion: face size, datapath widths, display memories (docs/planning.md)");
+  a->cfg.add_to(*cmd);
+  add_memory_options(*cmd, a->req.memories);
+  add_walk_options(*cmd, a->req.walk, a->req.walk_speed, a->req.threshold_deg);
+  cmd->add_option("--texel-error", a->req.texel_error,
+                  "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
+      ->capture_default_str();
+  cmd->add_option("--resolve", a->req.resolve,
+                  "The display pixel a face's largest texel is held to: at the lens centre, or the finest (a corner)")
+      ->check(CLI::IsMember({"centre", "finest"}))
+      ->capture_default_str();
+  cmd->add_option("--load-tolerance", a->req.load_tolerance,
+                  "A display memory more must cut the host's load by more than this share of the least load")
+      ->capture_default_str();
+  cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
+                "Keep the starting configuration's datapath widths (no accuracy-harness search)");
+  cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();
+  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  return [a] { return run_plan(*a); };
+}
+
+}  // namespace arp::app

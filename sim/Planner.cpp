@@ -1,0 +1,391 @@
+#include "Planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "ConfigFile.hpp"
+#include "TradeMeasure.hpp"
+#include "common/InputError.hpp"
+#include "common/Units.hpp"
+#include "host/priority/PriorityScheduler.hpp"
+#include "host/render/DepthCode.hpp"
+#include "host/render/FaceFrustum.hpp"
+#include "host/scene/Gallery.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
+#include "reference/golden/GoldenReference.hpp"
+#include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
+
+namespace arp::sim {
+
+namespace {
+
+constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spread over it)
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// The smallest angle between neighbouring display pixels (across and down) after the lens, and the
+// angle at the panel's centre, from the golden reference's exact lens directions (eye 0; the other
+// eye mirrors it).
+std::pair<double, double> pixel_angles(const dp::ArpConfig& c) {
+  const int W = c.timing.h_active, H = c.timing.v_active;
+  std::vector<glm::dvec3> d(static_cast<size_t>(W) * static_cast<size_t>(H));
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) d[static_cast<size_t>(y) * static_cast<size_t>(W) + static_cast<size_t>(x)] = golden::lens_direction(c, 0, x, y);
+  auto angle = [](const glm::dvec3& a, const glm::dvec3& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); };
+  double lo = std::numeric_limits<double>::infinity();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const glm::dvec3& p = d[static_cast<size_t>(y) * static_cast<size_t>(W) + static_cast<size_t>(x)];
+      if (x + 1 < W) lo = std::min(lo, angle(p, d[static_cast<size_t>(y) * static_cast<size_t>(W) + static_cast<size_t>(x + 1)]));
+      if (y + 1 < H) lo = std::min(lo, angle(p, d[static_cast<size_t>(y + 1) * static_cast<size_t>(W) + static_cast<size_t>(x)]));
+    }
+  const int cx = W / 2, cy = H / 2;
+  const double centre = W > 1 ? angle(d[static_cast<size_t>(cy) * static_cast<size_t>(W) + static_cast<size_t>(cx - 1)],
+                                      d[static_cast<size_t>(cy) * static_cast<size_t>(W) + static_cast<size_t>(cx)])
+                              : lo;
+  return {lo, centre};
+}
+
+// The datapath widths the planner narrows, in the order it tries them, with their smallest allowed value.
+struct WidthKey {
+  const char* key;
+  int dp::DatapathWidths::*field;
+  int lo;
+};
+constexpr WidthKey kWidths[] = {
+    {"datapath.vec_frac", &dp::DatapathWidths::vec_frac, 1},
+    {"datapath.mat_frac", &dp::DatapathWidths::mat_frac, 1},
+    {"datapath.rot_frac", &dp::DatapathWidths::rot_frac, 1},
+    {"datapath.quot_frac", &dp::DatapathWidths::quot_frac, 2},
+    {"datapath.recip_frac_bits", &dp::DatapathWidths::recip_frac_bits, 4},
+    {"datapath.newton_steps", &dp::DatapathWidths::newton_steps, 0},  // before the table: a step costs two multipliers
+    {"datapath.recip_index_bits", &dp::DatapathWidths::recip_index_bits, 1},
+};
+
+class WidthSearch {
+ public:
+  WidthSearch(const PlanRequest& r, Plan& p) : req_(r), plan_(p) {
+    opt_ = accuracy_options(TradeScale{true});
+    opt_.color_orientations = 0;  // the bound is on texel position; colour follows from it
+    opt_.aligned = false;         // the aligned views are reported apart from the pooled error the bound is on
+  }
+  // The harness's largest texel-position error for c; +inf when c is not a valid configuration.
+  double error(const dp::ArpConfig& c) {
+    if (!dp::validate(c).empty()) return std::numeric_limits<double>::infinity();
+    ++plan_.harness_runs;
+    if (req_.progress) req_.progress(std::min(0.95, 0.1 + 0.02 * plan_.harness_runs), "sizing the datapath widths");
+    return accuracy::run(c, opt_).overall.max_error;
+  }
+
+ private:
+  const PlanRequest& req_;
+  Plan& plan_;
+  accuracy::Options opt_;
+};
+
+std::string widths_text(const dp::DatapathWidths& w) {
+  std::string s;
+  for (const WidthKey& k : kWidths) s += (s.empty() ? "" : ", ") + std::string(k.key + 9) + " " + std::to_string(w.*k.field);
+  return s;
+}
+
+// The motion planned over: the walk's points at display-frame times, at most kMaxSamples of them.
+struct MotionSamples {
+  std::vector<double> t;
+  double span_s = 0;
+};
+MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
+  MotionSamples m;
+  m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : 0.0;
+  const int64_t frames = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(m.span_s * hz)) + 1);
+  const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
+  for (int64_t f = 0; f < frames; f += step) m.t.push_back(static_cast<double>(f) / hz);
+  return m;
+}
+
+// A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
+LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
+                       double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s) {
+  LadderLoad L;
+  L.count = count;
+  L.update_frames = first;
+  L.update_ratio = ratio;
+  L.objects.assign(static_cast<size_t>(count), 0.0);
+  host::PriorityConfig pc;
+  pc.memories = count;
+  pc.update_frames = first;
+  pc.update_ratio = ratio;
+  pc.display_hz = hz;
+  pc.threshold_rad = threshold_rad;
+  host::PriorityScheduler sched(scene, pc, 1);
+  const size_t n = scene.objects.size();
+  int64_t late = 0;
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    for (size_t i = 0; i < n; ++i) {
+      const int m = sched.belongs_in(i);
+      L.objects[static_cast<size_t>(m)] += 1.0;
+      L.triangles_per_s += static_cast<double>(scene.objects[i].mesh->triangles()) * hz / static_cast<double>(sched.frames_per_update(m));
+      late += sched.period_s(m) > validity_s[k * n + i] ? 1 : 0;
+    }
+  }
+  const double samples = static_cast<double>(ms.t.size());
+  L.triangles_per_s /= samples;
+  for (double& o : L.objects) o /= samples;
+  L.late_share = n ? static_cast<double>(late) / (samples * static_cast<double>(n)) : 0.0;
+  return L;
+}
+
+std::string ladder_text(const LadderLoad& L) {
+  std::string s = std::to_string(L.count) + (L.count == 1 ? " memory" : " memories") + " every ";
+  for (int m = 0; m < L.count; ++m)
+    s += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
+  return s + " frames";
+}
+
+}  // namespace
+
+Plan make_plan(const PlanRequest& r) {
+  if (r.memories.scene.empty()) throw InputError("--scene", "", "a plan is made for a scene: name one (a file, or gallery)");
+  if (!(r.texel_error >= 0) || !std::isfinite(r.texel_error) || r.texel_error > 1000)
+    throw InputError("--texel-error", "", "must be 0 .. 1000 texels (0: what the starting configuration measures)");
+  if (!(r.threshold_deg >= 0) || r.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+  if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
+  config::check(r.base, r.base_source);
+  Plan p;
+  p.config = r.base;
+  auto progress = [&](double f, const std::string& w) {
+    if (r.progress) r.progress(f, w);
+  };
+
+  // The scene and its motion.
+  progress(0.0, "loading the scene");
+  const host::Scene scene = r.memories.load_scene();
+  p.scene_name = scene.name;
+  p.scene_hash = host::scene_hash(scene);
+  p.objects = scene.objects.size();
+  p.triangles = scene.triangles();
+  HostSpec hs;
+  hs.walk = r.walk.empty() ? "gallery" : r.walk;
+  hs.walk_speed = r.walk.empty() ? std::optional<double>(0.0) : r.walk_speed;
+  const host::WalkPath walk = hs.make_walk();
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const MotionSamples ms = sample_motion(walk, hz);
+  p.motion_s = ms.span_s;
+  p.samples = static_cast<int>(ms.t.size());
+  p.config.plan.scene_hash = p.scene_hash;
+
+  // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
+  progress(0.02, "measuring the display's pixel angles");
+  const auto [amin, acentre] = pixel_angles(r.base);
+  p.pixel_angle_min_rad = amin;
+  p.pixel_angle_centre_rad = acentre;
+  // Any display pixel can look at any texel as the head turns, so the largest texel is held to the pixel.
+  auto face_for = [](double pixel_rad) {
+    return static_cast<int>(std::clamp(std::ceil(1.0 / std::tan(pixel_rad / 2.0) - 1e-9), 1.0, 16384.0));
+  };
+  const bool finest = r.resolve == "finest";
+  if (!finest && r.resolve != "centre") throw InputError("--resolve", r.resolve, "must be centre or finest");
+  const int S = face_for(finest ? amin : acentre);
+  p.config.memory.face_size = S;
+  p.choices.push_back({"memory.face_size", std::to_string(S),
+                       "a display pixel after the lens subtends " + fmt("%.4f", rad_to_deg(acentre) * 60.0) +
+                           " arcmin at the lens centre, " + fmt("%.4f", rad_to_deg(amin) * 60.0) +
+                           " at the finest (the panel's corners); a face's largest texel, at its centre, subtends 2 atan(1/S): S = " +
+                           std::to_string(S) + " is the smallest no coarser than the " + (finest ? "finest pixel" : "centre pixel") +
+                           " (" + fmt("%.4f", rad_to_deg(2.0 * std::atan(1.0 / S)) * 60.0) + " arcmin; --resolve " +
+                           (finest ? "centre gives " + std::to_string(face_for(acentre)) : "finest gives " + std::to_string(face_for(amin))) +
+                           "); a finer face is not resolved"});
+
+  // 2. Widths: the narrowest the harness keeps within the bound at the planned face size.
+  WidthSearch search(r, p);
+  if (!r.size_widths) {
+    p.choices.push_back({"datapath.*", widths_text(p.config.widths), "kept from " + r.base_source + " (--keep-widths): not measured"});
+  } else {
+    p.texel_error_base = search.error(r.base);
+    p.texel_error_bound = r.texel_error > 0 ? r.texel_error : p.texel_error_base;
+    dp::ArpConfig c = p.config;
+    double err = search.error(c);
+    for (int wider = 1; err > p.texel_error_bound && wider <= 16; wider *= 2) {
+      // Wider than the start, every width by the same number of bits (1, 2, 4 ...), up to the top of its
+      // range: the last is the best this datapath can do.
+      c = p.config;
+      for (const WidthKey& k : kWidths) {
+        const auto* param = dp::arp_parameters().find(k.key);
+        c.widths.*k.field = static_cast<int>(std::min<int64_t>(param->int_max, c.widths.*k.field + (wider == 16 ? 64 : wider)));
+      }
+      err = search.error(c);
+      if (wider == 16 && !(err <= p.texel_error_bound))
+        throw InputError("--texel-error", fmt("%g", p.texel_error_bound),
+                         "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
+                             fmt("%.4f", err) + " texels (every width at its widest)");
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+      bool changed = false;
+      for (const WidthKey& k : kWidths) {
+        // Binary search the smallest value still within the bound (error grows as a width narrows).
+        int lo = k.lo, hi = c.widths.*k.field;
+        while (lo < hi) {
+          const int mid = lo + (hi - lo) / 2;
+          dp::ArpConfig t = c;
+          t.widths.*k.field = mid;
+          if (search.error(t) <= p.texel_error_bound) hi = mid;
+          else lo = mid + 1;
+        }
+        if (hi != c.widths.*k.field) {
+          c.widths.*k.field = hi;
+          changed = true;
+        }
+      }
+      if (!changed) break;
+    }
+    p.texel_error_planned = search.error(c);
+    p.config.widths = c.widths;
+    p.choices.push_back({"datapath.*", widths_text(c.widths),
+                         "the narrowest each (tried one at a time, twice over) with the accuracy harness's largest texel-position "
+                         "error at face size " + std::to_string(S) + " within " + fmt("%.4f", p.texel_error_bound) + " texels" +
+                             (r.texel_error > 0 ? " (--texel-error)" : " (what " + r.base_source + " measures: --texel-error)") +
+                             ": measured " + fmt("%.4f", p.texel_error_planned) + " over the quick harness sample, " +
+                             std::to_string(p.harness_runs) + " harness runs"});
+  }
+
+  // 3. Display memories: the ladder of update periods with the least host load, in as few memories as
+  // come within the tolerance of the least.
+  progress(0.96, "choosing the display memories");
+  p.threshold_rad = r.threshold_deg > 0 ? deg_to_rad(r.threshold_deg) : dp::texel_angle_rad(S);
+  const size_t n = scene.objects.size();
+  std::vector<double> validity_s(ms.t.size() * n, host::kForever);
+  p.fastest_need_frames = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    const glm::dvec3 eye = walk.position(ms.t[k]);
+    for (size_t i = 0; i < n; ++i) {
+      const double v = host::object_validity(scene.objects[i], eye, walk.speed(), ms.t[k], p.threshold_rad).period_s();
+      validity_s[k * n + i] = v;
+      p.fastest_need_frames = std::min(p.fastest_need_frames, v * hz);
+    }
+  }
+  // Memory 0 no slower than the fastest need (every object can be kept within theta_t), a power of two.
+  int first = 1;
+  while (first * 2 <= std::min<double>(p.fastest_need_frames, static_cast<double>(dp::MemoryConfig::kMaxUpdateFrames))) first *= 2;
+  std::vector<LadderLoad> candidates;
+  if (n == 0) {
+    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s));
+  } else {
+    for (int count = 1; count <= dp::kCompositionInputs; ++count)
+      for (const int ratio : {2, 3, 4}) {
+        dp::ArpConfig t = p.config;
+        t.memory.count = count;
+        t.memory.update_frames = first;
+        t.memory.update_ratio = ratio;
+        if (!dp::validate(t).empty()) continue;  // the slowest period beyond the key's range
+        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s));
+        if (count == 1) break;  // the ratio does not matter with one memory
+      }
+  }
+  p.best = *std::min_element(candidates.begin(), candidates.end(),
+                             [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
+  p.planned = p.best;
+  for (const LadderLoad& L : candidates)  // the fewest memories within the tolerance, then the least load
+    if (L.triangles_per_s <= p.best.triangles_per_s * (1 + r.load_tolerance) &&
+        (L.count < p.planned.count || (L.count == p.planned.count && L.triangles_per_s < p.planned.triangles_per_s)))
+      p.planned = L;
+  p.base_ladder = n == 0 ? p.planned
+                         : ladder_load(scene, walk, ms, hz, p.threshold_rad, r.base.memory.count, r.base.memory.update_frames,
+                                       r.base.memory.update_ratio, validity_s);
+  p.ladders = candidates;
+  p.config.memory.count = p.planned.count;
+  p.config.memory.update_frames = p.planned.update_frames;
+  p.config.memory.update_ratio = p.planned.update_ratio;
+  if (n == 0) {
+    p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio", "1, 1, 2",
+                         "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
+  } else {
+    std::string why = "over " + std::to_string(p.samples) + " points of the motion (" + fmt("%.1f", p.motion_s) +
+                      " s) at theta_t " + fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg, the fastest any object needs "
+                      "re-rendering is every " + fmt("%.1f", p.fastest_need_frames) + " frames, so memory 0 updates every " +
+                      std::to_string(first) + "; of " + std::to_string(candidates.size()) + " ladders (1 .. " +
+                      std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4) the least host load is " +
+                      fmt("%.3g", p.best.triangles_per_s) + " triangles/s (" + ladder_text(p.best) + "); " +
+                      ladder_text(p.planned) + " is the fewest within " + fmt("%.0f", 100 * r.load_tolerance) +
+                      " % of it: " + fmt("%.3g", p.planned.triangles_per_s) + " triangles/s, against " +
+                      fmt("%.3g", p.base_ladder.triangles_per_s) + " for " + r.base_source + " (" + ladder_text(p.base_ladder) + ")";
+    if (p.fastest_need_frames < 1)
+      why += "; some objects need more than one update a frame: the display rate cannot keep them within theta_t";
+    p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio",
+                         std::to_string(p.planned.count) + ", " + std::to_string(p.planned.update_frames) + ", " +
+                             std::to_string(p.planned.update_ratio),
+                         why});
+  }
+
+  // 4. Faces any object reaches over the motion (the memory allocates only the tiles written).
+  const double near_m = host::DepthCode{}.near_m;
+  for (const double t : ms.t) {
+    const host::FaceLists fl = host::cull_to_faces(scene, {}, t, walk.position(t), near_m);
+    for (int f = 0; f < 6; ++f) p.faces_reached[static_cast<size_t>(f)] = p.faces_reached[static_cast<size_t>(f)] || !fl.per_face[static_cast<size_t>(f)].empty();
+  }
+  static const char* const kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+  std::string absent;
+  for (int f = 0; f < 6; ++f)
+    if (!p.faces_reached[static_cast<size_t>(f)]) absent += (absent.empty() ? "" : ", ") + std::string(kFaceNames[f]);
+  p.not_decided.push_back(
+      "which faces exist: " + (absent.empty() ? std::string("every face is reached by some object") : "faces " + absent + " are never reached by any object") +
+      "; the memory allocates only the 32 x 32 tiles written (docs/host.md), so an unreached face costs the model nothing, "
+      "but there is no key yet to leave it out of the hardware");
+  p.not_decided.push_back("a face size per memory (one face size for every memory)");
+  p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
+  p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");
+  p.memory_bytes_planned = display_memory_bytes(p.config);
+  p.memory_bytes_base = display_memory_bytes(r.base);
+  config::check(p.config, "the plan");
+  progress(1.0, "planned");
+  return p;
+}
+
+std::string plan_config_text(const Plan& p) { return config::to_json(p.config).dump(2) + "\n"; }
+
+std::string plan_markdown(const Plan& p, const PlanRequest& r) {
+  std::string s = "# Plan for scene " + p.scene_name + "\n\n";
+  s += "Scene: " + std::to_string(p.objects) + " objects, " + std::to_string(p.triangles) + " triangles (plan.scene_hash " +
+       std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
+       ", " + fmt("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated. Started from " + r.base_source + ".\n\n";
+  s += "| keys | value | reason |\n| --- | --- | --- |\n";
+  for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
+  s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";
+  s += "| face size | " + std::to_string(r.base.memory.face_size) + " | " + std::to_string(p.config.memory.face_size) + " |\n";
+  if (p.harness_runs > 0)
+    s += "| texel error (harness, texels) | " + fmt("%.4f", p.texel_error_base) + " (at " + std::to_string(r.base.memory.face_size) +
+         ") | " + fmt("%.4f", p.texel_error_planned) + " (bound " + fmt("%.4f", p.texel_error_bound) + ") |\n";
+  s += "| display memories | " + ladder_text(p.base_ladder) + " | " + ladder_text(p.planned) + " |\n";
+  s += "| host load, triangles/s | " + fmt("%.4g", p.base_ladder.triangles_per_s) + " | " + fmt("%.4g", p.planned.triangles_per_s) + " |\n";
+  s += "| object-samples updated slower than they need | " + fmt("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
+       fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
+  s += "| display memory (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
+  s += "\nMean objects in each planned memory:";
+  for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
+  s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
+       "(host::PriorityScheduler), hardware display memory at the planned face size.\n\n"
+       "| memories | update periods, frames | triangles/s | updated slower than needed | display memory, MiB |\n"
+       "| --- | --- | --- | --- | --- |\n";
+  for (const LadderLoad& L : p.ladders) {
+    dp::ArpConfig c = p.config;
+    c.memory.count = L.count;
+    std::string periods;
+    for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
+    s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
+         fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(display_memory_bytes(c)) / 1048576.0) +
+         (L.count == p.planned.count && L.update_ratio == p.planned.update_ratio ? " (planned)" : "") + " |\n";
+  }
+  s += "\n## Not decided by this plan\n\n";
+  for (const auto& n : p.not_decided) s += "- " + n + "\n";
+  return s;
+}
+
+}  // namespace arp::sim

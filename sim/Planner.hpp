@@ -1,0 +1,88 @@
+// `arpsim plan`: a configuration sized for one scene and its motion, each
+// choice with its reason and the figures it came from (docs/planning.md):
+// - the face size, from the angle between neighbouring display pixels after
+//   the lens (the largest texel, at a face's centre, no coarser than the finest
+//   pixel; any finer is not resolved);
+// - the datapath's narrowest widths that keep the accuracy harness's texel
+//   error within the bound, at that face size;
+// - the display memories and their update periods (Regan & Pose's priority
+//   classes): each object's validity period over the motion at theta_t, put
+//   through the run's own priority rule (host::PriorityScheduler) for every
+//   candidate ladder, the host's rendering load measured for each;
+// - the cube faces any object reaches over the motion.
+// What it does not decide yet is listed in the plan itself (Plan::not_decided).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "HardwareCost.hpp"
+#include "RunSpec.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
+
+namespace arp::sim {
+
+struct PlanRequest {
+  dp::ArpConfig base;                  // what the plan starts from: the defaults, --config, --set
+  std::string base_source = "the embedded default";
+  MemoryContents memories;             // the scene (.scene is required)
+  std::string walk;                    // "gallery" or a walk file; empty: the head stays at the walk's start
+  std::optional<double> walk_speed;    // as run --speed
+  double texel_error = 0;              // texels, max over the harness's samples (0: what `base` measures)
+  double threshold_deg = 0;            // theta_t (0: one texel at the planned face size)
+  std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"
+  double load_tolerance = 0.10;        // a memory more must save more than this share of the host's load
+  bool size_widths = true;             // false: keep the starting configuration's datapath widths (--keep-widths)
+  std::function<void(double, const std::string&)> progress;
+};
+
+struct PlanChoice {
+  std::string keys;    // the configuration keys it sets
+  std::string value;   // as written in the configuration
+  std::string reason;  // why, with the figures
+};
+
+// One candidate ladder of display memories and what the motion costs with it.
+struct LadderLoad {
+  int count = 1, update_frames = 1, update_ratio = 2;
+  double triangles_per_s = 0;     // host rendering load, mean over the motion
+  double late_share = 0;          // object-samples whose memory updates slower than their validity needs
+  std::vector<double> objects;    // mean objects in each memory
+};
+
+struct Plan {
+  dp::ArpConfig config;
+  std::vector<PlanChoice> choices;
+  std::vector<std::string> not_decided;  // what a plan should decide and this one does not (yet)
+  std::string scene_name;
+  int64_t scene_hash = 0;
+  size_t objects = 0, triangles = 0;
+  double motion_s = 0;                    // the motion's span planned over
+  int samples = 0;                        // points of the motion evaluated
+  // Face size
+  double pixel_angle_min_rad = 0, pixel_angle_centre_rad = 0;
+  // Widths
+  double texel_error_bound = 0, texel_error_base = 0, texel_error_planned = 0;
+  int harness_runs = 0;
+  // Memories
+  double threshold_rad = 0;
+  LadderLoad planned, base_ladder, best;  // best: the lowest load of any candidate
+  std::vector<LadderLoad> ladders;        // every candidate weighed
+  double fastest_need_frames = 0;        // the shortest validity of any object, in display frames
+  std::array<bool, 6> faces_reached{};    // by some object at some point of the motion
+  // Display memory as hardware (eyes x memories x 2 buffers x faces reached x S^2 x texel bits)
+  int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
+};
+
+// InputError for a bad request (no scene, a bound no widths meet -- naming the best achievable).
+Plan make_plan(const PlanRequest& r);
+
+// The configuration file (every key; every command accepts it as --config).
+std::string plan_config_text(const Plan& p);
+// The human-readable account: each choice with its reason, the figures, what is not decided.
+std::string plan_markdown(const Plan& p, const PlanRequest& r);
+
+}  // namespace arp::sim

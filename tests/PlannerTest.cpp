@@ -1,0 +1,209 @@
+// arpsim plan (sim/Planner): decisions on small constructed scenes whose right
+// answer is known in closed form, the bound on the datapath's error checked by
+// the accuracy harness afresh, the plan file read back as any configuration,
+// and the priority ladder's keys as the host uses them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "TestSupport.hpp"
+#include "common/InputError.hpp"
+#include "host/priority/PriorityScheduler.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
+#include "host/scene/Primitives.hpp"
+#include "reference/accuracy/AccuracyHarness.hpp"
+#include "sim/ConfigFile.hpp"
+#include "sim/Planner.hpp"
+#include "sim/TradeMeasure.hpp"
+
+namespace arp::sim {
+namespace {
+
+using test::read_text;
+using test::run_command;
+using test::TempDir;
+const std::string kArpsim = ARPSIM_BINARY;
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// A small display keeps the harness quick; the planner's arithmetic does not depend on the size.
+dp::ArpConfig small_display() { return config::apply_overrides({}, {"display.h_active=160", "display.v_active=120"}); }
+
+PlanRequest request(const std::string& scene, const std::string& walk = "") {
+  PlanRequest r;
+  r.base = small_display();
+  r.memories.scene = scene;
+  r.walk = walk;
+  return r;
+}
+
+// An undistorted lens of horizontal field F over W pixels: the two pixels either side of the centre
+// look tan(F/2)/W either side of the axis, so they are 2 atan(tan(F/2)/W) apart, and the face whose
+// centre texel, 2 atan(1/S), is no coarser has S = ceil(W / tan(F/2)).
+TEST(Planner, TheFaceSizeIsTheDisplaysResolutionAtTheLensCentre) {
+  TempDir d;
+  write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
+  for (const double fov : {90.0, 120.0, 60.0}) {
+    PlanRequest r = request(d.file("empty.json"));
+    r.base = config::apply_overrides({}, {"lens.k=[1,0,0,0]", "lens.fov_deg=" + std::to_string(fov)});
+    r.base.timing.h_active = 640;
+    r.size_widths = false;  // the face size alone
+    const Plan p = make_plan(r);
+    // The centre pair (x = 319, 320 on row 240) is half a pixel below the axis: e = tan(F/2)/W either
+    // side and below, directions (-e, -e, -1) and (e, -e, -1), |a x b| = 2e sqrt(1 + e^2), a.b = 1.
+    const double e = std::tan(fov * 3.14159265358979323846 / 360.0) / 640.0;
+    const double alpha = std::atan(2 * e * std::sqrt(1 + e * e));
+    EXPECT_NEAR(p.pixel_angle_centre_rad, alpha, 1e-15);
+    const double expected = std::ceil(1.0 / std::tan(alpha / 2) - 1e-9);
+    EXPECT_EQ(p.config.memory.face_size, static_cast<int>(expected)) << fov << " degrees";
+    EXPECT_NEAR(expected, 640.0 / std::tan(fov * 3.14159265358979323846 / 360.0), 1.0);  // about W / tan(F/2)
+    // The corners of a flat panel are finer in angle than its centre: held to them, the face is larger.
+    r.resolve = "finest";
+    EXPECT_GT(make_plan(r).config.memory.face_size, p.config.memory.face_size);
+  }
+}
+
+TEST(Planner, AnEmptySceneGivesOneMemoryAndSaysWhy) {
+  TempDir d;
+  write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
+  const Plan p = make_plan(request(d.file("empty.json")));
+  EXPECT_EQ(p.config.memory.count, 1);
+  bool said = false;
+  for (const auto& c : p.choices) said = said || c.reason.find("the scene is empty") != std::string::npos;
+  EXPECT_TRUE(said);
+  for (const bool f : p.faces_reached) EXPECT_FALSE(f);
+}
+
+// One object a kilometre ahead, walked toward for ten metres: its image stays within theta_t for
+// hundreds of frames throughout, so one memory updated that rarely carries it, and no ladder does
+// better; every face but the one it lies on is never reached.
+TEST(Planner, OneFarObjectNeedsOneMemoryAndOneFace) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -1000]}]})");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -10]]})");
+  PlanRequest r = request(d.file("far.json"), d.file("walk.json"));
+  r.threshold_deg = 0.5;
+  const Plan p = make_plan(r);
+  EXPECT_EQ(p.config.memory.count, 1);
+  // Regan & Pose's translational validity (Chow 2005, figure 3), the shortest term here: the user may
+  // move sideways by x = d sqrt(2 (1 - cos theta)) before an object at surface distance d shifts by
+  // theta; nearest at the walk's end, d = 990 - 0.5 m, at 1 m/s, in this display's frames.
+  const double th = 0.5 * 3.14159265358979323846 / 180.0, d_end = 990.0 - 0.5;
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const double need = d_end * std::sqrt(2 * (1 - std::cos(th))) * hz;
+  EXPECT_NEAR(p.fastest_need_frames, need, need * 2e-5);  // the tessellated sphere's bound is within millimetres of 0.5 m
+  EXPECT_EQ(p.config.memory.update_frames, 1 << static_cast<int>(std::floor(std::log2(need))));  // the largest power of two within it
+  const std::array<bool, 6> only_minus_z{false, false, false, false, false, true};
+  EXPECT_EQ(p.faces_reached, only_minus_z);
+}
+
+// Objects near the walk need every frame, objects far away far less: several memories pay.
+TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
+  TempDir d;
+  std::string objs;
+  for (int i = 0; i < 6; ++i) {
+    const double z = -std::pow(3.0, i + 1);  // 3 m .. 729 m ahead
+    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
+            std::to_string(z) + "]}";
+  }
+  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -2]]})");
+  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
+  r.threshold_deg = 1;
+  const Plan p = make_plan(r);
+  EXPECT_GT(p.config.memory.count, 1);
+  LadderLoad one;
+  for (const auto& L : p.ladders)
+    if (L.count == 1) one = L;
+  ASSERT_EQ(one.count, 1);
+  EXPECT_LT(p.planned.triangles_per_s, 0.5 * one.triangles_per_s);
+  EXPECT_LE(p.planned.triangles_per_s, p.best.triangles_per_s * (1 + r.load_tolerance));
+  for (const auto& L : p.ladders)  // the fewest memories that come within the tolerance of the least load
+    if (L.count < p.planned.count) {
+      EXPECT_GT(L.triangles_per_s, p.best.triangles_per_s * (1 + r.load_tolerance)) << L.count;
+    }
+}
+
+// A loose bound gives narrower widths than a tight one, and the harness, run afresh on the plan,
+// measures within the bound.
+TEST(Planner, ALooserBoundGivesNarrowerWidthsWithinIt) {
+  TempDir d;
+  write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
+  PlanRequest r = request(d.file("empty.json"));
+  r.texel_error = 2.0;
+  const Plan loose = make_plan(r);
+  r.texel_error = 0.1;
+  const Plan tight = make_plan(r);
+  const auto& a = loose.config.widths;
+  const auto& b = tight.config.widths;
+  EXPECT_LT(a.vec_frac + a.mat_frac + a.rot_frac + a.quot_frac + a.recip_frac_bits,
+            b.vec_frac + b.mat_frac + b.rot_frac + b.quot_frac + b.recip_frac_bits);
+  for (const Plan* p : {&loose, &tight}) {
+    accuracy::Options o = accuracy_options(TradeScale{true});
+    o.color_orientations = 0;
+    o.aligned = false;
+    o.seed = 7;  // other samples than the planner's
+    const double err = accuracy::run(p->config, o).overall.max_error;
+    EXPECT_LE(err, p->texel_error_bound * 1.25) << "bound " << p->texel_error_bound;
+    EXPECT_LE(p->texel_error_planned, p->texel_error_bound);
+  }
+}
+
+TEST(Planner, ABoundNoWidthsMeetNamesTheBestAchievable) {
+  TempDir d;
+  write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
+  PlanRequest r = request(d.file("empty.json"));
+  r.texel_error = 1e-6;
+  const InputError e = test::error_of([&] { make_plan(r); });
+  EXPECT_EQ(e.source(), "--texel-error");
+  EXPECT_NE(std::string(e.what()).find("the best achievable is"), std::string::npos) << e.what();
+}
+
+TEST(PriorityLadder, MemoriesUpdateAtTheConfiguredPeriods) {
+  host::Scene s;
+  host::PriorityConfig pc;
+  pc.memories = 3;
+  pc.update_frames = 3;
+  pc.update_ratio = 4;
+  const host::PriorityScheduler sched(s, pc, 64);
+  EXPECT_EQ(sched.frames_per_update(0), 3);
+  EXPECT_EQ(sched.frames_per_update(1), 12);
+  EXPECT_EQ(sched.frames_per_update(2), 48);
+  // The slowest memory's period is bounded, named by the key that makes it too long.
+  dp::ArpConfig c;
+  c.memory.count = 16;
+  c.memory.update_ratio = 64;
+  const auto issues = dp::validate(c);
+  ASSERT_FALSE(issues.empty());
+  EXPECT_EQ(issues.front().key, "memory.update_ratio");
+  c.memory.update_ratio = 2;
+  EXPECT_TRUE(dp::validate(c).empty());
+}
+
+// The command: plan.json is a configuration any command reads; a run with another scene warns once.
+TEST(PlanCli, ThePlanIsAConfigurationAndKnowsItsScene) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") +
+                             " --set display.h_active=160 --set display.v_active=120 -o " + d.file("plan.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("| memory.face_size | 161 |"), std::string::npos) << r.output;
+  const dp::ArpConfig c = config::load_file(d.file("plan.json"));
+  EXPECT_EQ(c.memory.face_size, 161);
+  EXPECT_NE(c.plan.scene_hash, 0);
+  EXPECT_NE(test::read_text(d.file("plan.md")).find("## Not decided by this plan"), std::string::npos);
+  const auto same = run_command(kArpsim + " frame --config " + d.file("plan.json") + " --scene " + d.file("far.json") + " -o " + d.file("a.png"));
+  ASSERT_EQ(same.status, 0) << same.output;
+  EXPECT_EQ(same.output.find("planned for another scene"), std::string::npos) << same.output;
+  const auto other = run_command(kArpsim + " run -q --config " + d.file("plan.json") + " --scene gallery --walk gallery --frames 2 --every 0");
+  ASSERT_EQ(other.status, 0) << other.output;
+  const std::string warn = d.file("plan.json") + " was planned for another scene";
+  const size_t at = other.output.find(warn);
+  ASSERT_NE(at, std::string::npos) << other.output;
+  EXPECT_EQ(other.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << other.output;
+  EXPECT_NE(other.output.find("scene gallery hashes to"), std::string::npos) << other.output;
+}
+
+}  // namespace
+}  // namespace arp::sim
