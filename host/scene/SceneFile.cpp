@@ -1,5 +1,7 @@
 #include "SceneFile.hpp"
 
+#include "Gallery.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -92,8 +94,11 @@ class Fields {
 
 Scene scene_from_json(const json& j, const std::string& source, const std::string& base_dir) {
   Fields top(j, source, "");
-  Scene s;
-  s.name = top.text("name", "scene");
+  // "base": "gallery" -- the built-in gallery first, this file's objects added to it.
+  const std::string base = top.text("base", "");
+  if (!base.empty() && base != "gallery") top.fail("base", "must be \"gallery\" (the built-in scene) or absent");
+  Scene s = base.empty() ? Scene{} : make_gallery();
+  s.name = top.text("name", base.empty() ? "scene" : base);
   if (const json* ext = top.sub("extent")) {
     Fields e(*ext, source, "extent");
     s.extent_min = e.vec3("min", s.extent_min, -kWorldLimitM, kWorldLimitM);
