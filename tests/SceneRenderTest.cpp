@@ -233,7 +233,7 @@ TEST(CubeFaceRenderer, AnyThreadCountGivesTheSameBits) {
   }
 }
 
-// The renderer's output pinned: the gallery from three points of its walk at 96^2, every memory word,
+// The renderer's output pinned: the gallery from four points of its walk (0, 2, 4, 6) at 96^2, every memory word,
 // every texel's object and the counts, hashed (FNV-1a). The expected value is what the renderer of
 // commit 4107c2e computed -- before it was made parallel and incremental -- built on its own from
 // that commit with this same function; a change to the renderer's arithmetic shows here.
@@ -321,9 +321,19 @@ TEST(Scenes, SceneFilesLoadAndBadOnesSayWhereAndWhy) {
   fails("{\"objects\": [", "line 1, column 14: JSON syntax error: syntax error while parsing value");
   fails(R"({"objects": [{"cylinder": [1,1,0], "texture": "t.png"}]})", "texture coordinates");
   fails(R"({"objects": [{"quad": [1,1,0], "texture": "missing.png"}]})", "missing.png");
+  fails(R"({"base": "cathedral", "objects": []})", "base");
   // An empty scene is a scene.
   std::ofstream(d.file("empty.json")) << R"({"objects": []})";
   EXPECT_TRUE(load_scene_file(d.file("empty.json")).objects.empty());
+  // "base": "gallery": the built-in gallery, then the file's objects, named as the file says.
+  std::ofstream(d.file("more.json")) << R"({"name": "more", "base": "gallery", "objects": [{"name": "extra", "sphere": 0.1}]})";
+  const Scene more = load_scene_file(d.file("more.json"));
+  const Scene g = make_gallery();
+  ASSERT_EQ(more.objects.size(), g.objects.size() + 1);
+  EXPECT_EQ(more.objects.front().name, g.objects.front().name);
+  EXPECT_EQ(more.objects.back().name, "extra");
+  EXPECT_EQ(more.name, "more");
+  EXPECT_EQ(more.extent_max, g.extent_max);
 }
 
 TEST(Scenes, BrokenModelsFromAssimpTestModelsAreRefusedClearly) {
