@@ -60,7 +60,7 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
     usb_ = source_->live() ? source_.get() : nullptr;
   }
   MemoryContents contents = spec_.memories;
-  contents.expect_plan(spec_.config, "the configuration");
+  contents.expect_plan(spec_.config, spec_.config_source);
   contents.fill(mem_, dp::Quat{}, memory_source_, spec_.threads);
   wall0_ = Clock::now();
   usb_offset_ = usb_ ? -usb_->now_ps() : 0;

@@ -19,6 +19,7 @@ namespace arp::sim {
 
 struct LiveSpec {
   dp::ArpConfig config;
+  std::string config_source = "the configuration";  // names it in messages (--config's file)
   MemoryContents memories;
   tracker::MotionSpec motion;  // default: a 100 deg/s head shake
   std::string trace, live;     // --trace FILE, --live usb

@@ -53,20 +53,21 @@ std::pair<double, double> pixel_angles(const dp::ArpConfig& c) {
   return {lo, centre};
 }
 
-// The datapath widths the planner narrows, in the order it tries them, with their smallest allowed value.
+// The datapath widths the planner narrows, in the order it tries them (their ranges: the parameter table).
 struct WidthKey {
   const char* key;
   int dp::DatapathWidths::*field;
-  int lo;
+  int lo() const { return static_cast<int>(dp::arp_parameters().find(key)->int_min); }
+  int hi() const { return static_cast<int>(dp::arp_parameters().find(key)->int_max); }
 };
 constexpr WidthKey kWidths[] = {
-    {"datapath.vec_frac", &dp::DatapathWidths::vec_frac, 1},
-    {"datapath.mat_frac", &dp::DatapathWidths::mat_frac, 1},
-    {"datapath.rot_frac", &dp::DatapathWidths::rot_frac, 1},
-    {"datapath.quot_frac", &dp::DatapathWidths::quot_frac, 2},
-    {"datapath.recip_frac_bits", &dp::DatapathWidths::recip_frac_bits, 4},
-    {"datapath.newton_steps", &dp::DatapathWidths::newton_steps, 0},  // before the table: a step costs two multipliers
-    {"datapath.recip_index_bits", &dp::DatapathWidths::recip_index_bits, 1},
+    {"datapath.vec_frac", &dp::DatapathWidths::vec_frac},
+    {"datapath.mat_frac", &dp::DatapathWidths::mat_frac},
+    {"datapath.rot_frac", &dp::DatapathWidths::rot_frac},
+    {"datapath.quot_frac", &dp::DatapathWidths::quot_frac},
+    {"datapath.recip_frac_bits", &dp::DatapathWidths::recip_frac_bits},
+    {"datapath.newton_steps", &dp::DatapathWidths::newton_steps},  // before the table: a step costs two multipliers
+    {"datapath.recip_index_bits", &dp::DatapathWidths::recip_index_bits},
 };
 
 class WidthSearch {
@@ -104,7 +105,8 @@ struct MotionSamples {
 MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   MotionSamples m;
   m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : 0.0;
-  const int64_t frames = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(m.span_s * hz)) + 1);
+  // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
+  const int64_t frames = static_cast<int64_t>(std::clamp(std::ceil(m.span_s * hz) + 1, 1.0, 1099511627776.0));
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
   for (int64_t f = 0; f < frames; f += step) m.t.push_back(static_cast<double>(f) / hz);
   return m;
@@ -118,11 +120,11 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   L.update_frames = first;
   L.update_ratio = ratio;
   L.objects.assign(static_cast<size_t>(count), 0.0);
-  host::PriorityConfig pc;
-  pc.memories = count;
-  pc.update_frames = first;
-  pc.update_ratio = ratio;
-  pc.display_hz = hz;
+  dp::MemoryConfig mc;
+  mc.count = count;
+  mc.update_frames = first;
+  mc.update_ratio = ratio;
+  host::PriorityConfig pc = host::PriorityConfig::of(mc, hz);
   pc.threshold_rad = threshold_rad;
   host::PriorityScheduler sched(scene, pc, 1);
   const size_t n = scene.objects.size();
@@ -156,7 +158,9 @@ Plan make_plan(const PlanRequest& r) {
   if (r.memories.scene.empty()) throw InputError("--scene", "", "a plan is made for a scene: name one (a file, or gallery)");
   if (!(r.texel_error >= 0) || !std::isfinite(r.texel_error) || r.texel_error > 1000)
     throw InputError("--texel-error", "", "must be 0 .. 1000 texels (0: what the starting configuration measures)");
-  if (!(r.threshold_deg >= 0) || r.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+  HostSpec::threshold_rad(r.threshold_deg);  // its range
+  if (r.walk.empty())
+    throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
   config::check(r.base, r.base_source);
   Plan p;
@@ -173,8 +177,8 @@ Plan make_plan(const PlanRequest& r) {
   p.objects = scene.objects.size();
   p.triangles = scene.triangles();
   HostSpec hs;
-  hs.walk = r.walk.empty() ? "gallery" : r.walk;
-  hs.walk_speed = r.walk.empty() ? std::optional<double>(0.0) : r.walk_speed;
+  hs.walk = r.walk;
+  hs.walk_speed = r.walk_speed;
   const host::WalkPath walk = hs.make_walk();
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
   const MotionSamples ms = sample_motion(walk, hz);
@@ -214,24 +218,26 @@ Plan make_plan(const PlanRequest& r) {
     dp::ArpConfig c = p.config;
     double err = search.error(c);
     for (int wider = 1; err > p.texel_error_bound && wider <= 16; wider *= 2) {
-      // Wider than the start, every width by the same number of bits (1, 2, 4 ...), up to the top of its
+      // Wider than the start, every width by the same number of bits (1, 2, 4 ...), then the top of its
       // range: the last is the best this datapath can do.
+      const dp::DatapathWidths before = c.widths;
       c = p.config;
-      for (const WidthKey& k : kWidths) {
-        const auto* param = dp::arp_parameters().find(k.key);
-        c.widths.*k.field = static_cast<int>(std::min<int64_t>(param->int_max, c.widths.*k.field + (wider == 16 ? 64 : wider)));
-      }
-      err = search.error(c);
-      if (wider == 16 && !(err <= p.texel_error_bound))
-        throw InputError("--texel-error", fmt("%g", p.texel_error_bound),
-                         "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
+      for (const WidthKey& k : kWidths) c.widths.*k.field = wider == 16 ? k.hi() : std::min(k.hi(), c.widths.*k.field + wider);
+      bool same = true;
+      for (const WidthKey& k : kWidths) same = same && c.widths.*k.field == before.*k.field;
+      if (!same) err = search.error(c);  // (every width already at its top: measured)
+      if ((wider == 16 || same) && !(err <= p.texel_error_bound))
+        throw InputError("--texel-error", r.texel_error > 0 ? fmt("%g", p.texel_error_bound) : "",
+                         std::string(r.texel_error > 0 ? "" : "the bound measured from " + r.base_source + ", " +
+                                                                  fmt("%.4f", p.texel_error_bound) + " texels: ") +
+                             "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
                              fmt("%.4f", err) + " texels (every width at its widest)");
     }
     for (int pass = 0; pass < 2; ++pass) {
       bool changed = false;
       for (const WidthKey& k : kWidths) {
         // Binary search the smallest value still within the bound (error grows as a width narrows).
-        int lo = k.lo, hi = c.widths.*k.field;
+        int lo = k.lo(), hi = c.widths.*k.field;
         while (lo < hi) {
           const int mid = lo + (hi - lo) / 2;
           dp::ArpConfig t = c;
@@ -271,9 +277,11 @@ Plan make_plan(const PlanRequest& r) {
       p.fastest_need_frames = std::min(p.fastest_need_frames, v * hz);
     }
   }
-  // Memory 0 no slower than the fastest need (every object can be kept within theta_t), a power of two.
+  // Memory 0 no slower than the fastest need (every object can be kept within theta_t), a power of two,
+  // and within the motion (at least a second): what never needs updating is updated once a walk.
+  const double cap = std::min(static_cast<double>(dp::MemoryConfig::kMaxUpdateFrames), std::max(hz, p.motion_s * hz));
   int first = 1;
-  while (first * 2 <= std::min<double>(p.fastest_need_frames, static_cast<double>(dp::MemoryConfig::kMaxUpdateFrames))) first *= 2;
+  while (first * 2 <= std::min(p.fastest_need_frames, cap)) first *= 2;
   std::vector<LadderLoad> candidates;
   if (n == 0) {
     candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s));
@@ -285,6 +293,7 @@ Plan make_plan(const PlanRequest& r) {
         t.memory.update_frames = first;
         t.memory.update_ratio = ratio;
         if (!dp::validate(t).empty()) continue;  // the slowest period beyond the key's range
+        if (count > 1 && static_cast<double>(dp::update_period_frames(first, ratio, count - 1)) > cap) break;  // beyond the motion
         candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s));
         if (count == 1) break;  // the ratio does not matter with one memory
       }
@@ -296,9 +305,17 @@ Plan make_plan(const PlanRequest& r) {
     if (L.triangles_per_s <= p.best.triangles_per_s * (1 + r.load_tolerance) &&
         (L.count < p.planned.count || (L.count == p.planned.count && L.triangles_per_s < p.planned.triangles_per_s)))
       p.planned = L;
+  // The starting configuration at its own theta_t (one texel at its own face size unless given).
+  const double base_threshold = r.threshold_deg > 0 ? p.threshold_rad : dp::texel_angle_rad(r.base.memory.face_size);
+  std::vector<double> base_validity = validity_s;
+  if (base_threshold != p.threshold_rad)
+    for (size_t k = 0; k < ms.t.size(); ++k)
+      for (size_t i = 0; i < n; ++i)
+        base_validity[k * n + i] =
+            host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
   p.base_ladder = n == 0 ? p.planned
-                         : ladder_load(scene, walk, ms, hz, p.threshold_rad, r.base.memory.count, r.base.memory.update_frames,
-                                       r.base.memory.update_ratio, validity_s);
+                         : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
+                                       r.base.memory.update_ratio, base_validity);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -308,14 +325,17 @@ Plan make_plan(const PlanRequest& r) {
                          "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
   } else {
     std::string why = "over " + std::to_string(p.samples) + " points of the motion (" + fmt("%.1f", p.motion_s) +
-                      " s) at theta_t " + fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg, the fastest any object needs "
-                      "re-rendering is every " + fmt("%.1f", p.fastest_need_frames) + " frames, so memory 0 updates every " +
-                      std::to_string(first) + "; of " + std::to_string(candidates.size()) + " ladders (1 .. " +
+                      " s) at theta_t " + fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg, the fastest any object needs " +
+                      (std::isfinite(p.fastest_need_frames) ? std::string("re-rendering is every ") + fmt("%.1f", p.fastest_need_frames) + " frames"
+                                                            : std::string("re-rendering is never (nothing moves)")) +
+                      ", so memory 0 updates every " + std::to_string(first) + " (at most the motion's frames, at least a second's)" +
+                      "; of " + std::to_string(candidates.size()) + " ladders (1 .. " +
                       std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4) the least host load is " +
                       fmt("%.3g", p.best.triangles_per_s) + " triangles/s (" + ladder_text(p.best) + "); " +
                       ladder_text(p.planned) + " is the fewest within " + fmt("%.0f", 100 * r.load_tolerance) +
                       " % of it: " + fmt("%.3g", p.planned.triangles_per_s) + " triangles/s, against " +
-                      fmt("%.3g", p.base_ladder.triangles_per_s) + " for " + r.base_source + " (" + ladder_text(p.base_ladder) + ")";
+                      fmt("%.3g", p.base_ladder.triangles_per_s) + " for " + r.base_source + " (" + ladder_text(p.base_ladder) +
+                      ", at its own theta_t " + fmt("%.4f", rad_to_deg(base_threshold)) + " deg)";
     if (p.fastest_need_frames < 1)
       why += "; some objects need more than one update a frame: the display rate cannot keep them within theta_t";
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio",

@@ -29,7 +29,7 @@ struct PlanRequest {
   dp::ArpConfig base;                  // what the plan starts from: the defaults, --config, --set
   std::string base_source = "the embedded default";
   MemoryContents memories;             // the scene (.scene is required)
-  std::string walk;                    // "gallery" or a walk file; empty: the head stays at the walk's start
+  std::string walk;                    // "gallery" or a walk file (required; --speed 0: standing at its first point)
   std::optional<double> walk_speed;    // as run --speed
   double texel_error = 0;              // texels, max over the harness's samples (0: what `base` measures)
   double threshold_deg = 0;            // theta_t (0: one texel at the planned face size)
@@ -73,7 +73,7 @@ struct Plan {
   std::vector<LadderLoad> ladders;        // every candidate weighed
   double fastest_need_frames = 0;        // the shortest validity of any object, in display frames
   std::array<bool, 6> faces_reached{};    // by some object at some point of the motion
-  // Display memory as hardware (eyes x memories x 2 buffers x faces reached x S^2 x texel bits)
+  // Display memory as hardware (eyes x memories x 2 buffers x 6 faces x S^2 x texel bits)
   int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
 };
 

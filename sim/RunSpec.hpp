@@ -32,6 +32,8 @@ struct HostSpec {
 
   // The walk named (InputError naming --speed for a speed out of range, or the walk file's own errors).
   host::WalkPath make_walk() const;
+  // theta_t in radians (InputError naming --threshold-deg outside 0 .. 90; 0 stays 0: one texel).
+  static double threshold_rad(double threshold_deg);
 };
 
 // What a run writes.

@@ -136,6 +136,11 @@ host::WalkPath HostSpec::make_walk() const {
   return w;
 }
 
+double HostSpec::threshold_rad(double deg) {
+  if (!(deg >= 0) || deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+  return deg_to_rad(deg);
+}
+
 // A trace is read over the run's window only and held.
 void Session::build_motion() {
   const HostSpec& h = spec_.host;
@@ -236,14 +241,9 @@ void Session::build_memories() {
     return;
   }
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
-  host::PriorityConfig pc;
-  pc.memories = c.memory.count;
-  pc.update_frames = c.memory.update_frames;
-  pc.update_ratio = c.memory.update_ratio;
-  pc.display_hz = timing_.refresh_hz();
+  host::PriorityConfig pc = host::PriorityConfig::of(c.memory, timing_.refresh_hz());
   pc.baseline = h.baseline;
-  if (!(h.threshold_deg >= 0) || h.threshold_deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
-  pc.threshold_rad = deg_to_rad(h.threshold_deg);
+  pc.threshold_rad = HostSpec::threshold_rad(h.threshold_deg);
   for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", h.engine.triangles_per_s},
                          {"--engine-fill", h.engine.pixels_per_s}})
     if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");

@@ -16,7 +16,7 @@ StillFrame render_still(const StillSpec& spec) {
   dp::DisplayMemorySet mem(spec.config.memory, spec.config.timing.eyes);
   StillFrame s;
   MemoryContents contents = spec.memories;
-  contents.expect_plan(spec.config, "the configuration");
+  contents.expect_plan(spec.config, spec.config_source);
   contents.fill(mem, spec.orientation, s.source, spec.threads);
   RenderOptions ro;
   ro.threads = spec.threads;

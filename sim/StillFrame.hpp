@@ -14,6 +14,7 @@ namespace arp::sim {
 
 struct StillSpec {
   dp::ArpConfig config;
+  std::string config_source = "the configuration";  // names it in messages (--config's file)
   MemoryContents memories;
   dp::Quat orientation;  // head frame -> world
   int64_t frame = 0;     // its index: its photon times

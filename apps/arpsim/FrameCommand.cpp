@@ -45,6 +45,7 @@ dp::Quat parse_quat(const std::string& s) {
 int run_frame(FrameArgs& a) {
   sim::StillSpec& spec = a.spec;
   spec.config = a.cfg.resolve();
+  spec.config_source = a.cfg.source();
   if (!a.aa.empty() && !dp::parse(a.aa, spec.config.pipeline.aa)) throw InputError("--aa", "", "must be off or bilinear");
   for (double v : {a.yaw, a.pitch, a.roll})
     if (!std::isfinite(v)) throw InputError("--yaw/--pitch/--roll", "", "angles must be finite");

@@ -51,6 +51,7 @@ int fail(const char* what) {
 
 int run_live(LiveArgs& a) {
   a.spec.config = a.cfg.resolve();
+  a.spec.config_source = a.cfg.source();
   if (a.scale < 1 || a.scale > 8) throw InputError("--scale", "", "must be 1 .. 8");
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER")) {
     std::fprintf(stderr, "arpsim live: no display to open a window on; run it on a desktop, or headless: xvfb-run -a arpsim live ...\n");

@@ -23,6 +23,16 @@ struct PriorityConfig {
   double display_hz = 60.0;
   double threshold_rad = 0.0;   // 0: the angle of one display-memory texel at a face centre, (pi/2) / face_size
   bool baseline = false;        // everything in memory 0, rendered every frame
+
+  // The memories and their update ladder as a configuration sets them (memory.count, memory.update_*).
+  static PriorityConfig of(const dp::MemoryConfig& m, double display_hz) {
+    PriorityConfig pc;
+    pc.memories = m.count;
+    pc.update_frames = m.update_frames;
+    pc.update_ratio = m.update_ratio;
+    pc.display_hz = display_hz;
+    return pc;
+  }
 };
 
 // How long object o's image stays within threshold_rad for a user at `eye` moving at user_speed at time

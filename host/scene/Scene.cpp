@@ -80,6 +80,9 @@ int64_t scene_hash(const Scene& s) {
     const Mesh& m = *o.mesh;
     h.add(static_cast<uint64_t>(m.positions.size())).add(static_cast<uint64_t>(m.indices.size()));
     for (const auto& p : m.positions) vec(p);
+    h.add(static_cast<uint64_t>(m.normals.size())).add(static_cast<uint64_t>(m.uvs.size()));
+    for (const auto& v : m.normals) vec(v);
+    for (const auto& uv : m.uvs) h.add(uv.x).add(uv.y);
     for (const uint32_t i : m.indices) h.add(uint64_t{i});
   }
   const int64_t v = static_cast<int64_t>(h.value() >> 1);

@@ -208,9 +208,10 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
     int64_t f = c.memory.update_frames;
     for (int m = 1; m < c.memory.count && f <= MemoryConfig::kMaxUpdateFrames; ++m) f *= c.memory.update_ratio;
     if (f > MemoryConfig::kMaxUpdateFrames)
-      ck.fail("memory.update_ratio", "memory " + std::to_string(c.memory.count - 1) + " would be updated every " +
-                                         "update_frames x update_ratio^" + std::to_string(c.memory.count - 1) +
-                                         " frames, more than " + std::to_string(MemoryConfig::kMaxUpdateFrames));
+      ck.fail("memory.update_ratio", "memory " + std::to_string(c.memory.count - 1) + " would be updated every memory.update_frames (" +
+                                         std::to_string(c.memory.update_frames) + ") x update_ratio (" +
+                                         std::to_string(c.memory.update_ratio) + ")^" + std::to_string(c.memory.count - 1) +
+                                         " frames: more than " + std::to_string(MemoryConfig::kMaxUpdateFrames));
   }
   if (c.pipeline.aa == AaMode::Bilinear && c.widths.texel_frac < 1)
     ck.fail("datapath.texel_frac", "bilinear anti-aliasing needs at least 1 sub-texel bit");
