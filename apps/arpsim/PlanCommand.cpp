@@ -46,7 +46,8 @@ Runner add_plan_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "plan", "Size a configuration for a scene and its motion: face size, datapath widths, display memories (docs/planning.md)");
   a->cfg.add_to(*cmd);
-  add_memory_options(*cmd, a->req.memories);
+  // Only the scene: the plan is made for a walk, not for a cube map, a position or a renderer.
+  cmd->add_option("--scene", a->req.memories.scene, "The scene to plan for: a scene file (docs/host.md) or 'gallery'")->required();
   add_walk_options(*cmd, a->req.walk, a->req.walk_speed, a->req.threshold_deg);
   cmd->add_option("--texel-error", a->req.texel_error,
                   "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
