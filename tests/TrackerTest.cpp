@@ -540,10 +540,14 @@ TEST(DeviceClock, AForwardJumpReanchorsAndTimeStaysMonotonic) {
   const auto n = c.map(99'000 + 10'001'000, 101 * kMs);
   EXPECT_FALSE(n.reanchored);
   EXPECT_EQ(n.time_ps, 101 * kMs);
-  // A lead within the tolerance (a report arriving early relative to the anchor's latency) is no jump.
+  // A lead within the tolerance is no jump: the anchor's arrival was late by that much (or the counter
+  // glitched by it); the lower envelope takes the report's arrival as the bound, so time follows it.
   const auto e = c.map(99'000 + 10'002'000 + 200'000, 102 * kMs);
   EXPECT_FALSE(e.reanchored);
-  EXPECT_EQ(e.time_ps, 302 * kMs);
+  EXPECT_EQ(e.time_ps, 102 * kMs);
+  EXPECT_EQ(c.envelope_offset_ps(), -200.0 * kMs);
+  const auto f = c.map(99'000 + 10'003'000 + 200'000, 103 * kMs);
+  EXPECT_EQ(f.time_ps, 103 * kMs);
 }
 
 // The report the clock was anchored at arrived 400 ms late (a busy host, a
@@ -566,6 +570,50 @@ TEST(DeviceClock, ALateAnchorIsCorrectedOnceWithoutGoingBack) {
   }
   EXPECT_EQ(held, 400);
   EXPECT_EQ(c.reanchors(), 1);
+}
+
+// The lower envelope: reports reach the host 1-2 ms after the device sampled
+// them (the transport's least latency, 1 ms, cannot be seen from the host),
+// every 50th report the host is busy for 20 ms and those behind it arrive in
+// a burst, and the very first report (the anchor) arrives 20 ms late. Times
+// are shed to the soonest arrival seen: within a second every sample's time
+// is within 0.1 ms of the device's plus the least latency (anchoring at the
+// first arrival kept the 20 ms for the session), the timeline never goes
+// back, and only reports being held can be given a time after their arrival.
+// With the host's clock 100 ppm fast the skew is found and the envelope
+// follows the skewed line (within 0.1 ms after two minutes); the hull stays a
+// few vertices.
+TEST(DeviceClock, TheLowerEnvelopeOfArrivalsShedsTheAnchorsLatency) {
+  for (const double ppm : {0.0, 100.0}) {
+    SCOPED_TRACE(ppm);
+    DeviceClock c(16, kMs);
+    std::mt19937_64 rng(11);
+    std::uniform_int_distribution<int64_t> latency(kMs, 2 * kMs);
+    int64_t last = -1, arrival = 0;
+    size_t widest_hull = 0;
+    int held = 0;
+    for (int64_t k = 0; k <= 120'000; ++k) {
+      const int64_t host_of_sample = static_cast<int64_t>(static_cast<double>(k * kMs) * (1.0 + ppm * 1e-6));
+      // The host stamps reports in the order they come: a report never arrives before the one ahead of it.
+      arrival = std::max(arrival, host_of_sample + (k == 0 || k % 50 == 0 ? 20 * kMs : latency(rng)));
+      const auto m = c.map(static_cast<uint64_t>(k) & 0xFFFF, arrival);
+      ASSERT_FALSE(m.reanchored) << k;
+      ASSERT_GT(m.time_ps, last) << k;
+      if (!m.held) {
+        ASSERT_LE(m.time_ps, arrival) << k;
+      }
+      held += m.held;
+      last = m.time_ps;
+      widest_hull = std::max(widest_hull, c.hull_size());
+      if (k >= 1000 && (ppm == 0.0 || k >= 120'000)) {
+        ASSERT_NEAR(static_cast<double>(m.time_ps - host_of_sample), 1.0 * kMs, 0.1 * kMs) << k;
+      }
+    }
+    EXPECT_NEAR(c.skew_ppm(), ppm, 2.0);
+    EXPECT_LT(widest_hull, 40u);
+    EXPECT_GT(held, 0);    // the anchor's 20 ms were shed by holding, not by going back
+    EXPECT_LT(held, 40);
+  }
 }
 
 // A counter that stops while reports keep coming: held for max_held_reports

@@ -23,7 +23,33 @@ int64_t DeviceClock::saturated(double ps) {
 
 int64_t DeviceClock::time_of_ticks() const {
   const double device_ps = static_cast<double>(ticks_) * static_cast<double>(tick_ps_);
-  return saturated(static_cast<double>(anchor_ps_) + device_ps * (1.0 + skew_));
+  return saturated(static_cast<double>(anchor_ps_) + offset_ + device_ps * (1.0 + skew_));
+}
+
+// Monotone chain: points come in increasing device time; a vertex on or above
+// the segment from its predecessor to the new point is no longer on the hull.
+void DeviceClock::add_to_hull(double x, double y) {
+  while (hull_.size() >= 2) {
+    const Point& a = hull_[hull_.size() - 2];
+    const Point& b = hull_.back();
+    if ((b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x) > 0) break;  // b strictly below a->new: keep it
+    hull_.pop_back();
+  }
+  hull_.push_back({x, y});
+  // Bounded: a segment of arrivals curving one way for hours cannot grow it; the oldest vertices say
+  // least about the offset now.
+  if (hull_.size() > kMaxHull) hull_.erase(hull_.begin(), hull_.begin() + static_cast<std::ptrdiff_t>(hull_.size() - kMaxHull / 2));
+}
+
+double DeviceClock::envelope_at_skew() const {
+  double best = 0;
+  bool any = false;
+  for (const Point& p : hull_) {
+    const double o = p.y - p.x * (1.0 + skew_);
+    if (!any || o < best) best = o;
+    any = true;
+  }
+  return best;
 }
 
 void DeviceClock::reanchor(int64_t arrival_ps) {
@@ -31,12 +57,14 @@ void DeviceClock::reanchor(int64_t arrival_ps) {
   ticks_ = 0;
   held_run_ = 0;
   n_ = sx_ = sy_ = sxx_ = sxy_ = 0;
+  hull_.clear();
+  offset_ = 0;
   ++reanchors_;
 }
 
 DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   counter &= mask_;
-  Mapped m{0, false, false, false, false, 0};
+  Mapped m{0, false, false, false, false, 0, 0};
   if (!started_) {
     started_ = true;
     anchor_ps_ = arrival_ps;
@@ -49,6 +77,7 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
       if (!restarted) {
         m.backwards = true;
         m.time_ps = last_time_ps_;
+        m.device_ps = saturated(static_cast<double>(ticks_) * static_cast<double>(tick_ps_));
         return m;
       }
       m.jump_ps = saturated(-static_cast<double>(back) * static_cast<double>(tick_ps_));
@@ -77,8 +106,12 @@ DeviceClock::Mapped DeviceClock::map(uint64_t counter, int64_t arrival_ps) {
   sxy_ += device_ps * y;
   const double var = sxx_ - sx_ * sx_ / n_;
   if (device_ps >= limits_.min_skew_span_s * 1e12 && var > 0) skew_ = (sxy_ - sx_ * sy_ / n_) / var - 1.0;
+  add_to_hull(device_ps, y);
+  offset_ = envelope_at_skew();
   // Monotonic: after a re-anchor to an arrival before the last time given (the device had led the
-  // host), reports are held at the last time until the new segment passes it.
+  // host), or the envelope moving earlier by more than a report's period, reports are held at the
+  // last time until the timeline passes it.
+  m.device_ps = saturated(device_ps);
   m.time_ps = time_of_ticks();
   if (given_ && m.time_ps <= last_time_ps_) {
     m.held = true;

@@ -3,30 +3,40 @@
 // 1 us, every 71.6 min).
 //
 // The model: the counter is unwrapped (a step of up to half its range is
-// forward); time is anchored at a report's arrival on the host and runs at
-// the device's rate corrected by the skew estimated from arrivals (least
-// squares of arrival time against device time, after at least
-// min_skew_span_s of device time since the anchor). Arrival can only lag the
-// device's time (transfer latency, a busy host), never lead it, so:
+// forward); time runs at the device's rate corrected by the skew estimated
+// from arrivals (least squares of arrival time against device time, after at
+// least min_skew_span_s of device time since the anchor), and is placed on
+// the host's timeline by the *lower envelope* of the arrivals: a report can
+// only arrive after the device sampled it (transfer latency, a busy host),
+// never before, so the report that arrived soonest after its device time is
+// the best measure of the offset. The segment's arrivals are kept as their
+// lower convex hull (device time, arrival); the offset is the least of
+// (arrival - device time x (1 + skew)) over its vertices. A report whose
+// latency is the smallest yet moves the timeline earlier by the difference:
+// the anchor report's own latency (20 ms if the host was busy when streaming
+// started) is shed at the first report that arrived sooner, not carried for
+// the whole session. So:
 //   - a counter that repeats or steps back by at most `stale_tolerance_s` is
 //     a stale or reordered report (a few transfers are in flight at once):
 //     flagged `backwards`, its time held (the stream skips its samples);
 //   - a counter that steps back by more, or that has not advanced for
 //     `max_held_reports` reports in a row, means the device restarted;
 //   - a counter that steps forward so that the device's time leads the
-//     report's arrival by more than `lead_tolerance_s` jumped (the tolerance
-//     covers the latency of the report the clock was anchored at);
+//     report's arrival by more than `lead_tolerance_s` jumped (a lead within
+//     it is a late anchor, corrected by the envelope);
 // and in the last two cases the clock re-anchors: a new segment starts at the
 // report's arrival and carries on with the host's clock; the skew estimate is
 // kept until the new segment has its own. The timeline stays monotonic: when
-// the arrival is before the last time given (the device had led the host: a
-// jump, or an anchor report that arrived late), reports are `held`: each is
-// given 1 ps after the last time until the new segment passes it. Their
-// samples are kept (the stream fuses them over the device's own period), only
-// their times are compressed, once, instead of a timeline ahead of the host
-// for good.
+// a time would not be after the last one given (a re-anchor behind it, or the
+// envelope moving earlier by more than a report's period), reports are
+// `held`: each is given 1 ps after the last time until the timeline passes
+// it. Their samples are kept (the stream fuses them over the device's own
+// period), only their times are compressed, once, instead of a timeline
+// ahead of the host for good.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace arp::tracker {
 
@@ -48,6 +58,7 @@ class DeviceClock {
     bool reanchored;      // the device restarted or jumped: time carries on from the arrival
     bool held;            // after a re-anchor behind the last time given: 1 ps after it, until the clock passes it
     int64_t jump_ps;      // when re-anchored: device time's step against the timeline's (negative: back)
+    int64_t device_ps;    // the device's own time since the current anchor (unwrapped ticks x tick)
   };
   // counter: the report's timestamp field; arrival_ps: when it arrived on the simulated timeline.
   Mapped map(uint64_t counter, int64_t arrival_ps);
@@ -57,6 +68,11 @@ class DeviceClock {
   // Unwrapped device ticks since the current anchor.
   int64_t unwrapped_ticks() const { return ticks_; }
   int64_t reanchors() const { return reanchors_; }
+  // Where the current segment's times sit against its anchor's arrival, ps (<= 0: the lower envelope).
+  double envelope_offset_ps() const { return offset_; }
+  // Vertices of the lower hull kept (a few for jittered arrivals; at most kMaxHull).
+  size_t hull_size() const { return hull_.size(); }
+  static constexpr size_t kMaxHull = 256;
 
  private:
   void reanchor(int64_t arrival_ps);
@@ -77,6 +93,15 @@ class DeviceClock {
   double skew_ = 0.0;
   // Running sums for the least-squares slope of arrival (ps) against device time (ps), this segment.
   double n_ = 0, sx_ = 0, sy_ = 0, sxx_ = 0, sxy_ = 0;
+  // Lower convex hull of (device time, arrival) of this segment, both relative to the anchor (ps), and
+  // the offset it gives at the current skew.
+  struct Point {
+    double x, y;
+  };
+  std::vector<Point> hull_;
+  double offset_ = 0;
+  void add_to_hull(double x, double y);
+  double envelope_at_skew() const;
 };
 
 }  // namespace arp::tracker

@@ -66,21 +66,34 @@ struct RiftStream::Impl {
   std::vector<libusb_device_handle*> abandoned_handles;
   int transfer_errors_in_a_row = 0;
   uint16_t command_id = 1;
+  // When the stream was made: on the host clock asked for, or on the steady clock (whose origin, the
+  // machine's boot, may be more than int64_t picoseconds ago).
+  int64_t t0_ps = 0;
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   double last_keep_alive_s = -1e9, last_attempt_s = -1e9;
   std::unique_ptr<DeviceClock> clock;
   Fusion fusion;
   bool fusion_started = false;
   int64_t last_sample_ps = 0;
+  // The last fused sample on the device's own time, and which stretch of it (a new one at each re-anchor
+  // and each connection: device times compare only within one).
+  int64_t last_device_ps = 0;
+  int64_t segment = 0, last_segment = -1;
   StreamStats stats;
   std::vector<StreamEvent> events;
   std::deque<PoseSample> pending;  // bounded: max_pending_s of device time
   PoseSample last;
 
-  explicit Impl(const RiftStreamOptions& o) : opt(o), fusion(o.fusion) {}
+  explicit Impl(const RiftStreamOptions& o) : opt(o), fusion(o.fusion) {
+    if (opt.host_clock) t0_ps = opt.host_clock();
+  }
   void step(int timeout_ms);
 
-  double now_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  int64_t now_ps() const {
+    if (opt.host_clock) return opt.host_clock() - t0_ps;
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count() * 1000;
+  }
+  double now_s() const { return static_cast<double>(now_ps()) * 1e-12; }
   void event(StreamEvent::Kind k, std::string detail) {
     std::lock_guard<std::mutex> lock(mu);
     events.push_back({k, now_s(), std::move(detail)});
@@ -200,7 +213,7 @@ struct RiftStream::Impl {
     }
     ++stats.reports;
     stats.samples_lost_on_device += r.reported_sample_count - r.sample_count;
-    const int64_t arrival = static_cast<int64_t>(now_s() * 1e12);
+    const int64_t arrival = now_ps();
     const DeviceClock::Mapped m = clock->map(r.timestamp, arrival);
     if (m.backwards) {
       ++stats.time_went_back;
@@ -221,24 +234,29 @@ struct RiftStream::Impl {
     // Longer than this between two samples is a break (a reconnection, a re-anchor): nothing is known
     // of the head in between, so the pose is held across it rather than the gyro integrated over it.
     constexpr int64_t kGapPs = 20 * kSamplePs;
-    bool first_after_reanchor = m.reanchored;
+    if (m.reanchored) ++segment;
     for (int i = 0; i < r.sample_count; ++i) {
       const auto& s = r.samples[static_cast<size_t>(i)];
-      // Held (the clock catching up after a re-anchor): the samples follow the last one 1 ps apart and
-      // are integrated over the device's period, so no motion is lost while the times are compressed.
-      const int64_t t = m.held ? last_sample_ps + 1 : m.time_ps - static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
-      if (fusion_started && t <= last_sample_ps) continue;  // already fused (overlapping counts)
+      const int64_t back = static_cast<int64_t>(r.sample_count - 1 - i) * kSamplePs;
+      const int64_t device_ps = m.device_ps - back;
+      const bool same_stretch = fusion_started && segment == last_segment;
+      // Already fused (a count overlapping the last report's): judged on the device's time within a
+      // stretch (the timeline may have moved earlier under it, DeviceClock's envelope), else on the timeline.
+      if (same_stretch ? device_ps <= last_device_ps : fusion_started && !m.held && m.time_ps - back <= last_sample_ps) continue;
+      // Held (the clock catching up), or the envelope moving the timeline earlier by more than the
+      // samples' spacing: 1 ps after the last sample, so the timeline never goes back.
+      const int64_t t = m.held ? last_sample_ps + 1 : fusion_started ? std::max(m.time_ps - back, last_sample_ps + 1) : m.time_ps - back;
       const glm::dvec3 gyro(gyro_rad_s(s.gyro[0]), gyro_rad_s(s.gyro[1]), gyro_rad_s(s.gyro[2]));
       const glm::dvec3 accel(accel_m_s2(s.accel[0]), accel_m_s2(s.accel[1]), accel_m_s2(s.accel[2]));
-      int64_t dt_ps = fusion_started && !m.held ? t - last_sample_ps : kSamplePs;
-      if (dt_ps > kGapPs) {
+      // Integrated over the device's own step between the samples: the timeline's step also holds the
+      // host's corrections (the envelope, holding). Across a re-anchor or a reconnection only the sample's
+      // own period is known.
+      int64_t dt_ps = same_stretch ? device_ps - last_device_ps : kSamplePs;
+      if (fusion_started && !m.held && t - last_sample_ps > kGapPs) {
         ++stats.gaps;
-        stats.gap_s += static_cast<double>(dt_ps) * 1e-12;
+        stats.gap_s += static_cast<double>(t - last_sample_ps) * 1e-12;
         dt_ps = kSamplePs;  // this sample's own period only
-      } else if (first_after_reanchor) {
-        dt_ps = kSamplePs;  // the timeline moved to the arrival; the device sampled at its own period
       }
-      first_after_reanchor = false;
       if (opt.fusion.yaw_gain > 0) {
         // The report's one magnetometer reading (1e-4 gauss, the gyroscope's axes) for each of its samples.
         const glm::dvec3 mag(r.magnetometer[0] * 1e-4, r.magnetometer[1] * 1e-4, r.magnetometer[2] * 1e-4);
@@ -249,6 +267,8 @@ struct RiftStream::Impl {
       }
       fusion_started = true;
       last_sample_ps = t;
+      last_device_ps = device_ps;
+      last_segment = segment;
       ++stats.samples;
       PoseSample p;
       p.time_ps = t;
@@ -362,6 +382,10 @@ struct RiftStream::Impl {
     // A fresh device clock anchored at the first report after (re)connecting:
     // the counter may have restarted; the timeline carries on from the arrival.
     clock = std::make_unique<DeviceClock>(model == RiftModel::DK1 ? 16 : 32, model == RiftModel::DK1 ? 1'000'000'000 : 1'000'000);
+    {
+      std::lock_guard<std::mutex> lock(mu);  // report() reads it under the lock
+      ++segment;
+    }
     is_connected = true;
     if (streamed_serial.empty()) streamed_serial = serial;
     const int want = std::max(1, opt.transfers_in_flight);
@@ -548,7 +572,7 @@ PoseSample RiftStream::last_pose() const {
   return p_->last;
 }
 
-int64_t RiftStream::now_ps() const { return static_cast<int64_t>(p_->now_s() * 1e12); }
+int64_t RiftStream::now_ps() const { return p_->now_ps(); }
 
 std::vector<StreamEvent> RiftStream::take_events() {
   std::lock_guard<std::mutex> lock(p_->mu);

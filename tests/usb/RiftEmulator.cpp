@@ -114,17 +114,30 @@ struct RiftEmulator::State {
   std::deque<Urb> done, interrupts;
   std::vector<std::vector<uint8_t>> features;
   int64_t sent = 0;
-  std::chrono::steady_clock::time_point streaming_since{};
+  const ManualClock* clock = nullptr;  // the test's, or the wall clock
+  int64_t streaming_since_ps = 0;
   bool streaming = false;
   int64_t delivered_at_start = 0;
-  std::chrono::steady_clock::time_point keep_alive_until{};
+  int64_t keep_alive_until_ps = 0;
+  int64_t deliver_from_ps = 0;  // nothing is handed over before this (delay_delivery)
+  bool drained = false;         // a reap found nothing since the last report handed over
 
-  // A report is due every millisecond of wall time while the keep-alive holds.
-  bool report_due(std::chrono::steady_clock::time_point now) const {
-    if (!streaming || now > keep_alive_until || sent >= static_cast<int64_t>(reports.size())) return false;
-    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now - streaming_since).count();
-    return sent - delivered_at_start <= ms;
+  int64_t now_ps() const {
+    if (clock) return clock->now_ps();
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - kEpoch).count() * 1000;
   }
+  static inline const std::chrono::steady_clock::time_point kEpoch = std::chrono::steady_clock::now();
+
+  // Reports due by `now`: one every millisecond from the first keep-alive, while the keep-alive holds
+  // (the reports a keep-alive that ran out left unsent are not owed).
+  int64_t due(int64_t now) const {
+    if (!streaming || now < deliver_from_ps) return sent;
+    const int64_t until = std::min(now, keep_alive_until_ps);
+    if (until < streaming_since_ps) return sent;
+    const int64_t owed = delivered_at_start + (until - streaming_since_ps) / 1'000'000'000 + 1;
+    return std::max(sent, std::min(owed, static_cast<int64_t>(reports.size())));
+  }
+  bool report_due(int64_t now) const { return now <= keep_alive_until_ps && sent < due(now); }
 
   bool dk1() const { return model == tracker::RiftModel::DK1; }
   uint64_t timestamp_of(const std::array<uint8_t, tracker::kRiftReportSize>& r) const {
@@ -218,10 +231,11 @@ struct RiftEmulator::State {
             std::vector<uint8_t> rep(setup + 8, setup + 8 + length);
             if (!rep.empty() && (rep[0] == tracker::kDk1KeepAliveReport || rep[0] == tracker::kDk2KeepAliveReport) && rep.size() >= 5) {
               const int interval = rep[rep.size() - 2] | (rep[rep.size() - 1] << 8);
-              keep_alive_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(interval);
+              const int64_t now = now_ps();
+              keep_alive_until_ps = now + int64_t{interval} * 1'000'000'000;
               if (!streaming) {
                 streaming = true;
-                streaming_since = std::chrono::steady_clock::now();
+                streaming_since_ps = now;
                 delivered_at_start = sent;
               }
             }
@@ -264,7 +278,7 @@ struct RiftEmulator::State {
       case USBDEVFS_REAPURBNDELAY: {
         // Only this client's transfers: a process that went away may have left some behind.
         Urb u;
-        const auto now = std::chrono::steady_clock::now();
+        const int64_t now = now_ps();
         auto mine = [client](std::deque<Urb>& q) {
           for (auto it = q.begin(); it != q.end(); ++it)
             if (it->client == client) return it;
@@ -289,8 +303,10 @@ struct RiftEmulator::State {
           const auto rep = quirked(reports[static_cast<size_t>(sent++)]);
           u.actual = cut_remaining > 0 ? 10 : static_cast<int>(report_length);
           if (cut_remaining > 0) --cut_remaining;
+          drained = false;
           std::memcpy(u.buffer->data, rep.data(), static_cast<size_t>(u.actual));
         } else {
+          drained = true;
           return reply(-1, connected ? EAGAIN : ENODEV);
         }
         auto* urb = reinterpret_cast<usbdevfs_urb*>(u.data->data);
@@ -388,6 +404,31 @@ RiftEmulator::~RiftEmulator() {
   g_clear_object(&s_->handler);
   s_->testbed = nullptr;
   release_testbed();
+}
+
+void RiftEmulator::jump_counter(int64_t ticks) {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->counter_shift += static_cast<uint64_t>(ticks);
+}
+
+void RiftEmulator::delay_delivery(int64_t ms) {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->deliver_from_ps = s_->now_ps() + ms * 1'000'000'000;
+}
+
+void RiftEmulator::drive_by(const ManualClock& clock) {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->clock = &clock;
+}
+
+bool RiftEmulator::host_drained() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->drained;
+}
+
+int64_t RiftEmulator::reports_due() const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return s_->due(s_->now_ps());
 }
 
 void RiftEmulator::unplug() {

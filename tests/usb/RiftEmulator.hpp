@@ -11,11 +11,19 @@
 // device has a bus address and a serial number (its string descriptor 3);
 // several emulators alive at once are several devices on one bus.
 //
+// Its time is the wall clock, or a ManualClock the test advances (drive_by):
+// reports are then due one per millisecond of that clock and the keep-alive
+// runs out on it, and the stream under test reads the same clock
+// (RiftStreamOptions::host_clock), so what a test checks does not depend on
+// how fast the machine runs.
+//
 // The process (and any child it starts) must run under umockdev's preload
 // library (ctest runs the USB tests through umockdev-wrapper).
 #pragma once
 #include <cstddef>
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +35,20 @@ namespace arp::test {
 
 // The motion the USB tests' devices follow: a yaw at 90 deg/s, sampled at 1 kHz for `seconds`.
 std::vector<tracker::PoseSample> yaw_90(double seconds);
+
+// A clock only the test moves (ps; thread-safe: the stream's pump and umockdev's thread read it).
+class ManualClock {
+ public:
+  int64_t now_ps() const { return ps_.load(); }
+  void advance_ps(int64_t ps) { ps_ += ps; }
+  // For RiftStreamOptions::host_clock (the clock must outlive the stream).
+  std::function<int64_t()> function() const {
+    return [this] { return now_ps(); };
+  }
+
+ private:
+  std::atomic<int64_t> ps_{0};
+};
 
 class RiftEmulator {
  public:
@@ -40,6 +62,16 @@ class RiftEmulator {
   RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSample> truth, Layout layout, Identity id);
   ~RiftEmulator();
 
+  // From now on the device's time is `clock` (it must outlive the emulator), not the wall clock.
+  void drive_by(const ManualClock& clock);
+  // Reports the device would have sent by now (its clock, its keep-alive): with reports_sent(), whether a
+  // driven device has delivered all it owes.
+  int64_t reports_due() const;
+  // Whether the host has asked for a report since the last one it was given and found none: its USB event
+  // loop has then returned to the driver (libusb reaps until nothing is left), which does its own work
+  // (keep-alive, halts) before asking again.
+  bool host_drained() const;
+
   void unplug();
   void replug();
   void inject_malformed_report(int n = 1);  // the next n reports are cut short (10 bytes)
@@ -47,6 +79,10 @@ class RiftEmulator {
   void set_report_length(size_t bytes);      // a DK1 may send 62 bytes instead of 64
   void inject_sample_count(int count);       // the next report claims `count` samples (its own is the latest)
   void restart_counter();                    // the device restarts: its timestamp counter starts again at 0
+  void jump_counter(int64_t ticks);          // the timestamp counter steps forward by `ticks` (a glitch)
+  // The host is busy: reports owed during the next `ms` of the device's clock are handed over together
+  // when it has passed (a burst, as queued transfers complete).
+  void delay_delivery(int64_t ms);
   void stall();                              // endpoint 0x81 halts: transfers fail (EPIPE) until a CLEAR_HALT
   void hold_interface_elsewhere();           // another program detached usbhid and claimed interface 0 (EBUSY)
   int64_t clear_halts() const;
