@@ -133,6 +133,8 @@ struct RiftStream::Impl {
   void completed(libusb_transfer* t) {
     if (abandoned.erase(t)) {  // an earlier connection's, back at last: nothing more to do with it
       libusb_free_transfer(t);
+      std::lock_guard<std::mutex> lock(mu);
+      ++stats.transfers_abandoned_back;
       return;
     }
     flying.erase(t);
@@ -439,6 +441,10 @@ struct RiftStream::Impl {
     }
     transfers.clear();
     if (!flying.empty()) {
+      {
+        std::lock_guard<std::mutex> lock(mu);
+        stats.transfers_abandoned += static_cast<int64_t>(flying.size());
+      }
       event(StreamEvent::Kind::Disconnected,
             std::to_string(flying.size()) + " transfer(s) not back from libusb after 1 s; freed when they are");
       flying.clear();
@@ -451,10 +457,15 @@ struct RiftStream::Impl {
       libusb_close(handle);
       handle = nullptr;
     }
-    if (abandoned.empty()) {
-      for (auto* h : abandoned_handles) libusb_close(h);
-      abandoned_handles.clear();
-    }
+    close_abandoned_handles();
+  }
+
+  // The handles of earlier connections, once every transfer abandoned on them is back (never from a
+  // transfer's callback: closing a handle there is not allowed).
+  void close_abandoned_handles() {
+    if (!abandoned.empty()) return;
+    for (auto* h : abandoned_handles) libusb_close(h);
+    abandoned_handles.clear();
   }
 };
 
@@ -468,6 +479,7 @@ void RiftStream::Impl::step(int timeout_ms) {
     timeval tv{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
     libusb_handle_events_timeout_completed(ctx, &tv, nullptr);
     clear_stall();
+    close_abandoned_handles();
   } else {
     std::this_thread::sleep_for(std::chrono::milliseconds(timeout_ms));
   }

@@ -71,6 +71,8 @@ struct StreamStats {
   int64_t stalls = 0;                  // endpoint halts cleared
   int64_t transfer_errors = 0;         // transfers that failed transiently and were resubmitted
   int64_t reconnect_failures = 0;      // a device found but refused while reconnecting
+  int64_t transfers_abandoned = 0;     // transfers libusb did not give back within 1 s of a cancel (kept, not freed)
+  int64_t transfers_abandoned_back = 0;  // ... that came back later and were freed then
   int64_t mag_disturbed = 0;           // magnetometer readings not used for yaw (fusion.yaw_gain > 0): the field's strength was off
   double gap_s = 0;                    // their total length, s
   bool kernel_driver_detached = false;
@@ -95,6 +97,8 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("stalls", s.stalls);
   f("transfer_errors", s.transfer_errors);
   f("reconnect_failures", s.reconnect_failures);
+  f("transfers_abandoned", s.transfers_abandoned);
+  f("transfers_abandoned_back", s.transfers_abandoned_back);
   f("mag_disturbed", s.mag_disturbed);
   f("disconnects", s.disconnects);
   f("reconnects", s.reconnects);

@@ -30,6 +30,7 @@ struct Urb {
   UMockdevIoctlData* data = nullptr;    // the client's struct usbdevfs_urb (a reference we hold)
   UMockdevIoctlData* buffer = nullptr;  // its transfer buffer
   int type = 0, endpoint = 0, status = 0, actual = 0;
+  bool withheld = false;  // withhold_transfers(): never completed until give_back()
 };
 
 void drop(Urb& u) {
@@ -121,6 +122,7 @@ struct RiftEmulator::State {
   int64_t keep_alive_until_ps = 0;
   int64_t deliver_from_ps = 0;  // nothing is handed over before this (delay_delivery)
   bool drained = false;         // a reap found nothing since the last report handed over
+  bool withholding_new = false;  // withhold_transfers() until replug(): new submissions are withheld too
 
   int64_t now_ps() const {
     if (clock) return clock->now_ps();
@@ -256,6 +258,7 @@ struct RiftEmulator::State {
           return reply(0, 0);
         }
         if (u.type == USBDEVFS_URB_TYPE_INTERRUPT && u.endpoint == 0x81) {
+          u.withheld = withholding_new;
           interrupts.push_back(u);
           return reply(0, 0);
         }
@@ -266,6 +269,7 @@ struct RiftEmulator::State {
         const gulong addr = *reinterpret_cast<const gulong*>(arg->data);
         for (auto it = interrupts.begin(); it != interrupts.end(); ++it)
           if (it->client == client && it->data->client_addr == addr) {
+            if (it->withheld) return reply(0, 0);  // accepted, never completed (until give_back)
             Urb u = *it;
             interrupts.erase(it);
             u.status = -ENOENT;
@@ -281,9 +285,10 @@ struct RiftEmulator::State {
         const int64_t now = now_ps();
         auto mine = [client](std::deque<Urb>& q) {
           for (auto it = q.begin(); it != q.end(); ++it)
-            if (it->client == client) return it;
+            if (it->client == client && !it->withheld) return it;
           return q.end();
         };
+        const bool withholding = std::any_of(interrupts.begin(), interrupts.end(), [client](const Urb& w) { return w.client == client && w.withheld; });
         const auto d = mine(done);
         const auto i = mine(interrupts);
         if (d != done.end()) {
@@ -307,7 +312,8 @@ struct RiftEmulator::State {
           std::memcpy(u.buffer->data, rep.data(), static_cast<size_t>(u.actual));
         } else {
           drained = true;
-          return reply(-1, connected ? EAGAIN : ENODEV);
+          // A client with withheld transfers is not told the device is gone (libusb would complete them itself).
+          return reply(-1, connected || withholding ? EAGAIN : ENODEV);
         }
         auto* urb = reinterpret_cast<usbdevfs_urb*>(u.data->data);
         urb->status = u.status;
@@ -442,6 +448,7 @@ void RiftEmulator::replug() {
   s_->connected = true;
   s_->detached = false;  // the kernel binds usbhid again
   s_->streaming = false;  // until the next keep-alive
+  s_->withholding_new = false;
 }
 
 void RiftEmulator::inject_malformed_report(int n) {
@@ -459,6 +466,27 @@ void RiftEmulator::inject_sample_count(int count) {
   if (count < 1 || count > 255) throw std::invalid_argument("a sample count is 1..255");
   std::lock_guard<std::mutex> lock(s_->mu);
   s_->claimed_count_next = count;
+}
+
+void RiftEmulator::withhold_transfers() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  for (auto& u : s_->interrupts) u.withheld = true;
+  s_->withholding_new = true;
+}
+
+void RiftEmulator::give_back() {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  for (auto it = s_->interrupts.begin(); it != s_->interrupts.end();) {
+    if (!it->withheld) {
+      ++it;
+      continue;
+    }
+    Urb u = *it;
+    it = s_->interrupts.erase(it);
+    u.withheld = false;
+    u.status = -ENOENT;  // cancelled
+    s_->done.push_back(u);
+  }
 }
 
 void RiftEmulator::stall() {

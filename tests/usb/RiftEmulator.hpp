@@ -83,6 +83,11 @@ class RiftEmulator {
   // The host is busy: reports owed during the next `ms` of the device's clock are handed over together
   // when it has passed (a burst, as queued transfers complete).
   void delay_delivery(int64_t ms);
+  // A hung host controller: the interrupt transfers in flight now, and those submitted until replug(), are
+  // never completed -- not by a report, not when discarded, not when unplugged -- until give_back()
+  // completes them as cancelled.
+  void withhold_transfers();
+  void give_back();
   void stall();                              // endpoint 0x81 halts: transfers fail (EPIPE) until a CLEAR_HALT
   void hold_interface_elsewhere();           // another program detached usbhid and claimed interface 0 (EBUSY)
   int64_t clear_halts() const;

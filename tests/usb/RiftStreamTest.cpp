@@ -344,6 +344,52 @@ TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   expect_fused_motion(r, truth);
 }
 
+// A hung host controller: the device is unplugged while libusb never gives
+// the transfers in flight back (not on the cancel, not on the unplug). The
+// stream abandons them after 1 s -- kept, not freed: libusb may still write
+// into them -- says so, reconnects when the device is back, and frees each
+// when it finally does come back, then closes the old handle. The suite runs
+// under ASan and LeakSanitizer too: nothing is freed twice, used after it
+// was freed, or left behind.
+TEST(RiftStream, TransfersLibusbNeverGivesBackAreFreedWhenTheyComeBack) {
+  const auto truth = yaw_90(30.0);
+  test::RiftEmulator dk2(RiftModel::DK2, truth);
+  RiftStreamOptions o;
+  o.keep_alive_resend_s = 0.05;  // the unplug is found by the next keep-alive (no transfer comes back to say so)
+  o.reconnect_every_s = 0.05;
+  RiftStream r(o);
+  std::string err;
+  ASSERT_TRUE(r.open(err)) << err;
+  std::vector<PoseSample> poses;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().samples >= 100; }, poses, "100 samples"));
+  dk2.withhold_transfers();
+  dk2.unplug();
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&r] { return r.stats().transfers_abandoned > 0; }, poses, "the transfers abandoned"));
+  // Those in flight at the unplug: all four, or three when one was between its completion and its
+  // resubmission (that one fails to resubmit and is freed at once).
+  const int64_t abandoned = r.stats().transfers_abandoned;
+  EXPECT_GE(abandoned, o.transfers_in_flight - 1);
+  EXPECT_LE(abandoned, o.transfers_in_flight);
+  EXPECT_EQ(r.stats().transfers_abandoned_back, 0);
+  EXPECT_EQ(r.stats().disconnects, 1);
+  bool said = false;
+  for (const auto& e : r.take_events())
+    said |= e.kind == StreamEvent::Kind::Disconnected && e.detail.find("not back from libusb after 1 s") != std::string::npos;
+  EXPECT_TRUE(said);
+
+  dk2.replug();
+  const int64_t before = r.stats().samples;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&] { return r.stats().reconnects >= 1 && r.stats().samples >= before + 100; }, poses,
+                                       "streaming again beside the abandoned transfers"));
+  dk2.give_back();
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&] { return r.stats().transfers_abandoned_back == abandoned; }, poses,
+                                       "the abandoned transfers back"));
+  const int64_t after = r.stats().samples;
+  ASSERT_NO_FATAL_FAILURE(stream_until(r, [&] { return r.stats().samples >= after + 100; }, poses, "streaming on"));
+  EXPECT_EQ(r.stats().disconnects, 1);
+  EXPECT_TRUE(r.connected());
+}
+
 // A consumer slower than the device: the stream keeps max_pending_s of
 // samples (0.2 s at 1 kHz: 200), drops the oldest beyond, counts them and
 // says so once per power of ten. Driven by the test's clock: the consumer
