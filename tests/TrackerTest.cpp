@@ -829,3 +829,39 @@ TEST(SyntheticMotion, PiecesAreTheWholeBitForBit) {
     EXPECT_EQ(pieces[i].angular_velocity, whole[i].angular_velocity) << i;
   }
 }
+
+#include "tracker/UsbTrackers.hpp"
+
+// Which tracker a reconnection takes (choose_again), whatever chose it first: by its serial number,
+// wherever it now is; without one, at its old address, else the only serial-less tracker of its model
+// (a replug moves the address, so --device BUS:ADDR is not held to the old one); never another model or
+// one of several it cannot be told from.
+TEST(UsbTrackers, AReconnectionTakesTheTrackerStreamedBefore) {
+  auto tracker = [](RiftModel m, int address, std::string serial) {
+    UsbTrackerInfo t;
+    t.model = m;
+    t.bus = 1;
+    t.address = address;
+    t.serial = std::move(serial);
+    t.can_open = true;
+    return t;
+  };
+  std::string why;
+  // With a serial: found at its new address; another tracker at the old address is not taken.
+  const UsbTrackerInfo first = tracker(RiftModel::DK1, 4, "FIRST");
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 4, "OTHER"), tracker(RiftModel::DK1, 9, "FIRST")}, first, why), 1);
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 4, "OTHER")}, first, why), -1);
+  EXPECT_EQ(why, "waiting for the tracker streamed before (serial FIRST): attached: DK1 bus 001 address 004 serial OTHER");
+  // Without one: the old address first, then the only serial-less tracker of the model.
+  const UsbTrackerInfo unread = tracker(RiftModel::DK1, 4, "");
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 7, ""), tracker(RiftModel::DK1, 4, "")}, unread, why), 1);
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK2, 5, ""), tracker(RiftModel::DK1, 6, "")}, unread, why), 1);
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK2, 4, ""), tracker(RiftModel::DK1, 6, "SERIAL")}, unread, why), -1);
+  EXPECT_NE(why.find("DK1 bus 001 address 004 (serial unread); without a serial number it is known by its model, and none of that model "
+                     "without one is attached"),
+            std::string::npos)
+      << why;
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 6, ""), tracker(RiftModel::DK1, 7, "")}, unread, why), -1);
+  EXPECT_NE(why.find("2 of that model without one are attached and cannot be told apart"), std::string::npos) << why;
+  EXPECT_EQ(choose_again({}, unread, why), -1);
+}

@@ -49,7 +49,8 @@ struct RiftStream::Impl {
   std::atomic<bool> is_connected{false};
   bool ever_opened = false;
   bool choice_refused = false;  // the last connect() failed choosing among the trackers attached
-  std::string streamed_serial;  // of the tracker streamed first: reconnections take only it (connect() only)
+  bool streamed_before = false;  // reconnections take only the tracker streamed first (connect() only)
+  UsbTrackerInfo streamed;
   // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
   mutable std::mutex mu;
   std::condition_variable arrived;
@@ -300,22 +301,21 @@ struct RiftStream::Impl {
       return false;
     }
     // The tracker asked for (--device), or the only one; after the first connection, the same one again
-    // by its serial number (a replug moves its address; another tracker must not take its place).
+    // (choose_again: by its serial number -- a replug moves its address; another tracker must not take its place).
     const std::vector<FoundTracker> all = find_trackers(list, static_cast<long>(n), false);
     std::vector<UsbTrackerInfo> infos;
     for (const auto& f : all) infos.push_back(f.info);
-    const int k = choose_tracker(infos, streamed_serial.empty() ? opt.device : streamed_serial, error);
+    const int k = streamed_before ? choose_again(infos, streamed, error) : choose_tracker(infos, opt.device, error);
     choice_refused = k < 0 && !infos.empty();
     if (k < 0) {
       libusb_free_device_list(list, 1);
       // None at all keeps choose_tracker's "no Oculus Rift ..." (an absent device is not a refusal: step() stays quiet).
-      if (!streamed_serial.empty() && !infos.empty())
-        error = "waiting for the tracker streamed before (serial " + streamed_serial + "): " + error;
+      if (streamed_before && infos.empty()) error = "no Oculus Rift attached";
       return false;
     }
     libusb_device* dev = all[static_cast<size_t>(k)].device;
     const RiftModel found = all[static_cast<size_t>(k)].info.model;
-    const std::string serial = all[static_cast<size_t>(k)].info.serial;
+    const UsbTrackerInfo chosen = all[static_cast<size_t>(k)].info;
     char where[64];
     std::snprintf(where, sizeof where, "/dev/bus/usb/%03d/%03d", libusb_get_bus_number(dev), libusb_get_device_address(dev));
     int rc = libusb_open(dev, &handle);
@@ -389,7 +389,8 @@ struct RiftStream::Impl {
       ++segment;
     }
     is_connected = true;
-    if (streamed_serial.empty()) streamed_serial = serial;
+    streamed = chosen;  // (its address now: a serial-less tracker is looked for there first)
+    streamed_before = true;
     const int want = std::max(1, opt.transfers_in_flight);
     transfers.clear();
     stalled.clear();

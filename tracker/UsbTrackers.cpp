@@ -130,4 +130,26 @@ int choose_tracker(const std::vector<UsbTrackerInfo>& ts, const std::string& dev
   return -1;
 }
 
+int choose_again(const std::vector<UsbTrackerInfo>& ts, const UsbTrackerInfo& before, std::string& why) {
+  const std::string attached = ts.empty() ? "none" : list_of(ts);
+  if (!before.serial.empty()) {
+    for (size_t i = 0; i < ts.size(); ++i)
+      if (ts[i].serial == before.serial) return static_cast<int>(i);
+    why = "waiting for the tracker streamed before (serial " + before.serial + "): attached: " + attached;
+    return -1;
+  }
+  std::vector<int> candidates;
+  for (size_t i = 0; i < ts.size(); ++i) {
+    if (ts[i].model != before.model || !ts[i].serial.empty()) continue;
+    if (ts[i].bus == before.bus && ts[i].address == before.address) return static_cast<int>(i);
+    candidates.push_back(static_cast<int>(i));
+  }
+  if (candidates.size() == 1) return candidates[0];
+  why = "waiting for the tracker streamed before (" + describe(before) + "; without a serial number it is known by its model, " +
+        (candidates.empty() ? std::string("and none of that model without one is attached")
+                            : std::to_string(candidates.size()) + " of that model without one are attached and cannot be told apart") +
+        "): attached: " + attached;
+  return -1;
+}
+
 }  // namespace arp::tracker

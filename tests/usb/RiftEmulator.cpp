@@ -11,7 +11,9 @@
 #include <cstring>
 #include <algorithm>
 #include <cstdio>
+#include <condition_variable>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -332,8 +334,36 @@ struct RiftEmulator::State {
 };
 
 namespace {
+// The emulators alive, and how many ioctls each is answering: umockdev answers on its own thread, and a
+// call already under way when an emulator is destroyed must neither start on its State nor be cut off.
+// (Looked up by address only: a State that is gone is never touched.)
+std::mutex g_live_mu;
+std::condition_variable g_live_cv;
+std::map<const RiftEmulator::State*, int> g_live;
+
 gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
-  return static_cast<RiftEmulator::State*>(self)->handle(client);
+  auto* s = static_cast<RiftEmulator::State*>(self);
+  {
+    std::lock_guard<std::mutex> lock(g_live_mu);
+    const auto it = g_live.find(s);
+    if (it == g_live.end()) {  // being destroyed: the device is gone (unanswered, the caller would wait for ever)
+      umockdev_ioctl_client_complete(client, -1, ENODEV);
+      return TRUE;
+    }
+    ++it->second;
+  }
+  const gboolean handled = s->handle(client);
+  std::lock_guard<std::mutex> lock(g_live_mu);
+  --g_live[s];
+  g_live_cv.notify_all();
+  return handled;
+}
+
+// Takes an emulator out of g_live and waits for the ioctls it is answering.
+void forget(const RiftEmulator::State* s) {
+  std::unique_lock<std::mutex> lock(g_live_mu);
+  g_live_cv.wait(lock, [s] { return g_live[s] == 0; });
+  g_live.erase(s);
 }
 }  // namespace
 
@@ -376,9 +406,14 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
   s_->syspath = "/sys/devices/pci0000:00/usb1/1-" + std::to_string(id.address - 1);
   s_->testbed = acquire_testbed();
   s_->handler = umockdev_ioctl_base_new();
+  {
+    std::lock_guard<std::mutex> lock(g_live_mu);
+    g_live[s_.get()] = 0;
+  }
   g_signal_connect_after(s_->handler, "handle-ioctl", G_CALLBACK(on_ioctl), s_.get());
   GError* err = nullptr;
   if (!umockdev_testbed_attach_ioctl(s_->testbed, s_->devnode.c_str(), s_->handler, &err)) {
+    forget(s_.get());
     g_clear_object(&s_->handler);
     release_testbed();
     throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot attach the ioctl handler"));
@@ -390,6 +425,7 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
                           "A: idVendor=2833\\n\nA: idProduct=" + std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") + "\\n\n" +
                           "A: serial=" + id.serial + "\\n\n" + "H: descriptors=" + descriptors_hex(model, layout) + "\n";
   if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err)) {
+    forget(s_.get());
     umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
     g_clear_object(&s_->handler);
     release_testbed();
@@ -398,16 +434,13 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
 }
 
 RiftEmulator::~RiftEmulator() {
-  {
-    std::lock_guard<std::mutex> lock(s_->mu);
-    for (auto& u : s_->done) drop(u);
-    for (auto& u : s_->interrupts) drop(u);
-  }
+  forget(s_.get());  // no ioctl reaches this State from now on
   umockdev_testbed_remove_device(s_->testbed, s_->syspath.c_str());
   umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
-  // The testbed may outlive this device: nothing may reach this State through the handler any more.
   g_signal_handlers_disconnect_by_data(s_->handler, s_.get());
   g_clear_object(&s_->handler);
+  for (auto& u : s_->done) drop(u);
+  for (auto& u : s_->interrupts) drop(u);
   s_->testbed = nullptr;
   release_testbed();
 }
