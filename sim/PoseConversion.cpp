@@ -11,13 +11,18 @@ std::vector<dp::OrientationSample> to_orientation_samples(const std::vector<trac
 }
 
 int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& poses, int64_t offset_ps,
-                          const std::string& source) {
+                          const std::string& source, std::vector<tracker::PoseSample>* appended) {
   std::vector<dp::OrientationSample> more;
   int64_t last = stream[stream.size() - 1].time_ps;
-  for (const auto& s : to_orientation_samples(poses, offset_ps))
-    if (s.time_ps >= last) {
-      more.push_back(s);
-      last = s.time_ps;
+  const std::vector<dp::OrientationSample> all = to_orientation_samples(poses, offset_ps);
+  for (size_t i = 0; i < all.size(); ++i)
+    if (all[i].time_ps >= last) {
+      more.push_back(all[i]);
+      last = all[i].time_ps;
+      if (appended) {
+        appended->push_back(poses[i]);
+        appended->back().time_ps = all[i].time_ps;
+      }
     }
   stream.append(more, source);
   return static_cast<int64_t>(more.size());

@@ -55,6 +55,7 @@ struct RunSpec {
   tracker::MotionSpec motion;                    // --motion ...
   std::string trace;                             // --trace FILE
   std::string live;                              // --live usb
+  std::string record_live;                       // --record-live FILE: the live motion the pipeline took, as a trace
   std::string device;                            // --device SERIAL|BUS:ADDR: which tracker
   double mag_yaw_gain = 0;                       // --mag-yaw: the magnetometer's yaw correction, 1/s (0: off)
   HostSpec host;

@@ -195,7 +195,11 @@ void Session::build_motion() {
     };
   }
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
+  if (!spec_.record_live.empty() && spec_.live.empty())
+    throw InputError("--record-live", spec_.record_live, "records the motion of live input: use it with --live usb");
   if ((live_ = tracker::live_source(spec_.live, spec_.device, spec_.mag_yaw_gain))) motion_source_ = "live " + live_->describe();
+  // Opened before any work: an unwritable path is said now, not after the run.
+  if (live_ && !spec_.record_live.empty()) live_record_ = std::make_unique<tracker::TraceWriter>(spec_.record_live, false);
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
   extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));
@@ -310,7 +314,9 @@ void Session::build_live_input(stage::TimedInputs& in) {
     // (placed by device time, so later frames find it), or the samples would wait in the stream's bound.
     live_->poll(*got, 0);
     for (const auto& e : live_->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
-    const int64_t appended = append_live_poses(stream_, *got, offset_ps, motion_source_);
+    std::vector<tracker::PoseSample> taken;
+    const int64_t appended = append_live_poses(stream_, *got, offset_ps, motion_source_, live_record_ ? &taken : nullptr);
+    for (const auto& p : taken) live_record_->append(p);
     live_samples_ += appended;
     live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // sent while the run was being set up
     got->clear();
@@ -589,6 +595,10 @@ RunSummary Session::run() {
     r["live"]["behind_max_s"] = static_cast<double>(live_behind_max_ps_) * 1e-12;
     r["live"]["behind_at_end_s"] = static_cast<double>(live_behind_ps_) * 1e-12;
     r["live"]["connected_at_end"] = live_->connected();
+    if (live_record_) {
+      r["live"]["recorded"] = {{"file", spec_.record_live}, {"samples", live_record_->written()}};
+      live_record_->commit();
+    }
   }
   if (host_) {
     const double px_rad = deg_to_rad(spec_.config.lens.fov_deg) / spec_.config.timing.h_active;

@@ -21,6 +21,7 @@
 #include "rtl_model/systemc/TimedRun.hpp"
 #include "tracker/MotionSummary.hpp"
 #include "tracker/PoseSource.hpp"
+#include "tracker/TraceFile.hpp"
 
 namespace arp::sim {
 
@@ -76,6 +77,7 @@ class Session {
   std::vector<std::string> motion_notes_;
   std::unique_ptr<host::WalkPath> walk_;
   std::unique_ptr<tracker::PoseSource> live_;
+  std::unique_ptr<tracker::TraceWriter> live_record_;  // --record-live: written as the samples are taken
   dp::OrientationStream stream_;
   dp::DisplayMemorySet memories_;
   std::unique_ptr<host::Scene> scene_;

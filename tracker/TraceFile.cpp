@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
@@ -99,26 +100,46 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
 void write_trace_csv(const std::string& path, const std::vector<PoseSample>& samples) {
   bool positions = !samples.empty();
   for (const auto& s : samples) positions = positions && s.has_position;
-  const auto tmp = temp_path_beside(path);
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (!f) throw InputError(path, "", "cannot write the trace file");
-  std::fprintf(f, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
-               positions ? ", position in metres" : "");
-  std::fprintf(f, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n");
-  bool ok = true;
-  for (const auto& s : samples) {
-    const auto& q = s.orientation;
-    ok = ok && std::fprintf(f, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y,
-                            q.z) > 0;
-    if (positions) ok = ok && std::fprintf(f, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
-    ok = ok && std::fputc('\n', f) != EOF;
+  TraceWriter w(path, positions);
+  for (const auto& s : samples) w.append(s);
+  w.commit();
+}
+
+TraceWriter::TraceWriter(const std::string& path, bool positions) : path_(path), positions_(positions) {
+  tmp_ = temp_path_beside(path).string();
+  f_ = std::fopen(tmp_.c_str(), "w");
+  if (!f_) throw InputError(path, "", "cannot write the trace file");
+  ok_ = std::fprintf(f_, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
+                     positions ? ", position in metres" : "") > 0;
+  ok_ = ok_ && std::fprintf(f_, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n") > 0;
+}
+
+TraceWriter::~TraceWriter() {
+  if (!f_) return;
+  std::fclose(f_);
+  discard_temp_file(tmp_);
+}
+
+void TraceWriter::append(const PoseSample& s) {
+  if (written_ > 0 && s.time_ps < last_ps_) throw std::invalid_argument("trace samples out of time order");
+  if (positions_ && !s.has_position) throw std::invalid_argument("a trace with positions needs one for every sample");
+  const auto& q = s.orientation;
+  ok_ = ok_ && std::fprintf(f_, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y, q.z) > 0;
+  if (positions_) ok_ = ok_ && std::fprintf(f_, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
+  ok_ = ok_ && std::fputc('\n', f_) != EOF;
+  if (!ok_) throw InputError(path_, "", "writing the trace failed");
+  last_ps_ = s.time_ps;
+  ++written_;
+}
+
+void TraceWriter::commit() {
+  const bool closed = std::fclose(f_) == 0;
+  f_ = nullptr;
+  if (!ok_ || !closed) {
+    discard_temp_file(tmp_);
+    throw InputError(path_, "", "writing the trace failed");
   }
-  ok = (std::fclose(f) == 0) && ok;
-  if (!ok) {
-    discard_temp_file(tmp);
-    throw InputError(path, "", "writing the trace failed");
-  }
-  commit_temp_file(tmp, path);
+  commit_temp_file(tmp_, path_);
 }
 
 }  // namespace arp::tracker

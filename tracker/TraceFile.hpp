@@ -18,6 +18,7 @@
 // nothing but the reading of its first seconds.
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <istream>
 #include <limits>
 #include <string>
@@ -39,5 +40,26 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& sour
 // Writes through a temporary file and a rename: never a half-written trace.
 // Positions are written when every sample has one.
 void write_trace_csv(const std::string& path, const std::vector<PoseSample>& samples);
+
+// A trace written as it comes, in flat memory (a live run's motion, an hour of it): into a temporary
+// file beside `path`, renamed to it by commit(); destroyed uncommitted (an error, an interruption) it
+// leaves nothing. Opening checks that the file can be written before any work is done. Times must not
+// decrease (std::invalid_argument otherwise); with `positions` every sample must have one.
+class TraceWriter {
+ public:
+  TraceWriter(const std::string& path, bool positions);  // InputError naming `path` when it cannot be written
+  ~TraceWriter();
+  TraceWriter(const TraceWriter&) = delete;
+  TraceWriter& operator=(const TraceWriter&) = delete;
+  void append(const PoseSample& s);
+  void commit();
+  int64_t written() const { return written_; }
+
+ private:
+  std::string path_, tmp_;
+  std::FILE* f_ = nullptr;
+  bool positions_, ok_ = true;
+  int64_t written_ = 0, last_ps_ = 0;
+};
 
 }  // namespace arp::tracker

@@ -25,6 +25,21 @@ using test::yaw_90;
 
 using arp::test::read_text;
 
+// Samples 1 ms apart on the device; on the host's timeline a step is shorter while the clock sheds the
+// first report's latency (DeviceClock's lower envelope: each report that arrived sooner than any before
+// moves the timeline earlier), never longer, and the steps shed add up to less than the lead tolerance.
+void expect_device_steps(const std::vector<tracker::PoseSample>& trace) {
+  int64_t shed = 0;
+  for (size_t i = 1; i < trace.size(); ++i) {
+    const int64_t step = trace[i].time_ps - trace[i - 1].time_ps;
+    ASSERT_GT(step, 0) << i;
+    ASSERT_LE(step, 1'000'000'000) << i;
+    shed += 1'000'000'000 - step;
+  }
+  EXPECT_LT(shed, 250'000'000'000);
+}
+
+
 }  // namespace
 
 TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
@@ -40,17 +55,7 @@ TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
   // How many samples 0.5 s of wall time holds depends on the machine's pace (a CI run had 243 of ~500);
   // what must hold at any pace: the device's samples, consecutive, following the truth.
   ASSERT_GT(trace.size(), 50u);
-  // Samples 1 ms apart on the device; on the host's timeline a step is shorter while the clock sheds the
-  // first report's latency (DeviceClock's lower envelope: each report that arrived sooner than any before
-  // moves the timeline earlier), never longer, and the steps shed add up to less than the lead tolerance.
-  int64_t shed = 0;
-  for (size_t i = 1; i < trace.size(); ++i) {
-    const int64_t step = trace[i].time_ps - trace[i - 1].time_ps;
-    ASSERT_GT(step, 0) << i;
-    ASSERT_LE(step, 1'000'000'000) << i;
-    shed += 1'000'000'000 - step;
-  }
-  EXPECT_LT(shed, 250'000'000'000);
+  ASSERT_NO_FATAL_FAILURE(expect_device_steps(trace));
   EXPECT_LT(angle_between_deg(trace.back().orientation, truth[trace.size()].orientation), 0.5);
   // The recording replays into the pipeline.
   const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
@@ -127,8 +132,11 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
 
 namespace {
 // The integer after "key": in a pretty-printed JSON report (-1 if absent).
-int64_t json_int(const std::string& text, const std::string& key) {
-  const size_t at = text.find("\"" + key + "\": ");
+// The first integer `key` in `text` (after `after`, when given).
+int64_t json_int(const std::string& text, const std::string& key, const std::string& after = "") {
+  const size_t from = after.empty() ? 0 : text.find("\"" + after + "\"");
+  if (from == std::string::npos) return -1;
+  const size_t at = text.find("\"" + key + "\": ", from);
   return at == std::string::npos ? -1 : std::stoll(text.substr(at + key.size() + 4));
 }
 double json_double(const std::string& text, const std::string& key) {
@@ -141,10 +149,11 @@ double json_double(const std::string& text, const std::string& key) {
 // here against the display's 60): every frame is late, yet it takes what the device sent -- before, a late
 // frame took nothing (0 of 1001 samples reached the pipeline).
 TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
-  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0));
+  const auto truth = yaw_90(30.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
   arp::test::TempDir d;
   const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 20 --every 0 --report " +
-                                          d.file("slow.json"));
+                                          d.file("slow.json") + " --record-live " + d.file("taken.csv"));
   ASSERT_EQ(run.status, 0) << run.output;
   const std::string all = read_text(d.file("slow.json"));
   ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
@@ -154,6 +163,20 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   ASSERT_GT(sent, 100) << rep.substr(0, 800);
   EXPECT_EQ(dropped, 0);
   EXPECT_GE(taken + before + after + dropped, sent);  // every sample accounted for
+  // What the pipeline took, as it took it (--record-live): every one, in the device's order, each the
+  // device's next sample -- sample j of the device fused is the motion after j + 1 ms, the first taken
+  // being the device's sample `before` -- on steps of its 1 ms (less while the clock sheds the first
+  // report's latency).
+  const auto took = read_trace_csv(d.file("taken.csv"));
+  ASSERT_EQ(static_cast<int64_t>(took.size()), taken);
+  EXPECT_EQ(json_int(rep, "samples", "recorded"), taken);
+  ASSERT_NO_FATAL_FAILURE(expect_device_steps(took));
+  for (size_t i = 0; i < took.size(); ++i) {
+    const size_t j = static_cast<size_t>(before) + i + 1;
+    ASSERT_LT(j, truth.size());
+    // (0.01 deg: measured 1.3e-4; one sample off is 0.09 deg at 90 deg/s)
+    ASSERT_LT(angle_between_deg(took[i].orientation, truth[j].orientation), 0.01) << i;
+  }
   // Received during the run, not only by the drain after its end: what is left for the drain is what the
   // stream fused during the last frame and the report (before, a late frame took nothing, and the drain
   // would hold everything fused after the first frame). Holds at any pace: a starved stream fuses late,
@@ -206,4 +229,20 @@ TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
     EXPECT_EQ(r.status, 2) << b.args << "\n" << r.output;
     EXPECT_NE(r.output.find(b.says), std::string::npos) << b.args << "\n" << r.output;
   }
+}
+
+// --record-live is for live input, and a path it cannot write is said before the run, naming it; nothing
+// is left behind.
+TEST(RiftCommand, RecordLiveIsCheckedBeforeTheRun) {
+  arp::test::TempDir d;
+  const auto alone = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --record-live " + d.file("t.csv"));
+  EXPECT_EQ(alone.status, 2) << alone.output;
+  EXPECT_NE(alone.output.find("--record-live"), std::string::npos) << alone.output;
+  EXPECT_NE(alone.output.find("use it with --live usb"), std::string::npos) << alone.output;
+  test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0));
+  const auto nowhere = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 2 --record-live " +
+                                              d.file("no/such/folder/t.csv"));
+  EXPECT_EQ(nowhere.status, 2) << nowhere.output;
+  EXPECT_NE(nowhere.output.find("no/such/folder/t.csv"), std::string::npos) << nowhere.output;
+  EXPECT_TRUE(std::filesystem::is_empty(d.path())) << "something was left in " << d.path();
 }
