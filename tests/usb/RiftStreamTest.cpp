@@ -82,9 +82,6 @@ void drive(test::ManualClock& clock, const test::RiftEmulator& d, RiftStream& r,
   }
   ASSERT_NO_FATAL_FAILURE(settle(d, r, out));
 }
-void drive(test::ManualClock& clock, const test::RiftEmulator& d, RiftStream& r, int64_t ms, std::vector<PoseSample>& out) {
-  drive(clock, d, r, ms, &out);
-}
 
 // Collects what the stream fused until `n` poses are in `out` (the pump may not have handed them over yet).
 void collect(RiftStream& r, std::vector<PoseSample>& out, size_t n, double limit_s = 20) {
@@ -92,6 +89,26 @@ void collect(RiftStream& r, std::vector<PoseSample>& out, size_t n, double limit
   while (out.size() < n && std::chrono::steady_clock::now() < until) r.poll(5, out);
   ASSERT_GE(out.size(), n);
 }
+
+// An emulated device and a stream on one clock the test drives (opened by open(): a test may set the
+// device's quirks first).
+struct Driven {
+  test::ManualClock clock;
+  test::RiftEmulator device;
+  RiftStream stream;
+  Driven(RiftModel model, std::vector<PoseSample> truth, RiftStreamOptions o)
+      : device(model, std::move(truth)), stream((o.host_clock = clock.function(), o)) {
+    device.drive_by(clock);
+  }
+  bool open() {
+    std::string err;
+    const bool ok = stream.open(err);
+    EXPECT_TRUE(ok) << err;
+    return ok;
+  }
+  void drive(int64_t ms, std::vector<PoseSample>* out) { ::drive(clock, device, stream, ms, out); }
+  void drive(int64_t ms, std::vector<PoseSample>& out) { drive(ms, &out); }
+};
 
 }  // namespace
 
@@ -102,22 +119,19 @@ void collect(RiftStream& r, std::vector<PoseSample>& out, size_t n, double limit
 // that clock, well inside the device's 300 ms, whatever the machine's pace.
 TEST(RiftStream, Dk1StreamsAcrossTheCounterWrapAndKeepsItsKeepAlive) {
   const auto truth = yaw_90(4.0);
-  test::ManualClock clock;
-  test::RiftEmulator dk1(RiftModel::DK1, truth);
-  dk1.drive_by(clock);
   RiftStreamOptions o;
   o.keep_alive_ms = 300;        // the device stops 300 ms after the last keep-alive...
   o.keep_alive_resend_s = 0.1;  // ...so 1.2 s of streaming needs the re-sends
-  o.host_clock = clock.function();
-  RiftStream r(o);
-  std::string err;
-  ASSERT_TRUE(r.open(err)) << err;
+  Driven t(RiftModel::DK1, truth, o);
+  test::RiftEmulator& dk1 = t.device;
+  RiftStream& r = t.stream;
+  ASSERT_TRUE(t.open());
   EXPECT_EQ(r.model(), RiftModel::DK1);
   EXPECT_TRUE(dk1.kernel_driver_detached());
   EXPECT_TRUE(dk1.interface_claimed());
   EXPECT_TRUE(r.stats().kernel_driver_detached);
   std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 1200, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(1200, poses));
   ASSERT_NO_FATAL_FAILURE(collect(r, poses, 1201));
   EXPECT_EQ(dk1.reports_sent(), 1201);  // the device never ran out of keep-alive
   EXPECT_TRUE(r.connected());
@@ -147,18 +161,15 @@ TEST(RiftStream, Dk1StreamsAcrossTheCounterWrapAndKeepsItsKeepAlive) {
 // its 300 ms: the test above would see it.
 TEST(RiftStream, ADeviceWhoseKeepAliveRunsOutStops) {
   const auto truth = yaw_90(2.0);
-  test::ManualClock clock;
-  test::RiftEmulator dk1(RiftModel::DK1, truth);
-  dk1.drive_by(clock);
   RiftStreamOptions o;
   o.keep_alive_ms = 300;
   o.keep_alive_resend_s = 10;
-  o.host_clock = clock.function();
-  RiftStream r(o);
-  std::string err;
-  ASSERT_TRUE(r.open(err)) << err;
+  Driven t(RiftModel::DK1, truth, o);
+  test::RiftEmulator& dk1 = t.device;
+  RiftStream& r = t.stream;
+  ASSERT_TRUE(t.open());
   std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 600, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(600, poses));
   EXPECT_EQ(dk1.reports_sent(), 301);  // 0..300 ms
   EXPECT_EQ(r.stats().keep_alives, 1);
 }
@@ -246,30 +257,27 @@ TEST(RiftStream, NoDeviceGivesAClearAnswer) {
 // its report was sent.
 TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
   const auto truth = yaw_90(12.0);
-  test::ManualClock clock;
-  test::RiftEmulator dk1(RiftModel::DK1, truth);
-  dk1.drive_by(clock);
   RiftStreamOptions o;
-  o.host_clock = clock.function();
-  RiftStream r(o);
-  std::string err;
-  ASSERT_TRUE(r.open(err)) << err;
+  Driven t(RiftModel::DK1, truth, o);
+  test::RiftEmulator& dk1 = t.device;
+  RiftStream& r = t.stream;
+  ASSERT_TRUE(t.open());
   std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 199, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(199, poses));
   EXPECT_EQ(r.stats().samples, 200);
 
   dk1.set_report_length(62);
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 200, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(200, poses));
   EXPECT_EQ(r.stats().samples, 400);
   EXPECT_EQ(r.stats().malformed, 0);
 
   dk1.inject_sample_count(7);
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 1, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(1, poses));
   EXPECT_EQ(r.stats().samples_lost_on_device, 4);  // 7 taken, 3 held
   EXPECT_EQ(r.stats().samples, 401);               // the two older slots were fused already
 
   dk1.inject_malformed_report(150);
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 151, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(151, poses));
   EXPECT_EQ(r.stats().malformed, 150);
   EXPECT_EQ(r.stats().malformed_short, 150);
   // 150 ms without a sample: a break, bridged by holding the pose. The fused orientation then trails the
@@ -280,10 +288,10 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
 
   // The restart sets the counter back by more than the stale tolerance (20 ms): the counter, which wrapped
   // at the 536th report, reads 100 or more after 640 reports.
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 640 - 552, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(640 - 552, poses));
   EXPECT_EQ(r.stats().clock_reanchors, 0);
   dk1.restart_counter();
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk1, r, 300, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(300, poses));
   EXPECT_EQ(r.stats().clock_reanchors, 1);
   EXPECT_EQ(r.stats().clock_held_reports, 0);  // the arrival it re-anchored at is the device's time
   EXPECT_EQ(r.stats().time_went_back, 0);
@@ -296,7 +304,7 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
     ASSERT_GT(poses[i].time_ps, poses[i - 1].time_ps) << i;
     ASSERT_EQ(poses[i].time_ps % kMsPs, 0) << i;
   }
-  EXPECT_EQ(poses.back().time_ps, clock.now_ps());
+  EXPECT_EQ(poses.back().time_ps, t.clock.now_ps());
 
   // Events: the 1st, 10th and 100th malformed report, one re-anchor; never one line per report.
   int malformed_events = 0, reanchor_events = 0;
@@ -317,17 +325,14 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
 // re-anchor at the arrival, and time goes on without a step.
 TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   const auto truth = yaw_90(4.0);
-  test::ManualClock clock;
-  test::RiftEmulator dk2(RiftModel::DK2, truth);
-  dk2.drive_by(clock);
-  dk2.delay_delivery(20);
   RiftStreamOptions o;
-  o.host_clock = clock.function();
-  RiftStream r(o);
-  std::string err;
-  ASSERT_TRUE(r.open(err)) << err;
+  Driven t(RiftModel::DK2, truth, o);
+  test::RiftEmulator& dk2 = t.device;
+  RiftStream& r = t.stream;
+  dk2.delay_delivery(20);
+  ASSERT_TRUE(t.open());
   std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk2, r, 500, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(500, poses));
   ASSERT_NO_FATAL_FAILURE(collect(r, poses, 501));
   EXPECT_EQ(r.stats().clock_reanchors, 0);
   EXPECT_EQ(r.stats().clock_held_reports, 20);  // the burst's reports after the anchor
@@ -336,7 +341,7 @@ TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   expect_fused_motion(r, truth);
 
   dk2.jump_counter(2'000'000);  // 2 s of microseconds
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk2, r, 100, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
   ASSERT_NO_FATAL_FAILURE(collect(r, poses, 601));
   EXPECT_EQ(r.stats().clock_reanchors, 1);
   for (size_t k = 501; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
@@ -396,16 +401,12 @@ TEST(RiftStream, TransfersLibusbNeverGivesBackAreFreedWhenTheyComeBack) {
 // takes nothing for 700 ms of it, then gets exactly the newest 200.
 TEST(RiftStream, AConsumerSlowerThanTheDeviceGetsTheNewestWithinTheBound) {
   const auto truth = yaw_90(4.0);
-  test::ManualClock clock;
-  test::RiftEmulator dk2(RiftModel::DK2, truth);
-  dk2.drive_by(clock);
   RiftStreamOptions o;
   o.max_pending_s = 0.2;
-  o.host_clock = clock.function();
-  RiftStream r(o);
-  std::string err;
-  ASSERT_TRUE(r.open(err)) << err;
-  ASSERT_NO_FATAL_FAILURE(drive(clock, dk2, r, 699, nullptr));  // stats() does not consume
+  Driven t(RiftModel::DK2, truth, o);
+  RiftStream& r = t.stream;
+  ASSERT_TRUE(t.open());
+  ASSERT_NO_FATAL_FAILURE(t.drive(699, nullptr));  // stats() does not consume
   std::vector<PoseSample> got;
   r.poll(0, got);
   const StreamStats st = r.stats();
