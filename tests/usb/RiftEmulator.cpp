@@ -111,6 +111,7 @@ struct RiftEmulator::State {
   bool connected = true, detached = false, claimed = false, claimed_elsewhere = false, halted = false;
   int64_t clear_halt_count = 0;
   int cut_remaining = 0;        // reports still to cut short
+  int fail_remaining = 0, fail_error = 0;  // fail_transfers()
   size_t report_length = tracker::kRiftReportSize;
   int claimed_count_next = 0;   // > 0: the next report's sample count
   uint64_t counter_shift = 0;   // added to every timestamp from now on (a restart), modulo the counter's width
@@ -300,6 +301,11 @@ struct RiftEmulator::State {
           u = *i;  // a halted endpoint fails every transfer until the halt is cleared
           interrupts.erase(i);
           u.status = -EPIPE;
+        } else if (connected && fail_remaining > 0 && i != interrupts.end()) {
+          u = *i;  // a transfer error
+          interrupts.erase(i);
+          u.status = -fail_error;
+          --fail_remaining;
         } else if (!connected && i != interrupts.end()) {
           u = *i;  // unplugged: what was in flight comes back failed
           interrupts.erase(i);
@@ -520,6 +526,12 @@ void RiftEmulator::give_back() {
     u.status = -ENOENT;  // cancelled
     s_->done.push_back(u);
   }
+}
+
+void RiftEmulator::fail_transfers(int n, int error) {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  s_->fail_remaining = n;
+  s_->fail_error = error;
 }
 
 void RiftEmulator::stall() {

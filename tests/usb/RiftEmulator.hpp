@@ -88,6 +88,9 @@ class RiftEmulator {
   // completes them as cancelled.
   void withhold_transfers();
   void give_back();
+  // The next n interrupt transfers fail with usbfs status -error (ETIME: the host controller timed out;
+  // EPROTO: a bus error), each at once and without a report.
+  void fail_transfers(int n, int error);
   void stall();                              // endpoint 0x81 halts: transfers fail (EPIPE) until a CLEAR_HALT
   void hold_interface_elsewhere();           // another program detached usbhid and claimed interface 0 (EBUSY)
   int64_t clear_halts() const;

@@ -7,6 +7,7 @@
 // `arpsim tracker record` writing a trace from the emulated device.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -347,6 +348,36 @@ TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   for (size_t k = 501; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   EXPECT_EQ(r.stats().gaps, 0);  // the jump was in the counter, not in the samples
   expect_fused_motion(r, truth);
+}
+
+// Transfer errors, driven by the test's clock: a few (the host controller
+// timing out, a bus error) are retried with nothing lost; 20 in a row are
+// taken for an unplug: the stream lets go, reconnects, and streams on.
+TEST(RiftStream, TransferErrorsAreRetriedAndARunOfThemIsAnUnplug) {
+  RiftStreamOptions o;
+  o.reconnect_every_s = 1e-9;  // at once: the test's clock stands still while it waits
+  Driven t(RiftModel::DK1, yaw_90(4.0), o);
+  RiftStream& r = t.stream;
+  ASSERT_TRUE(t.open());
+  std::vector<PoseSample> poses;
+  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  t.device.fail_transfers(5, ETIME);
+  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  EXPECT_EQ(r.stats().transfer_errors, 5);
+  EXPECT_EQ(r.stats().disconnects, 0);
+  EXPECT_EQ(r.stats().samples, 201);  // every report: the errors cost no sample
+  EXPECT_EQ(r.stats().gaps, 0);
+  t.device.fail_transfers(20, EPROTO);
+  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  EXPECT_EQ(r.stats().transfer_errors, 25);  // every one counted; the 20th in a row is the unplug
+  EXPECT_EQ(r.stats().disconnects, 1);
+  EXPECT_EQ(r.stats().reconnects, 1);
+  EXPECT_TRUE(r.connected());
+  EXPECT_EQ(r.stats().samples, 301);
+  bool said = false;
+  for (const auto& e : r.take_events())
+    said |= e.kind == StreamEvent::Kind::Disconnected && e.detail.find("20 transfers in a row failed") != std::string::npos;
+  EXPECT_TRUE(said);
 }
 
 // A hung host controller: the device is unplugged while libusb never gives
