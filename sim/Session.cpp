@@ -90,6 +90,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     throw InputError("--renderer", s.memories.renderer, "region warping (--warp) moves vertices on the CPU: it needs --renderer software");
   if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);
   check_output_paths({{"--report", o.report}, {"--csv", o.csv}, {"--host-csv", o.host_csv}, {"--tear-image", o.tear_image},
+                      {"--record-live", s.record_live},
                       {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
                       {"--vcd's save file", o.vcd.empty() ? "" : fs::path(vcd_path(o.vcd)).replace_extension(".gtkw").string(), true}},
                      {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk},

@@ -856,6 +856,7 @@ TEST(UsbTrackers, AReconnectionTakesTheTrackerStreamedBefore) {
   const UsbTrackerInfo unread = tracker(RiftModel::DK1, 4, "");
   EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 7, ""), tracker(RiftModel::DK1, 4, "")}, unread, why), 1);
   EXPECT_EQ(choose_again({tracker(RiftModel::DK2, 5, ""), tracker(RiftModel::DK1, 6, "")}, unread, why), 1);
+  EXPECT_EQ(choose_again({tracker(RiftModel::DK1, 6, ""), tracker(RiftModel::DK1, 4, "READ-NOW")}, unread, why), 1);  // its serial read now
   EXPECT_EQ(choose_again({tracker(RiftModel::DK2, 4, ""), tracker(RiftModel::DK1, 6, "SERIAL")}, unread, why), -1);
   EXPECT_NE(why.find("DK1 bus 001 address 004 (serial unread); without a serial number it is known by its model, and none of that model "
                      "without one is attached"),

@@ -56,7 +56,8 @@ class DeviceClock {
     bool wrapped;         // the counter wrapped since the last report
     bool backwards;       // a stale report: its time is held at the last one
     bool reanchored;      // the device restarted or jumped: time carries on from the arrival
-    bool held;            // after a re-anchor behind the last time given: 1 ps after it, until the clock passes it
+    bool held;            // its time would not be after the last one given (a re-anchor behind it, the envelope moving
+                          // earlier by more than a report's period): 1 ps after it, until the timeline passes it
     int64_t jump_ps;      // when re-anchored: device time's step against the timeline's (negative: back)
     int64_t device_ps;    // the device's own time since the current anchor (unwrapped ticks x tick)
   };
@@ -68,7 +69,9 @@ class DeviceClock {
   // Unwrapped device ticks since the current anchor.
   int64_t unwrapped_ticks() const { return ticks_; }
   int64_t reanchors() const { return reanchors_; }
-  // Where the current segment's times sit against its anchor's arrival, ps (<= 0: the lower envelope).
+  // Where the current segment's times sit against its anchor's arrival, ps: the lower envelope (<= 0 while
+  // the anchor is a hull vertex; trimming the hull past kMaxHull may drop it and move the timeline later,
+  // by what the dropped vertices held down -- rare: jittered arrivals keep a few vertices).
   double envelope_offset_ps() const { return offset_; }
   // Vertices of the lower hull kept (a few for jittered arrivals; at most kMaxHull).
   size_t hull_size() const { return hull_.size(); }

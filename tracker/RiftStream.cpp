@@ -48,9 +48,9 @@ struct RiftStream::Impl {
   std::atomic<RiftModel> model{RiftModel::DK1};
   std::atomic<bool> is_connected{false};
   bool ever_opened = false;
-  bool choice_refused = false;  // the last connect() failed choosing among the trackers attached
-  bool streamed_before = false;  // reconnections take only the tracker streamed first (connect() only)
-  UsbTrackerInfo streamed;
+  std::atomic<bool> choice_refused{false};  // the last connect() failed choosing among the trackers attached (pump writes)
+  bool streamed_before = false;  // reconnections take only the tracker streamed before (connect() only)
+  UsbTrackerInfo streamed;       // as found at its last connection
   // Shared with the consumer (the pump thread writes, poll() reads): guarded by mu.
   mutable std::mutex mu;
   std::condition_variable arrived;
@@ -92,7 +92,8 @@ struct RiftStream::Impl {
 
   int64_t now_ps() const {
     if (opt.host_clock) return opt.host_clock() - t0_ps;
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count() * 1000;
+    const int64_t ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+    return ns < INT64_MAX / 1000 ? ns * 1000 : INT64_MAX;  // (saturated after 106 days of streaming)
   }
   double now_s() const { return static_cast<double>(now_ps()) * 1e-12; }
   void event(StreamEvent::Kind k, std::string detail) {
@@ -254,10 +255,13 @@ struct RiftStream::Impl {
       // Integrated over the device's own step between the samples: the timeline's step also holds the
       // host's corrections (the envelope, holding). Across a re-anchor or a reconnection only the sample's
       // own period is known.
+      // A break is judged on the device's step within a stretch (the envelope may have shed a counter
+      // glitch from the timeline: the step is then the glitch, not motion), else on the timeline's.
       int64_t dt_ps = same_stretch ? device_ps - last_device_ps : kSamplePs;
-      if (fusion_started && !m.held && t - last_sample_ps > kGapPs) {
+      const int64_t step = same_stretch ? dt_ps : t - last_sample_ps;
+      if (fusion_started && (same_stretch || !m.held) && step > kGapPs) {
         ++stats.gaps;
-        stats.gap_s += static_cast<double>(t - last_sample_ps) * 1e-12;
+        stats.gap_s += static_cast<double>(step) * 1e-12;
         dt_ps = kSamplePs;  // this sample's own period only
       }
       if (opt.fusion.yaw_gain > 0) {

@@ -40,7 +40,7 @@ struct RiftStreamOptions {
   // 1 MB. A consumer that falls further behind loses the oldest, counted (dropped_unconsumed) and reported.
   double max_pending_s = 10.0;
   FusionParams fusion;
-  // The host's clock, ps from any origin, non-decreasing, callable from the pump thread: when reports
+  // The host's clock, ps from any origin, non-decreasing, thread-safe (the pump and the consumer read it): when reports
   // arrive (DeviceClock's arrivals), when keep-alives are due, when to try reconnecting, event times.
   // Empty: the steady clock. Tests drive it, with the emulated device, so that nothing they check
   // depends on how fast the machine runs. (Waits for USB events stay on the wall clock.)

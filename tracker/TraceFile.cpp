@@ -121,6 +121,7 @@ TraceWriter::~TraceWriter() {
 }
 
 void TraceWriter::append(const PoseSample& s) {
+  if (!f_) throw std::logic_error("trace already committed");
   if (written_ > 0 && s.time_ps < last_ps_) throw std::invalid_argument("trace samples out of time order");
   if (positions_ && !s.has_position) throw std::invalid_argument("a trace with positions needs one for every sample");
   const auto& q = s.orientation;
@@ -133,6 +134,7 @@ void TraceWriter::append(const PoseSample& s) {
 }
 
 void TraceWriter::commit() {
+  if (!f_) throw std::logic_error("trace already committed");
   const bool closed = std::fclose(f_) == 0;
   f_ = nullptr;
   if (!ok_ || !closed) {

@@ -140,9 +140,10 @@ int choose_again(const std::vector<UsbTrackerInfo>& ts, const UsbTrackerInfo& be
   }
   std::vector<int> candidates;
   for (size_t i = 0; i < ts.size(); ++i) {
-    if (ts[i].model != before.model || !ts[i].serial.empty()) continue;
+    if (ts[i].model != before.model) continue;
+    // At its address it is taken whether its serial reads now or not (a read can fail once, at one open).
     if (ts[i].bus == before.bus && ts[i].address == before.address) return static_cast<int>(i);
-    candidates.push_back(static_cast<int>(i));
+    if (ts[i].serial.empty()) candidates.push_back(static_cast<int>(i));
   }
   if (candidates.size() == 1) return candidates[0];
   why = "waiting for the tracker streamed before (" + describe(before) + "; without a serial number it is known by its model, " +

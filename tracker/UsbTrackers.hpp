@@ -52,8 +52,9 @@ bool selects(const std::string& device, const UsbTrackerInfo& t);
 int choose_tracker(const std::vector<UsbTrackerInfo>& trackers, const std::string& device, std::string& why);
 // Which tracker a reconnection takes: the one streamed `before`, however it was chosen (--device SERIAL or
 // BUS:ADDR, or the only one). By its serial number when it had one -- a replug moves its address, and
-// another tracker must not take its place. Without one (unreadable): the same model at the same address,
-// else the only serial-less tracker of that model attached (its new address). -1 and the reason otherwise.
+// another tracker must not take its place. Without one (unreadable): the same model at the same address
+// (its serial readable now or not), else the only serial-less tracker of that model attached (its new
+// address). -1 and the reason otherwise.
 int choose_again(const std::vector<UsbTrackerInfo>& trackers, const UsbTrackerInfo& before, std::string& why);
 
 }  // namespace arp::tracker

@@ -27,15 +27,22 @@ using arp::test::read_text;
 
 // Samples 1 ms apart on the device; on the host's timeline a step is shorter while the clock sheds the
 // first report's latency (DeviceClock's lower envelope: each report that arrived sooner than any before
-// moves the timeline earlier), never longer, and the steps shed add up to less than the lead tolerance.
+// moves the timeline earlier), and the steps shed add up to less than the lead tolerance. Longer only by
+// the host/device rate skew, once 10 s of device time allow estimating it (a slow machine's run can reach
+// that): each step by 0.1 % at most, and the one step where the estimate first applies by 20 ms.
 void expect_device_steps(const std::vector<tracker::PoseSample>& trace) {
   int64_t shed = 0;
+  int longer = 0;
   for (size_t i = 1; i < trace.size(); ++i) {
     const int64_t step = trace[i].time_ps - trace[i - 1].time_ps;
     ASSERT_GT(step, 0) << i;
-    ASSERT_LE(step, 1'000'000'000) << i;
-    shed += 1'000'000'000 - step;
+    if (step > 1'001'000'000) {
+      ++longer;
+      ASSERT_LE(step, 21'000'000'000) << i;
+    }
+    shed += std::max<int64_t>(0, 1'000'000'000 - step);
   }
+  EXPECT_LE(longer, 1);
   EXPECT_LT(shed, 250'000'000'000);
 }
 
@@ -240,9 +247,16 @@ TEST(RiftCommand, RecordLiveIsCheckedBeforeTheRun) {
   EXPECT_NE(alone.output.find("--record-live"), std::string::npos) << alone.output;
   EXPECT_NE(alone.output.find("use it with --live usb"), std::string::npos) << alone.output;
   test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0));
-  const auto nowhere = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 2 --record-live " +
-                                              d.file("no/such/folder/t.csv"));
+  const auto nowhere = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 2 --csv " + d.file("f.csv") +
+                                              " --record-live " + d.file("no/such/folder/t.csv"));
   EXPECT_EQ(nowhere.status, 2) << nowhere.output;
   EXPECT_NE(nowhere.output.find("no/such/folder/t.csv"), std::string::npos) << nowhere.output;
+  // Said before the run: the run's own outputs were not written.
+  EXPECT_FALSE(std::filesystem::exists(d.file("f.csv")));
+  // Nor may it overwrite another of the run's files.
+  const auto clash = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --live usb --report " + d.file("r.json") +
+                                            " --record-live " + d.file("r.json"));
+  EXPECT_EQ(clash.status, 2) << clash.output;
+  EXPECT_NE(clash.output.find("--record-live"), std::string::npos) << clash.output;
   EXPECT_TRUE(std::filesystem::is_empty(d.path())) << "something was left in " << d.path();
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <algorithm>
 #include <cstdio>
@@ -119,6 +120,7 @@ struct RiftEmulator::State {
   std::vector<std::vector<uint8_t>> features;
   int64_t sent = 0;
   const ManualClock* clock = nullptr;  // the test's, or the wall clock
+  uintptr_t live_id = 0;               // in g_live (the ioctl handler's data)
   int64_t streaming_since_ps = 0;
   bool streaming = false;
   int64_t delivered_at_start = 0;
@@ -142,7 +144,7 @@ struct RiftEmulator::State {
     const int64_t owed = delivered_at_start + (until - streaming_since_ps) / 1'000'000'000 + 1;
     return std::max(sent, std::min(owed, static_cast<int64_t>(reports.size())));
   }
-  bool report_due(int64_t now) const { return now <= keep_alive_until_ps && sent < due(now); }
+  bool report_due(int64_t now) const { return sent < due(now); }
 
   bool dk1() const { return model == tracker::RiftModel::DK1; }
   uint64_t timestamp_of(const std::array<uint8_t, tracker::kRiftReportSize>& r) const {
@@ -342,34 +344,49 @@ struct RiftEmulator::State {
 namespace {
 // The emulators alive, and how many ioctls each is answering: umockdev answers on its own thread, and a
 // call already under way when an emulator is destroyed must neither start on its State nor be cut off.
-// (Looked up by address only: a State that is gone is never touched.)
+// The handler's data is the emulator's id, never reused (a State that is gone is never touched, and a new
+// one at the same address is not taken for it).
+struct Live {
+  RiftEmulator::State* state;
+  int calls;
+};
 std::mutex g_live_mu;
 std::condition_variable g_live_cv;
-std::map<const RiftEmulator::State*, int> g_live;
+std::map<uintptr_t, Live> g_live;
+uintptr_t g_next_id = 1;
 
-gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
-  auto* s = static_cast<RiftEmulator::State*>(self);
+gboolean on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer data) {
+  const auto id = reinterpret_cast<uintptr_t>(data);
+  RiftEmulator::State* s = nullptr;
   {
     std::lock_guard<std::mutex> lock(g_live_mu);
-    const auto it = g_live.find(s);
+    const auto it = g_live.find(id);
     if (it == g_live.end()) {  // being destroyed: the device is gone (unanswered, the caller would wait for ever)
       umockdev_ioctl_client_complete(client, -1, ENODEV);
       return TRUE;
     }
-    ++it->second;
+    ++it->second.calls;
+    s = it->second.state;
   }
   const gboolean handled = s->handle(client);
   std::lock_guard<std::mutex> lock(g_live_mu);
-  --g_live[s];
+  --g_live[id].calls;
   g_live_cv.notify_all();
   return handled;
 }
 
+uintptr_t remember(RiftEmulator::State* s) {
+  std::lock_guard<std::mutex> lock(g_live_mu);
+  const uintptr_t id = g_next_id++;
+  g_live[id] = {s, 0};
+  return id;
+}
+
 // Takes an emulator out of g_live and waits for the ioctls it is answering.
-void forget(const RiftEmulator::State* s) {
+void forget(uintptr_t id) {
   std::unique_lock<std::mutex> lock(g_live_mu);
-  g_live_cv.wait(lock, [s] { return g_live[s] == 0; });
-  g_live.erase(s);
+  g_live_cv.wait(lock, [id] { return g_live[id].calls == 0; });
+  g_live.erase(id);
 }
 }  // namespace
 
@@ -412,14 +429,11 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
   s_->syspath = "/sys/devices/pci0000:00/usb1/1-" + std::to_string(id.address - 1);
   s_->testbed = acquire_testbed();
   s_->handler = umockdev_ioctl_base_new();
-  {
-    std::lock_guard<std::mutex> lock(g_live_mu);
-    g_live[s_.get()] = 0;
-  }
-  g_signal_connect_after(s_->handler, "handle-ioctl", G_CALLBACK(on_ioctl), s_.get());
+  s_->live_id = remember(s_.get());
+  g_signal_connect_after(s_->handler, "handle-ioctl", G_CALLBACK(on_ioctl), reinterpret_cast<gpointer>(s_->live_id));
   GError* err = nullptr;
   if (!umockdev_testbed_attach_ioctl(s_->testbed, s_->devnode.c_str(), s_->handler, &err)) {
-    forget(s_.get());
+    forget(s_->live_id);
     g_clear_object(&s_->handler);
     release_testbed();
     throw std::runtime_error(std::string("umockdev: ") + (err ? err->message : "cannot attach the ioctl handler"));
@@ -431,7 +445,7 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
                           "A: idVendor=2833\\n\nA: idProduct=" + std::string(model == tracker::RiftModel::DK1 ? "0001" : "0021") + "\\n\n" +
                           "A: serial=" + id.serial + "\\n\n" + "H: descriptors=" + descriptors_hex(model, layout) + "\n";
   if (!umockdev_testbed_add_from_string(s_->testbed, dev.c_str(), &err)) {
-    forget(s_.get());
+    forget(s_->live_id);
     umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
     g_clear_object(&s_->handler);
     release_testbed();
@@ -440,10 +454,10 @@ RiftEmulator::RiftEmulator(tracker::RiftModel model, std::vector<tracker::PoseSa
 }
 
 RiftEmulator::~RiftEmulator() {
-  forget(s_.get());  // no ioctl reaches this State from now on
+  forget(s_->live_id);  // no ioctl reaches this State from now on
   umockdev_testbed_remove_device(s_->testbed, s_->syspath.c_str());
   umockdev_testbed_detach_ioctl(s_->testbed, s_->devnode.c_str(), nullptr);
-  g_signal_handlers_disconnect_by_data(s_->handler, s_.get());
+  g_signal_handlers_disconnect_by_data(s_->handler, reinterpret_cast<gpointer>(s_->live_id));
   g_clear_object(&s_->handler);
   for (auto& u : s_->done) drop(u);
   for (auto& u : s_->interrupts) drop(u);

@@ -322,8 +322,9 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
 // the anchor 20 ms late. The lower envelope sheds that at once: from the 21st
 // report on, each sample is stamped with the millisecond it was sent, not
 // 20 ms later for the session (the reports of the burst are held 1 ps apart,
-// their samples fused). Then the counter glitches 2 s forward: a jump, one
-// re-anchor at the arrival, and time goes on without a step.
+// their samples fused). Then the counter glitches 100 ms forward (shed) and
+// 2 s forward (a jump: one re-anchor at the arrival); time goes on without a
+// step, and neither glitch is integrated as motion.
 TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   const auto truth = yaw_90(4.0);
   RiftStreamOptions o;
@@ -341,12 +342,23 @@ TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   for (size_t k = 21; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   expect_fused_motion(r, truth);
 
-  dk2.jump_counter(2'000'000);  // 2 s of microseconds
+  // A glitch of 100 ms, inside the lead tolerance: shed by the envelope (no re-anchor, times go on), and
+  // its sample integrated over the device's own millisecond, not over the glitch (9 deg at 90 deg/s).
+  dk2.jump_counter(100'000);
   ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
   ASSERT_NO_FATAL_FAILURE(collect(r, poses, 601));
-  EXPECT_EQ(r.stats().clock_reanchors, 1);
+  EXPECT_EQ(r.stats().clock_reanchors, 0);
+  EXPECT_EQ(r.stats().gaps, 1);
+  EXPECT_NEAR(r.stats().gap_s, 0.101, 1e-9);
   for (size_t k = 501; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
-  EXPECT_EQ(r.stats().gaps, 0);  // the jump was in the counter, not in the samples
+  expect_fused_motion(r, truth);
+
+  dk2.jump_counter(2'000'000);  // 2 s of microseconds
+  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  ASSERT_NO_FATAL_FAILURE(collect(r, poses, 701));
+  EXPECT_EQ(r.stats().clock_reanchors, 1);
+  for (size_t k = 601; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
+  EXPECT_EQ(r.stats().gaps, 1);  // the jump was in the counter, not in the samples
   expect_fused_motion(r, truth);
 }
 
