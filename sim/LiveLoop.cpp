@@ -32,7 +32,7 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
       stream_(dp::OrientationStream::constant(dp::Quat{})),
       mem_(spec_.config.memory, spec_.config.timing.eyes) {
   // The head motion, from one pose source: all of it up front (trace, synthetic) or as it arrives (usb).
-  source_ = tracker::live_source(spec_.live, spec_.device, spec_.mag_yaw_gain);  // none without --live (and --device alone is refused)
+  source_ = tracker::live_source(spec_.live, spec_.tracker);  // none without --live (and --device alone is refused)
   if (!source_ && !spec_.trace.empty()) {
     source_ = tracker::trace_file_source(spec_.trace);
   } else if (!source_) {

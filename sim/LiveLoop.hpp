@@ -23,8 +23,7 @@ struct LiveSpec {
   MemoryContents memories;
   tracker::MotionSpec motion;  // default: a 100 deg/s head shake
   std::string trace, live;     // --trace FILE, --live usb
-  std::string device;          // --device SERIAL|BUS:ADDR: which tracker
-  double mag_yaw_gain = 0;     // --mag-yaw: the magnetometer's yaw correction, 1/s (0: off)
+  tracker::TrackerChoice tracker;  // --device, --mag-yaw, --mag-calibrate
   double seconds = 0;          // 0: until stopped
   int threads = 0;
 };

@@ -12,6 +12,7 @@
 #include "host/motion/WalkPath.hpp"
 #include "host/priority/RenderCost.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
+#include "tracker/PoseSource.hpp"
 #include "tracker/SyntheticMotion.hpp"
 
 namespace arp::sim {
@@ -56,8 +57,7 @@ struct RunSpec {
   std::string trace;                             // --trace FILE
   std::string live;                              // --live usb
   std::string record_live;                       // --record-live FILE: the live motion the pipeline took, as a trace
-  std::string device;                            // --device SERIAL|BUS:ADDR: which tracker
-  double mag_yaw_gain = 0;                       // --mag-yaw: the magnetometer's yaw correction, 1/s (0: off)
+  tracker::TrackerChoice tracker;                // --device, --mag-yaw, --mag-calibrate
   HostSpec host;
   int64_t first_frame = 0, frames = 60;
   std::vector<std::string> stalls;               // --stall STAGE:CLOCK:CYCLES

@@ -198,7 +198,7 @@ void Session::build_motion() {
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
   if (!spec_.record_live.empty() && spec_.live.empty())
     throw InputError("--record-live", spec_.record_live, "records the motion of live input: use it with --live usb");
-  if ((live_ = tracker::live_source(spec_.live, spec_.device, spec_.mag_yaw_gain))) motion_source_ = "live " + live_->describe();
+  if ((live_ = tracker::live_source(spec_.live, spec_.tracker))) motion_source_ = "live " + live_->describe();
   // Opened before any work: an unwritable path is said now, not after the run.
   if (live_ && !spec_.record_live.empty()) live_record_ = std::make_unique<tracker::TraceWriter>(spec_.record_live, false);
   // Live input appends to the stream as it arrives: generated motion is then made whole first.

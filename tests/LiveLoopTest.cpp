@@ -51,12 +51,27 @@ TEST(LiveLoop, ADeviceWithoutLiveInputIsRefused) {
     s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48"});
     s.memories.scene = "";
     s.trace = trace;
-    s.device = "1:2";
+    s.tracker.device = "1:2";
     try {
       sim::LiveLoop loop(s);
       ADD_FAILURE() << "accepted --device with trace '" << trace << "'";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("--device: 1:2: chooses the tracker of --live usb"), std::string::npos) << e.what();
     }
+  }
+  // --mag-calibrate the same way, and it needs --mag-yaw.
+  tracker::TrackerChoice calibrate_only;
+  calibrate_only.mag_calibrate = true;
+  try {
+    tracker::live_source("", calibrate_only);
+    ADD_FAILURE() << "accepted --mag-calibrate without --live";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--mag-calibrate"), std::string::npos) << e.what();
+  }
+  try {
+    calibrate_only.stream_options();
+    ADD_FAILURE() << "accepted --mag-calibrate without --mag-yaw";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("give --mag-yaw GAIN too"), std::string::npos) << e.what();
   }
 }

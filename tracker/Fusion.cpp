@@ -32,7 +32,7 @@ double angle_between_deg(const glm::dquat& a, const glm::dquat& b) {
   return glm::degrees(2.0 * std::acos(d));
 }
 
-Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)) {
+Fusion::Fusion(const FusionParams& p, const glm::dquat& start) : p_(p), q_(glm::normalize(start)), cal_(p.calibration) {
   if (!(p.tilt_gain >= 0 && p.tilt_gain <= 1000) || !(p.tilt_still_rate > 0) || !(p.bias_still_rate > 0) ||
       !(p.bias_time_constant > 0) || !(p.max_bias >= 0) || !(p.still_filter_s > 0) || !(p.gravity_tolerance > 0) ||
       !(p.yaw_gain >= 0 && p.yaw_gain <= 10) || !(p.mag_tolerance > 0))
@@ -77,9 +77,14 @@ void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, double dt) 
   }
 }
 
-void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, const glm::dvec3& mag, double dt) {
+void Fusion::update(const glm::dvec3& gyro, const glm::dvec3& accel, const glm::dvec3& raw_mag, double dt) {
   update(gyro, accel, dt);
   if (!(p_.yaw_gain > 0) || !(dt > 0.0) || !std::isfinite(dt)) return;
+  if (p_.mag_calibrate) {
+    cal_.add(raw_mag);
+    if (!cal_.ready()) return;  // no heading from a magnetometer whose own field is not known yet
+  }
+  const glm::dvec3 mag = p_.mag_calibrate ? cal_.corrected(raw_mag) : raw_mag;
   const double strength = glm::length(mag);
   if (!(strength > 0) || !std::isfinite(strength)) return;
   const glm::dvec3 world = q_ * mag;

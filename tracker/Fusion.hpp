@@ -15,7 +15,8 @@
 // about the vertical) then settles at w / yaw_gain instead of growing. Off by
 // default: a magnetometer must be calibrated (hard-iron offsets) first, and
 // an uncalibrated one pulls the yaw by an amount that depends on the
-// orientation.
+// orientation; with mag_calibrate the offset is learned as the head moves
+// (MagCalibration) and the yaw corrected only once it is known.
 //
 // The bias model. To a gyroscope and an accelerometer, a steady slow turn
 // about the vertical and a gyro bias look alike: both are a constant rate with
@@ -28,6 +29,7 @@
 // w T^2 / (2 tau)), and bounded: its size never exceeds `max_bias`. A larger
 // real bias is not learned (its drift stays).
 #pragma once
+#include "MagCalibration.hpp"
 #include "PoseSample.hpp"
 
 namespace arp::tracker {
@@ -44,6 +46,10 @@ struct FusionParams {
   bool estimate_bias = true;
   double yaw_gain = 0.0;            // 1/s: fraction of the heading error removed per second (0: no magnetometer) (0..10)
   double mag_tolerance = 0.3;       // fraction: |field| this far from the reference's is a disturbance, not used (> 0)
+  // Learn the magnetometer's hard-iron offset as the head moves (MagCalibration) and correct the yaw only
+  // once it is known, from the readings with it removed. Off: the readings are taken as they come.
+  bool mag_calibrate = false;
+  MagCalibrationParams calibration;
 };
 
 class Fusion {
@@ -56,6 +62,8 @@ class Fusion {
   // Magnetometer readings used for yaw, and refused as disturbances, so far.
   int64_t mag_used() const { return mag_used_; }
   int64_t mag_refused() const { return mag_refused_; }
+  // The hard-iron calibration (learning only with FusionParams::mag_calibrate).
+  const MagCalibration& calibration() const { return cal_; }
   const glm::dquat& orientation() const { return q_; }
   const glm::dvec3& bias() const { return bias_; }
   const glm::dvec3& rate() const { return rate_; }  // last bias-corrected angular velocity, head frame
@@ -69,6 +77,7 @@ class Fusion {
   glm::dvec3 heading_ref_{0.0};  // world-frame horizontal field direction (unit; zero: not yet taken)
   double field_ref_ = 0;         // its strength
   int64_t mag_used_ = 0, mag_refused_ = 0;
+  MagCalibration cal_;
 };
 
 // Rotation of q by a head-frame angular velocity w held for dt seconds.

@@ -70,20 +70,28 @@ std::unique_ptr<PoseSource> dataset_source(const std::string& path, const Datase
   return recorded_source(read_head_motion_dataset(path, layout), path);
 }
 
-std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device, double mag_yaw_gain) {
-  if (live.empty()) {
-    if (!device.empty()) throw InputError("--device", device, "chooses the tracker of --live usb; give --live usb too");
-    if (mag_yaw_gain != 0) throw InputError("--mag-yaw", "", "corrects the yaw of --live usb; give --live usb too");
-    return nullptr;
-  }
-  if (live != "usb") throw InputError("--live", live, "the live source is usb (an Oculus Rift DK1/DK2)");
+RiftStreamOptions TrackerChoice::stream_options() const {
+  if (mag_calibrate && !(mag_yaw_gain > 0))
+    throw InputError("--mag-calibrate", "", "calibrates the magnetometer for --mag-yaw; give --mag-yaw GAIN too");
   RiftStreamOptions o;
   o.device = device;
   o.fusion.yaw_gain = mag_yaw_gain;
+  o.fusion.mag_calibrate = mag_calibrate;
+  return o;
+}
+
+std::unique_ptr<PoseSource> live_source(const std::string& live, const TrackerChoice& choice) {
+  if (live.empty()) {
+    if (!choice.device.empty()) throw InputError("--device", choice.device, "chooses the tracker of --live usb; give --live usb too");
+    if (choice.mag_yaw_gain != 0) throw InputError("--mag-yaw", "", "corrects the yaw of --live usb; give --live usb too");
+    if (choice.mag_calibrate) throw InputError("--mag-calibrate", "", "calibrates the magnetometer of --live usb; give --live usb too");
+    return nullptr;
+  }
+  if (live != "usb") throw InputError("--live", live, "the live source is usb (an Oculus Rift DK1/DK2)");
   std::string err;
   bool bad_choice = false;
-  auto s = usb_source(err, o, &bad_choice);
-  if (!s) throw InputError(bad_choice ? "--device" : "--live usb", bad_choice ? device : "", err);
+  auto s = usb_source(err, choice.stream_options(), &bad_choice);
+  if (!s) throw InputError(bad_choice ? "--device" : "--live usb", bad_choice ? choice.device : "", err);
   return s;
 }
 

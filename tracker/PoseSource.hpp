@@ -41,8 +41,16 @@ std::unique_ptr<PoseSource> dataset_source(const std::string& path, const Datase
 // when it cannot be opened, and *choice_refused set when the reason is the choice (--device names
 // none of the trackers attached, or several are attached and none was named) rather than the machine.
 std::unique_ptr<PoseSource> usb_source(std::string& error, const RiftStreamOptions& options = {}, bool* choice_refused = nullptr);
-// What --live names ("usb"; empty: none, and then --device must be empty too), opened: InputError naming
+// Which tracker and how its yaw is held: --device, --mag-yaw, --mag-calibrate (run, live, tracker record).
+struct TrackerChoice {
+  std::string device;          // its serial number or BUS:ADDR; empty: the only one attached
+  double mag_yaw_gain = 0;     // the magnetometer's yaw correction, 1/s (0: off)
+  bool mag_calibrate = false;  // learn the magnetometer's hard iron first (FusionParams::mag_calibrate)
+  // The stream's options they set.
+  RiftStreamOptions stream_options() const;
+};
+// What --live names ("usb"; empty: none, and then the choice must be empty too), opened: InputError naming
 // the option and the reason otherwise.
-std::unique_ptr<PoseSource> live_source(const std::string& live, const std::string& device, double mag_yaw_gain = 0);
+std::unique_ptr<PoseSource> live_source(const std::string& live, const TrackerChoice& choice);
 
 }  // namespace arp::tracker

@@ -37,7 +37,7 @@ ImuReading imu_reading(const PoseSample& p, const ImuNoise& n, std::mt19937_64& 
   const glm::dvec3 gyro_noise(d[0], d[1], d[2]), accel_noise(d[3], d[4], d[5]);
   r.gyro = p.angular_velocity + n.gyro_bias + n.gyro_noise * gyro_noise;
   r.accel = glm::conjugate(p.orientation) * glm::dvec3(0.0, kStandardGravity, 0.0) + n.accel_noise * accel_noise;
-  r.mag = glm::conjugate(p.orientation) * n.mag_field;
+  r.mag = glm::conjugate(p.orientation) * n.mag_field + n.mag_hard_iron;
   if (n.mag_noise > 0)
     for (int a = 0; a < 3; ++a) r.mag[a] += n.mag_noise * normal_at(n.seed, p.time_ps, a);
   return r;

@@ -30,6 +30,7 @@ struct ImuNoise {
   // 0.42 gauss down (a mid-northern latitude, 62 deg inclination).
   glm::dvec3 mag_field{0.0, -0.42, -0.22};
   double mag_noise = 0.0;      // gauss, standard deviation per sample
+  glm::dvec3 mag_hard_iron{0.0};  // gauss, head frame: the device's own field, added to every magnetometer reading
   uint64_t seed = 1;
 };
 

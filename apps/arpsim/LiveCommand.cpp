@@ -116,7 +116,7 @@ Runner add_live_command(CLI::App& app) {
   add_motion_options(*cmd, a->spec.motion, false);
   cmd->add_option("--trace", a->spec.trace, "Head motion from a trace file (CSV, docs/tracker.md)");
   cmd->add_option("--live", a->spec.live, "Head motion from a tracker: usb (an Oculus Rift DK1/DK2; --device chooses one)");
-  add_device_option(*cmd, a->spec.device, a->spec.mag_yaw_gain);
+  add_device_option(*cmd, a->spec.tracker);
   cmd->add_option("--seconds", a->spec.seconds, "Run this long (0: until the window is closed or Esc)")->capture_default_str();
   cmd->add_option("--scale", a->scale, "Window pixels per display pixel")->capture_default_str();
   cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)");

@@ -2,14 +2,17 @@
 
 namespace arp::app {
 
-void add_device_option(CLI::App& cmd, std::string& device, double& mag_yaw_gain) {
-  cmd.add_option("--device", device,
+void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice) {
+  cmd.add_option("--device", choice.device,
                  "Which tracker, when several are attached: its serial number or BUS:ADDR (as `arpsim tracker list` shows them)");
-  cmd.add_option("--mag-yaw", mag_yaw_gain,
+  cmd.add_option("--mag-yaw", choice.mag_yaw_gain,
                  "Correct yaw drift from the tracker's magnetometer, removing this fraction of the heading error per second "
-                 "(0.1 is a good start; 0: off). Only for a calibrated magnetometer (docs/tracker.md)")
+                 "(0.1 is a good start; 0: off). For a calibrated magnetometer, or with --mag-calibrate (docs/tracker.md)")
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
+  cmd.add_flag("--mag-calibrate", choice.mag_calibrate,
+               "With --mag-yaw: learn the magnetometer's own field (hard iron) as the head looks around, and correct the yaw "
+               "only once it is known (look around, up and down, for a minute)");
 }
 
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required) {

@@ -3,6 +3,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include "tracker/PoseSource.hpp"
 #include "tracker/SyntheticMotion.hpp"
 
 namespace arp::app {
@@ -11,6 +12,6 @@ namespace arp::app {
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required);
 // --device SERIAL|BUS:ADDR: which USB tracker, and --mag-yaw GAIN: its magnetometer's yaw correction
 // (tracker record, --live usb).
-void add_device_option(CLI::App& cmd, std::string& device, double& mag_yaw_gain);
+void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice);
 
 }  // namespace arp::app

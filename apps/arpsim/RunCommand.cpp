@@ -90,7 +90,7 @@ Runner add_run_command(CLI::App& app) {
   cmd->add_option("--live", s.live,
                   "Live head motion: usb (an Oculus Rift DK1/DK2; --device chooses one), fed to the pipeline frame by frame as it arrives, "
                   "at the display's pace (functional level)");
-  add_device_option(*cmd, s.device, s.mag_yaw_gain);
+  add_device_option(*cmd, s.tracker);
   cmd->add_option("--record-live", s.record_live,
                   "With --live: write the motion the pipeline took (on the run's timeline) as a trace file, to replay the run with --trace");
   add_motion_options(*cmd, s.motion, false);

@@ -42,8 +42,9 @@ int run_list() {
 
 
 struct RecordArgs {
-  std::string out, device;
-  double seconds = 10.0, mag_yaw_gain = 0;
+  std::string out;
+  tracker::TrackerChoice tracker;
+  double seconds = 10.0;
   bool quiet = false;
 };
 
@@ -54,12 +55,9 @@ int run_record(const RecordArgs& a) {
   if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw InputError("--seconds", "", "must be more than 0 and at most a day");
   check_output_paths({{"file", a.out}}, {});
   std::string err;
-  tracker::RiftStreamOptions options;
-  options.device = a.device;
-  options.fusion.yaw_gain = a.mag_yaw_gain;
   bool bad_choice = false;
-  const auto source = tracker::usb_source(err, options, &bad_choice);
-  if (!source && bad_choice) throw InputError("--device", a.device, err);  // a usage error: exit 2, as run --live usb
+  const auto source = tracker::usb_source(err, a.tracker.stream_options(), &bad_choice);
+  if (!source && bad_choice) throw InputError("--device", a.tracker.device, err);  // a usage error: exit 2, as run --live usb
   if (!source) {
     std::fprintf(stderr, "arpsim tracker record: %s\n", err.c_str());
     return 1;
@@ -182,7 +180,7 @@ Runner add_tracker_command(CLI::App& app) {
   record->add_option("--seconds", r->seconds, "How long to record")->capture_default_str();
   record->add_option("file", r->out, "Trace file to write")->required();
   record->add_flag("--quiet,-q", r->quiet, "No progress line");
-  add_device_option(*record, r->device, r->mag_yaw_gain);
+  add_device_option(*record, r->tracker);
   auto im = std::make_shared<ImportArgs>();
   CLI::App* import = cmd->add_subcommand(
       "import", "Convert a head-motion dataset (one sample per line; columns, axes and units stated) into a trace file, "
