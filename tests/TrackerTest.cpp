@@ -867,6 +867,7 @@ TEST(UsbTrackers, AReconnectionTakesTheTrackerStreamedBefore) {
   EXPECT_EQ(choose_again({}, unread, why), -1);
 }
 
+#include "common/Units.hpp"
 #include "tracker/MagCalibration.hpp"
 
 namespace {
@@ -877,7 +878,7 @@ std::vector<PoseSample> look_around(double seconds) {
   const int n = static_cast<int>(seconds * 1000);
   auto at = [](double t) {
     return glm::angleAxis(glm::radians(60.0 * t), glm::dvec3(0, 1, 0)) *
-           glm::angleAxis(glm::radians(40.0 * std::sin(2 * M_PI * t / 5.0)), glm::dvec3(1, 0, 0));
+           glm::angleAxis(glm::radians(40.0 * std::sin(2 * arp::kPi * t / 5.0)), glm::dvec3(1, 0, 0));
   };
   for (int i = 0; i <= n; ++i) {
     PoseSample p;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/Units.hpp"
+
 namespace arp::tracker {
 
 namespace {
@@ -19,7 +21,7 @@ double smallest_eigenvalue(const glm::dmat3& a) {
   const glm::dmat3 b = (a - q * glm::dmat3(1.0)) * (1.0 / p);
   const double r = std::clamp(glm::determinant(b) / 2.0, -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
-  return q + 2.0 * p * std::cos(phi + 2.0 * M_PI / 3.0);
+  return q + 2.0 * p * std::cos(phi + 2.0 * kPi / 3.0);
 }
 
 // Solves the 4x4 system m x = v by Gaussian elimination with partial pivoting; false when singular.
@@ -60,7 +62,7 @@ void MagCalibration::add(const glm::dvec3& m) {
   const glm::dvec3 d = m - c;
   const double dl = glm::length(d);
   if (!(dl > 0)) return;
-  const double cos_sep = std::cos(p_.min_separation_deg * M_PI / 180.0);
+  const double cos_sep = std::cos(deg_to_rad(p_.min_separation_deg));
   for (const glm::dvec3& k : kept_) {
     const glm::dvec3 e = k - c;
     const double el = glm::length(e);
