@@ -3,19 +3,15 @@
 // divider), face coordinates and the texel address with its sub-texel bits;
 // timed.address_latency clocks.
 #pragma once
-#include <array>
-
 #include <vector>
 
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
 namespace arp::stage {
 
-class AddressStage : public RegisteredStage<AddressStage, RotatedToken, AddressToken> {
+class AddressStage : public RegisteredStage<AddressStage, RotatedToken, AddressToken, kAddressInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kAddressInfo;
   explicit AddressStage(const StageContext& ctx);
 
   void compute(const RotatedToken& in, AddressToken& t) const {

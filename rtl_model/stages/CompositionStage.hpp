@@ -2,17 +2,13 @@
 // compare; ties to the lower memory; all empty shows the background);
 // timed.compose_latency clocks.
 #pragma once
-#include <array>
-
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/CompositionUnit.hpp"
 
 namespace arp::stage {
 
-class CompositionStage : public RegisteredStage<CompositionStage, FetchToken, ComposedToken> {
+class CompositionStage : public RegisteredStage<CompositionStage, FetchToken, ComposedToken, kCompositionInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kCompositionInfo;
   explicit CompositionStage(const StageContext& ctx)
       : RegisteredStage(ctx),
         comp_(dp::MemoryFormat(ctx.config().memory), ctx.config().memory.background),

@@ -1,17 +1,13 @@
 // Anti-aliasing filter: the four composited taps blended with the sub-texel
 // weights (rounded half up), or the nearest tap when off; timed.filter_latency clocks.
 #pragma once
-#include <array>
-
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 
 namespace arp::stage {
 
-class FilterStage : public RegisteredStage<FilterStage, ComposedToken, ColorToken> {
+class FilterStage : public RegisteredStage<FilterStage, ComposedToken, ColorToken, kFilterInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kFilterInfo;
   explicit FilterStage(const StageContext& ctx)
       : RegisteredStage(ctx),
         layout_(dp::MemoryFormat(ctx.config().memory)),

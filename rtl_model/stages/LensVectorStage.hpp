@@ -1,17 +1,13 @@
 // Lens vector table: the ROM of head-frame viewing directions (signed
 // Q1.vec_frac), read for each issued pixel; timed.lens_latency clocks.
 #pragma once
-#include <array>
-
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/LensVectorTable.hpp"
 
 namespace arp::stage {
 
-class LensVectorStage : public RegisteredStage<LensVectorStage, PixelSlot, LensToken> {
+class LensVectorStage : public RegisteredStage<LensVectorStage, PixelSlot, LensToken, kLensVectorInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kLensVectorInfo;
   explicit LensVectorStage(const StageContext& ctx)
       : RegisteredStage(ctx), table_(ctx.config().lens, ctx.config().timing, ctx.config().widths.vec_frac) {}
 

@@ -12,7 +12,6 @@
 
 #include "HostWritePort.hpp"
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 
 namespace arp::stage {
@@ -47,9 +46,8 @@ class BufferSwapper {
   int64_t next_swap_ = std::numeric_limits<int64_t>::min(), last_cycle_ = std::numeric_limits<int64_t>::max();
 };
 
-class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, FetchToken> {
+class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, FetchToken, kMemoryReadInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kMemoryReadInfo;
   explicit MemoryReadStage(const StageContext& ctx);
   // The write port whose commits this port's swaps take (the same module's).
   void connect(const HostWritePort* host) { swapper_.connect(host); }

@@ -11,14 +11,12 @@
 #include <string>
 
 #include "RegisteredStage.hpp"
-#include "StageInfo.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 
 namespace arp::stage {
 
-class OrientationStage : public RegisteredStage<OrientationStage, LensToken, RotatedToken> {
+class OrientationStage : public RegisteredStage<OrientationStage, LensToken, RotatedToken, kOrientationInfo> {
  public:
-  static constexpr const StageInfo& kInfo = kOrientationInfo;
   explicit OrientationStage(const StageContext& ctx)
       : RegisteredStage(ctx),
         stream_(*ctx.in.orientation),

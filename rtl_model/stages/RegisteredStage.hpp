@@ -1,8 +1,8 @@
 // What every stage between two FIFOs has: its register stages (StagePipe:
 // `latency` clocks from taking a pixel to the next stage seeing it, with
 // backpressure), its injected stalls, its statistics and its waveform
-// probes. A stage derives from this (CRTP) and adds its arithmetic,
-// `compute(in, out)`, its names (kInfo: StageInfo) and its own state. tick()
+// probes. A stage derives from this (CRTP), naming itself by its row of the
+// StageInfo table, and adds its arithmetic, `compute(in, out)`, and its own state. tick()
 // is tick_with() the stage's own compute; the fast level may pass another.
 #pragma once
 #include <array>
@@ -10,15 +10,17 @@
 #include <vector>
 
 #include "StageContext.hpp"
+#include "StageInfo.hpp"
 #include "StagePipe.hpp"
 
 namespace arp::stage {
 
-template <class Derived, class In, class Out>
+template <class Derived, class In, class Out, const StageInfo& Info>
 class RegisteredStage {
  public:
   using Input = In;
   using Output = Out;
+  static constexpr const StageInfo& kInfo = Info;
 
   int latency() const { return pipe_.latency(); }
   bool idle() const { return pipe_.occupancy() == 0; }
@@ -26,7 +28,7 @@ class RegisteredStage {
   void set_probing(bool on) { pipe_.probe_data = on; }
   // Its place in a pipeline's schedule: a configured stage's latency and id.
   static dp::ScheduledStage scheduled(const dp::ArpConfig& c) {
-    return {c.timed.stage[static_cast<size_t>(Derived::kInfo.id)].latency_cycles, Derived::kInfo.id};
+    return {c.timed.stage[static_cast<size_t>(Info.id)].latency_cycles, Info.id};
   }
 
   template <class InFifo, class OutFifo>
@@ -44,7 +46,7 @@ class RegisteredStage {
   void for_each_probe(Fn&& fn) const {
     fn("ready_in", pipe_.ready_in);
     fn("valid_out", pipe_.valid_out);
-    for (size_t i = 0; i < 3; ++i) fn(Derived::kInfo.probes[i], pipe_.data_out[i]);
+    for (size_t i = 0; i < 3; ++i) fn(Info.probes[i], pipe_.data_out[i]);
     derived().for_each_own_probe(fn);
   }
   template <class Fn>
@@ -53,9 +55,9 @@ class RegisteredStage {
  protected:
   // A configured stage: its latency and stalls from the context.
   explicit RegisteredStage(const StageContext& ctx)
-      : pipe_(ctx.config().timed.stage[static_cast<size_t>(Derived::kInfo.id)].latency_cycles) {
+      : pipe_(ctx.config().timed.stage[static_cast<size_t>(Info.id)].latency_cycles) {
     for (const auto& w : ctx.in.stalls)
-      if (w.stage == Derived::kInfo.stage()) stalls_.push_back(w);
+      if (w.stage == Info.stage()) stalls_.push_back(w);
   }
   // A stage the configuration does not know (e.g. an inserted register).
   explicit RegisteredStage(int latency) : pipe_(latency) {}

@@ -10,12 +10,13 @@
 
 namespace arp::bench {
 
+inline constexpr stage::StageInfo kAddressRegisterSliceInfo{-1, "address_register_slice", "cube_addresses",
+                                                            "registered_addresses", {"face", "texel_x", "texel_y"}};
+
 // Between the cube-face address generator and the display memories.
-class AddressRegisterSliceStage
-    : public stage::RegisteredStage<AddressRegisterSliceStage, stage::AddressToken, stage::AddressToken> {
+class AddressRegisterSliceStage : public stage::RegisteredStage<AddressRegisterSliceStage, stage::AddressToken,
+                                                                stage::AddressToken, kAddressRegisterSliceInfo> {
  public:
-  static constexpr stage::StageInfo kInfo{-1, "address_register_slice",
-                                    "cube_addresses", "registered_addresses", {"face", "texel_x", "texel_y"}};
   explicit AddressRegisterSliceStage(const stage::StageContext&) : RegisteredStage(1) {}
   void compute(const stage::AddressToken& t, stage::AddressToken& o) const { stage::copy_token(o, t); }
   // Not a configured stage: one clock, no configuration key.
