@@ -360,6 +360,25 @@ std::string trade_log_path(const std::string& dir, const std::string& id) {
   return (fs::path(dir) / "points" / (id + ".log")).string();
 }
 
+std::vector<SweepCommand> trade_sweep_commands(const TradePlan& plan, const std::string& dir, const std::string& binary) {
+  std::vector<SweepCommand> cmds;
+  for (const auto& p : plan.points)
+    cmds.push_back({p.id, {binary, "tradeoff", "-q", "--out", dir, "--point", p.id}, trade_log_path(dir, p.id), p.exclusive(),
+                    "/proc/self/exe"});  // this very binary, even if a build replaces the file meanwhile
+  return cmds;
+}
+
+SlurmSweep trade_slurm_sweep(const TradePlan& plan, const std::string& dir, const std::string& binary) {
+  SlurmSweep s;
+  s.name = "arpsim-tradeoff";
+  for (const auto& p : plan.points) (p.exclusive() ? s.exclusive_ids : s.shared_ids).push_back(p.id);
+  const std::string bin = "\"${ARPSIM:-" + binary + "}\"";  // checked: no quote, $ or whitespace in these paths
+  s.point_command = bin + " tradeoff -q --out " + dir + " --point \"$ID\" > " + dir + "/points/\"$ID\".log 2>&1";
+  s.merge_command = bin + " tradeoff --out " + dir + " --merge";
+  s.log_dir = (fs::path(dir) / "points").string();
+  return s;
+}
+
 TradeTables collect_trade_results(const std::string& dir, const TradePlan& plan) {
   TradeTables t;
   t.plan = plan;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "SweepRunner.hpp"
 #include "TradePoints.hpp"
 
 namespace arp::sim {
@@ -35,6 +36,13 @@ TradePlan read_trade_plan(const std::string& dir);
 // Where a point's result and log go.
 std::string trade_result_path(const std::string& dir, const std::string& id);
 std::string trade_log_path(const std::string& dir, const std::string& id);
+
+// The plan's points as `binary tradeoff --point ID` processes, each logging
+// beside its result (`dir` absolute: the processes may run elsewhere).
+std::vector<SweepCommand> trade_sweep_commands(const TradePlan& plan, const std::string& dir, const std::string& binary);
+// The same as a Slurm job array and its merge; $ARPSIM, when set where the
+// jobs run, names the binary instead.
+SlurmSweep trade_slurm_sweep(const TradePlan& plan, const std::string& dir, const std::string& binary);
 
 struct TradeTables {
   TradePlan plan;

@@ -166,6 +166,24 @@ std::string layout_problem(const DatasetLayout& l) {
   return "";
 }
 
+DatasetLayout dataset_layout(const DatasetLayoutOptions& o) {
+  DatasetLayout layout;
+  std::string why;
+  if (!parse_time_unit(o.time_unit, layout.time_unit)) throw InputError("--time-unit", o.time_unit, "must be s, ms, us or ns");
+  if (!parse_angle_unit(o.angle_unit, layout.angle_unit)) throw InputError("--angle-unit", o.angle_unit, "must be deg or rad");
+  if (!parse_axes(o.axes, layout.axes, why)) throw InputError("--axes", o.axes, why);
+  if (o.scalar_last && !o.columns.empty()) throw InputError("--scalar-last", "", "give --columns or --scalar-last, not both");
+  if (o.scalar_last) layout.columns = {"1", "2", "6", "3", "4", "5", "", "", ""};
+  if (!o.columns.empty() && !parse_columns(o.columns, layout.columns, why)) throw InputError("--columns", o.columns, why);
+  if (!o.euler.empty()) {
+    if (!parse_euler_order(o.euler, layout.euler_order, why)) throw InputError("--euler", o.euler, why);
+    if (o.columns.empty()) throw InputError("--euler", o.euler, "needs --columns naming the angle columns rx, ry, rz");
+  }
+  if (const std::string p = layout_problem(layout); !p.empty()) throw InputError("--columns", o.columns, p);
+  if (layout.columns.rx.empty() && !o.euler.empty()) throw InputError("--euler", o.euler, "the columns hold a quaternion, not angles");
+  return layout;
+}
+
 namespace {
 
 // The roles, in a fixed order; kTime..kQz/kRz index into it.

@@ -54,6 +54,15 @@ bool parse_euler_order(const std::string& s, std::string& out, std::string& why)
 // Euler angles, not both); empty when it is usable.
 std::string layout_problem(const DatasetLayout& layout);
 
+// A layout as the command line states it (arpsim tracker import).
+struct DatasetLayoutOptions {
+  std::string time_unit = "s", axes = "gl", columns, euler, angle_unit = "deg";
+  bool scalar_last = false;  // the quaternion columns are x y z w
+};
+// The layout those options state; a bad or contradictory option is an
+// InputError naming it (--time-unit, --axes, --columns, --euler, ...).
+DatasetLayout dataset_layout(const DatasetLayoutOptions& o);
+
 std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const DatasetLayout& layout);
 
 }  // namespace arp::tracker

@@ -2,6 +2,7 @@
 
 #include <libusb-1.0/libusb.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,16 @@ const char* const kUdevRulesHint =
     "install the udev rules shipped in scripts/udev/70-arpsim-oculus.rules "
     "(sudo cp scripts/udev/70-arpsim-oculus.rules /etc/udev/rules.d/ && sudo udevadm control --reload-rules && "
     "replug the tracker; docs/tracker.md)";
+
+std::string unusual_counters(const StreamStats& s) {
+  std::string out;
+  for_each_counter(s, [&out](const std::string& name, int64_t v) {
+    static const char* const kUsual[] = {"reports", "samples", "malformed", "disconnects", "reconnects", "keep_alives"};
+    if (v == 0 || std::find(std::begin(kUsual), std::end(kUsual), name) != std::end(kUsual)) return;
+    out += (out.empty() ? "" : ", ") + name + " " + std::to_string(v);
+  });
+  return out;
+}
 
 const char* to_string(StreamEvent::Kind k) {
   switch (k) {

@@ -104,6 +104,10 @@ void for_each_counter(const StreamStats& s, F&& f) {
   f("reconnects", s.reconnects);
   f("keep_alives", s.keep_alives);
 }
+// The device's quirks: "name value, ..." for every counter that is not zero
+// beyond the usual ones (reports, samples, malformed, disconnects,
+// reconnects, keep-alives); empty when there were none.
+std::string unusual_counters(const StreamStats& s);
 
 // Where the udev rules file ships and what it says (docs/tracker.md).
 extern const char* const kUdevRulesHint;

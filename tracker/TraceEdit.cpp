@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "common/InputError.hpp"
 
 namespace arp::tracker {
 
@@ -44,6 +47,23 @@ std::vector<PoseSample> resample(const std::vector<PoseSample>& v, double hz) {
     }
     out.push_back(p);
   }
+  return out;
+}
+
+void check_resample_rate(double hz) {
+  if (!(hz >= 1 && hz <= 10000)) throw InputError("--resample", std::to_string(hz), "must be between 1 and 10000 Hz");
+}
+
+std::vector<PoseSample> resample_as_asked(const std::vector<PoseSample>& samples, double hz) {
+  check_resample_rate(hz);
+  const std::string rate = std::to_string(hz);
+  const double span_s = static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12;
+  if (span_s * hz >= kMaxResampled)
+    throw InputError("--resample", rate,
+                     "would make " + std::to_string(static_cast<int64_t>(span_s * hz)) + " samples of this " +
+                         std::to_string(span_s) + " s dataset (at most 10 million; is the time unit right?)");
+  std::vector<PoseSample> out = resample(samples, hz);
+  if (out.size() < 2) throw InputError("--resample", rate, "leaves fewer than two samples: the dataset is shorter than one period");
   return out;
 }
 

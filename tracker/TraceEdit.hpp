@@ -19,5 +19,9 @@ size_t drop_repeats(std::vector<PoseSample>& samples);
 // the result at most kMaxResampled samples (about 1 GB): std::invalid_argument otherwise.
 constexpr double kMaxResampled = 1e7;
 std::vector<PoseSample> resample(const std::vector<PoseSample>& samples, double hz);
+// A rate a user asks for (--resample): outside 1 .. 10 000 Hz is an InputError naming the option.
+void check_resample_rate(double hz);
+// resample() at such a rate: too many samples or fewer than two are an InputError naming the option and why.
+std::vector<PoseSample> resample_as_asked(const std::vector<PoseSample>& samples, double hz);
 
 }  // namespace arp::tracker

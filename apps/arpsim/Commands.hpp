@@ -19,4 +19,11 @@ Runner add_live_command(CLI::App& app);
 Runner add_tradeoff_command(CLI::App& app);
 Runner add_plan_command(CLI::App& app);
 
+// A subcommand of a command, and what runs it once it is parsed.
+struct Subcommand {
+  CLI::App* app;
+  Runner run;
+};
+Subcommand add_tracker_import_command(CLI::App& tracker);
+
 }  // namespace arp::app

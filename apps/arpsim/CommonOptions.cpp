@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 #include "common/InputError.hpp"
 
@@ -57,10 +58,11 @@ void strict_numbers(CLI::App& app) {
   strict_options(app, whole, uwhole, real);
 }
 
-void ConfigOptions::add_to(CLI::App& cmd) {
-  cmd.add_option("--config", file, "JSON configuration file (every key: docs/configuration.md)");
-  cmd.add_option("--set", sets, "Override one key, e.g. --set datapath.vec_frac=12 (repeatable)")
-      ->type_name("SECTION.KEY=VALUE");
+CLI::App* ConfigOptions::add_command(CLI::App& app, std::string name, std::string description) {
+  CLI::App* cmd = app.add_subcommand(std::move(name), std::move(description));
+  cmd->add_option("--config", file, "JSON configuration file (every key: docs/configuration.md)");
+  cmd->add_option("--set", sets, "Override one key, e.g. --set datapath.vec_frac=12 (repeatable)")->type_name("SECTION.KEY=VALUE");
+  return cmd;
 }
 
 void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg) {
@@ -70,6 +72,13 @@ void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& s
   cmd.add_option("--threshold-deg", threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
       ->capture_default_str();
 }
+
+void add_threads_option(CLI::App& cmd, int& threads) {
+  cmd.add_option("--threads", threads, "Worker threads of the functional model and the scene renderer (0: all cores)")
+      ->check(CLI::Range(0, 256));
+}
+
+void add_quiet_flag(CLI::App& cmd, bool& quiet) { cmd.add_flag("--quiet,-q", quiet, "No progress line"); }
 
 void add_memory_options(CLI::App& cmd, sim::MemoryContents& m) {
   auto* g = cmd.add_option_group("cube map", "Display memory contents (default: the calibration pattern)");

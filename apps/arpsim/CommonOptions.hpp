@@ -16,7 +16,8 @@ namespace arp::app {
 struct ConfigOptions {
   std::string file;
   std::vector<std::string> sets;
-  void add_to(CLI::App& cmd);
+  // A subcommand of `app` that takes these options (--config, --set).
+  CLI::App* add_command(CLI::App& app, std::string name, std::string description);
   // Embedded defaults, then the file, then --set overrides (later wins).
   dp::ArpConfig resolve() const { return config::resolve(file, sets); }
   // What names the configuration in messages.
@@ -31,6 +32,12 @@ void strict_numbers(CLI::App& app);
 
 // The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
 void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg);
+
+// --threads: worker threads of the functional model and the scene renderer.
+void add_threads_option(CLI::App& cmd, int& threads);
+
+// --quiet, -q: no progress line.
+void add_quiet_flag(CLI::App& cmd, bool& quiet);
 
 // The display memory contents' options (--faces, --cross, --equirect, --scene, --position, --time, --ipd).
 void add_memory_options(CLI::App& cmd, sim::MemoryContents& m);

@@ -18,8 +18,7 @@ Runner add_config_command(CLI::App& app) {
     std::string doc;
   };
   auto a = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("config", "Print the effective configuration as JSON (defaults embedded)");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(app, "config", "Print the effective configuration as JSON (defaults embedded)");
   cmd->add_flag("--list", a->list, "Print every key with its value, range, unit and meaning instead");
   cmd->add_option("--update-doc", a->doc, "Rewrite the generated key tables of this markdown file (docs/configuration.md)");
   return [a] {

@@ -72,8 +72,7 @@ int run_frame(FrameArgs& a) {
 
 Runner add_frame_command(CLI::App& app) {
   auto args = std::make_shared<FrameArgs>();
-  CLI::App* cmd = app.add_subcommand("frame", "Render one stereo HMD frame of a cube map at one head orientation");
-  args->cfg.add_to(*cmd);
+  CLI::App* cmd = args->cfg.add_command(app, "frame", "Render one stereo HMD frame of a cube map at one head orientation");
   cmd->add_option("--yaw", args->yaw, "Yaw in degrees about +y, positive turns left");
   cmd->add_option("--pitch", args->pitch, "Pitch in degrees about +x, positive looks up");
   cmd->add_option("--roll", args->roll, "Roll in degrees about +z, positive tilts the head left");
@@ -84,7 +83,7 @@ Runner add_frame_command(CLI::App& app) {
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
   cmd->add_option("--frame", args->spec.frame, "Frame index (sets the photon times)")
       ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()));
-  cmd->add_option("--threads", args->spec.threads, "Worker threads of the functional model and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
+  add_threads_option(*cmd, args->spec.threads);
   cmd->add_option("--report", args->report, "Also write a JSON report of the frame");
   return [args] { return run_frame(*args); };
 }

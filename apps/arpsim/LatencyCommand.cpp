@@ -50,9 +50,8 @@ int run_latency(LatencyArgs& a) {
 Runner add_latency_command(CLI::App& app) {
   auto a = std::make_shared<LatencyArgs>();
   lab::LatencySpec& s = a->spec;
-  CLI::App* cmd = app.add_subcommand(
-      "latency", "Latency laboratory: the ARP against conventional, Slats and just-in-time pixels on one head motion (docs/latency.md)");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(
+      app, "latency", "Latency laboratory: the ARP against conventional, Slats and just-in-time pixels on one head motion (docs/latency.md)");
   add_motion_options(*cmd, s.motion, false);
   cmd->add_option("--trace", s.trace, "Head motion from a trace file (CSV, docs/tracker.md) instead of --motion");
   cmd->add_flag("--olano", s.olano, "Olano et al.'s set-up: NTSC-like interlaced 600-pixel display, 60 deg across, 33 ms tracker");
@@ -84,7 +83,7 @@ Runner add_latency_command(CLI::App& app) {
   cmd->add_option("--jitp-triangle-rate", s.jit_rate, "Just-in-time pixels: triangles transformed per second")->capture_default_str();
   cmd->add_flag("--no-sweeps", s.no_sweeps, "Skip the rotation-speed, horizon and overload sweeps");
   cmd->add_flag("--no-apparatus", s.no_apparatus, "Skip the simulated pendulum apparatus and its VCD");
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_latency(*a); };
 }
 

@@ -110,8 +110,7 @@ int run_live(LiveArgs& a) {
 
 Runner add_live_command(CLI::App& app) {
   auto a = std::make_shared<LiveArgs>();
-  CLI::App* cmd = app.add_subcommand("live", "A window showing the HMD output at the display rate as the head moves (SDL2)");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(app, "live", "A window showing the HMD output at the display rate as the head moves (SDL2)");
   add_memory_options(*cmd, a->spec.memories);
   add_motion_options(*cmd, a->spec.motion, false);
   cmd->add_option("--trace", a->spec.trace, "Head motion from a trace file (CSV, docs/tracker.md)");
@@ -120,8 +119,8 @@ Runner add_live_command(CLI::App& app) {
   cmd->add_option("--seconds", a->spec.seconds, "Run this long (0: until the window is closed or Esc)")->capture_default_str();
   cmd->add_option("--scale", a->scale, "Window pixels per display pixel")->capture_default_str();
   cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)");
-  cmd->add_option("--threads", a->spec.threads, "Worker threads of the functional model and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_threads_option(*cmd, a->spec.threads);
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_live(*a); };
 }
 

@@ -43,9 +43,8 @@ int run_plan(PlanArgs& a) {
 
 Runner add_plan_command(CLI::App& app) {
   auto a = std::make_shared<PlanArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "plan", "Size a configuration for a scene and its motion: face size, datapath widths, display memories (docs/planning.md)");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(
+      app, "plan", "Size a configuration for a scene and its motion: face size, datapath widths, display memories (docs/planning.md)");
   // Only the scene: the plan is made for a walk, not for a cube map, a position or a renderer.
   cmd->add_option("--scene", a->req.memories.scene, "The scene to plan for: a scene file (docs/host.md) or 'gallery'")->required();
   add_walk_options(*cmd, a->req.walk, a->req.walk_speed, a->req.threshold_deg);
@@ -62,7 +61,7 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
                 "Keep the starting configuration's datapath widths (no accuracy-harness search)");
   cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_plan(*a); };
 }
 

@@ -78,8 +78,7 @@ void add_host_options(CLI::App* cmd, RunArgs& a) {
 Runner add_run_command(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
   sim::RunSpec& s = a->spec;
-  CLI::App* cmd = app.add_subcommand("run", "Run head motion through the pipeline at a chosen fidelity level, frame by frame");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(app, "run", "Run head motion through the pipeline at a chosen fidelity level, frame by frame");
   add_memory_options(*cmd, s.memories);
   cmd->add_option("--fidelity", s.fidelity,
                   "functional (untimed), lt (loosely timed, scanline quantum), cycle (fast cycle-accurate), "
@@ -96,14 +95,14 @@ Runner add_run_command(CLI::App& app) {
   add_motion_options(*cmd, s.motion, false);
   cmd->add_option("--frames", s.frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", s.first_frame, "Index of the first frame (sets its time)")->capture_default_str();
-  cmd->add_option("--threads", s.threads, "Worker threads of the functional level and the scene renderer (0: all cores)")->check(CLI::Range(0, 256));
+  add_threads_option(*cmd, s.threads);
   add_output_options(cmd, s.out);
   add_host_options(cmd, *a);
   cmd->add_option("--stall", s.stalls, "Inject a stall, STAGE:CLOCK:CYCLES (clock counted from the first frame's first pixel); repeatable")
       ->take_all();
   cmd->add_flag("--no-speculation", a->no_speculation,
                 "cycle level: compute every pixel stage by stage (no frame speculation; same results, slower)");
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run(*a); };
 }
 

@@ -93,13 +93,7 @@ int run_tradeoff(TradeoffArgs& a) {
   sim::write_trade_plan(a.out, plan);
   const std::string out_abs = fs::absolute(a.out).string();
   if (!a.emit.empty()) {
-    sim::SlurmSweep s;
-    s.name = "arpsim-tradeoff";
-    for (const auto& p : plan.points) (p.exclusive() ? s.exclusive_ids : s.shared_ids).push_back(p.id);
-    const std::string bin = "\"${ARPSIM:-" + self_path() + "}\"";  // checked: no quote, $ or whitespace in these paths
-    s.point_command = bin + " tradeoff -q --out " + out_abs + " --point \"$ID\" > " + out_abs + "/points/\"$ID\".log 2>&1";
-    s.merge_command = bin + " tradeoff --out " + out_abs + " --merge";
-    s.log_dir = (fs::path(out_abs) / "points").string();
+    sim::SlurmSweep s = sim::trade_slurm_sweep(plan, out_abs, self_path());
     if (a.slurm_minutes > 0) s.task_minutes = a.slurm_minutes;
     for (const auto& f : sim::write_slurm_sweep(a.emit[1], s)) std::printf("written %s\n", f.c_str());
     std::printf("submit with: %s/submit.sh   (plan: %s/plan.json, %zu points)\n", a.emit[1].c_str(), a.out.c_str(), plan.points.size());
@@ -109,10 +103,7 @@ int run_tradeoff(TradeoffArgs& a) {
     std::printf("written %s/plan.json (%zu points)\n", a.out.c_str(), plan.points.size());
     return 0;
   }
-  std::vector<sim::SweepCommand> cmds;
-  for (const auto& p : plan.points)
-    cmds.push_back({p.id, {self_path(), "tradeoff", "-q", "--out", out_abs, "--point", p.id}, sim::trade_log_path(a.out, p.id),
-                    p.exclusive(), "/proc/self/exe"});  // this very binary, even if a build replaces the file meanwhile
+  const std::vector<sim::SweepCommand> cmds = sim::trade_sweep_commands(plan, out_abs, self_path());
   const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: the running points are stopped, the finished ones merged
   ProgressLine progress("tradeoff", !a.quiet);
   const auto t0 = std::chrono::steady_clock::now();
@@ -150,7 +141,7 @@ Runner add_tradeoff_command(CLI::App& app) {
       ->check(CLI::Range(1, 10080));
   cmd->add_option("--doc", a->doc, "Also replace the generated block of this markdown file with the tables");
   cmd->add_flag("--list", a->list, "List the points (with --quick: the quick sweep's)");
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_tradeoff(*a); };
 }
 

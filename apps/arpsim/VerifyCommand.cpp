@@ -33,8 +33,7 @@ int run_verify(VerifyArgs& a) {
 
 Runner add_verify_command(CLI::App& app) {
   auto a = std::make_shared<VerifyArgs>();
-  CLI::App* cmd = app.add_subcommand("verify", "Compare the bit-accurate datapath with the golden reference");
-  a->cfg.add_to(*cmd);
+  CLI::App* cmd = a->cfg.add_command(app, "verify", "Compare the bit-accurate datapath with the golden reference");
   cmd->add_option("--frames", a->opt.frame_orientations, "Generic orientations checked at every display pixel")->capture_default_str()
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--random", a->opt.random_orientations, "Seeded random orientations")->capture_default_str()->check(CLI::Range(0, 100000));
@@ -50,7 +49,7 @@ Runner add_verify_command(CLI::App& app) {
   cmd->add_option("--aligned-step", a->opt.aligned_row_step, "Check every n-th line of the aligned views")
       ->capture_default_str()->check(CLI::Range(1, 8192));
   cmd->add_option("--json", a->json, "Also write the report as JSON");
-  cmd->add_flag("--quiet,-q", a->quiet, "No progress line");
+  add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_verify(*a); };
 }
 
