@@ -32,27 +32,27 @@ TrackerFeed::TrackerFeed(std::vector<tracker::PoseSample> truth, const TrackerMo
   latency_ps_ = static_cast<int64_t>(std::llround(model.latency_s * 1e12));
 }
 
-glm::dquat TrackerFeed::truth(int64_t t) const {
-  if (t <= truth_.front().time_ps) return truth_.front().orientation;
-  if (t >= truth_.back().time_ps) return truth_.back().orientation;
+TrackerFeed::Bracket TrackerFeed::bracket(int64_t t) const {
   const auto it = std::upper_bound(truth_.begin(), truth_.end(), t,
                                    [](int64_t v, const tracker::PoseSample& s) { return v < s.time_ps; });
   const auto& b = *it;
   const auto& a = *(it - 1);
-  const double u = static_cast<double>(t - a.time_ps) / static_cast<double>(b.time_ps - a.time_ps);
-  return glm::slerp(a.orientation, b.orientation, u);
+  return {a, b, static_cast<double>(t - a.time_ps) / static_cast<double>(b.time_ps - a.time_ps)};
+}
+
+glm::dquat TrackerFeed::truth(int64_t t) const {
+  if (t <= truth_.front().time_ps) return truth_.front().orientation;
+  if (t >= truth_.back().time_ps) return truth_.back().orientation;
+  const Bracket k = bracket(t);
+  return glm::slerp(k.a.orientation, k.b.orientation, k.u);
 }
 
 glm::dvec3 TrackerFeed::truth_position(int64_t t) const {
   if (!positions_) return glm::dvec3(0.0);
   if (t <= truth_.front().time_ps) return truth_.front().position;
   if (t >= truth_.back().time_ps) return truth_.back().position;
-  const auto it = std::upper_bound(truth_.begin(), truth_.end(), t,
-                                   [](int64_t v, const tracker::PoseSample& s) { return v < s.time_ps; });
-  const auto& b = *it;
-  const auto& a = *(it - 1);
-  const double u = static_cast<double>(t - a.time_ps) / static_cast<double>(b.time_ps - a.time_ps);
-  return a.position + (b.position - a.position) * u;
+  const Bracket k = bracket(t);
+  return k.a.position + (k.b.position - k.a.position) * k.u;
 }
 
 int64_t TrackerFeed::sample_time(int64_t k) const { return k * period_ps_; }

@@ -49,6 +49,13 @@ class TrackerFeed {
 
  private:
   glm::dquat report(int64_t k) const;  // report k, sampled at k / rate
+  // The truth's samples around t (strictly inside its span) and the fraction of the way from the first to the second.
+  struct Bracket {
+    const tracker::PoseSample& a;
+    const tracker::PoseSample& b;
+    double u;
+  };
+  Bracket bracket(int64_t t) const;
   int64_t sample_time(int64_t k) const;
   std::vector<tracker::PoseSample> truth_;
   bool positions_ = false;

@@ -26,6 +26,16 @@ void pack21(uint8_t* out, int32_t x, int32_t y, int32_t z) {
   for (int i = 0; i < 8; ++i) out[i] = static_cast<uint8_t>(v >> (56 - 8 * i));
 }
 void put16(uint8_t* p, int v) { p[0] = static_cast<uint8_t>(v & 0xFF); p[1] = static_cast<uint8_t>((v >> 8) & 0xFF); }
+// A report that must decode, and the header fields both models carry.
+void expect_decoded(RiftModel m, const uint8_t* r, size_t n, ImuReport& rep, int samples, uint32_t timestamp, int command_id,
+                    int temperature) {
+  std::string err;
+  ASSERT_TRUE(decode_report(m, r, n, rep, err)) << err;
+  EXPECT_EQ(rep.sample_count, samples);
+  EXPECT_EQ(rep.timestamp, timestamp);
+  EXPECT_EQ(rep.last_command_id, command_id);
+  EXPECT_EQ(rep.temperature, temperature);
+}
 }  // namespace
 
 TEST(OculusReport, TwentyOneBitFieldsAtTheirExtremes) {
@@ -65,12 +75,7 @@ TEST(OculusReport, Dk1ReportDecodesByteExactly) {
   put16(r + 58, 0);
   put16(r + 60, 32767);
   ImuReport rep;
-  std::string err;
-  ASSERT_TRUE(decode_report(RiftModel::DK1, r, sizeof r, rep, err)) << err;
-  EXPECT_EQ(rep.sample_count, 3);
-  EXPECT_EQ(rep.timestamp, 0xBEEFu);
-  EXPECT_EQ(rep.last_command_id, 0x1234);
-  EXPECT_EQ(rep.temperature, -1234);
+  ASSERT_NO_FATAL_FAILURE(expect_decoded(RiftModel::DK1, r, sizeof r, rep, 3, 0xBEEFu, 0x1234, -1234));
   for (int s = 0; s < 3; ++s) {
     EXPECT_EQ(rep.samples[s].accel[0], 98066 + s);
     EXPECT_EQ(rep.samples[s].accel[1], -s);
@@ -99,13 +104,8 @@ TEST(OculusReport, Dk2ReportDecodesByteExactly) {
   put16(r + 46, -200);
   put16(r + 48, 300);
   ImuReport rep;
-  std::string err;
-  ASSERT_TRUE(decode_report(RiftModel::DK2, r, sizeof r, rep, err)) << err;
-  EXPECT_EQ(rep.sample_count, 2);
-  EXPECT_EQ(rep.timestamp, 0xDEADBEEFu);
-  EXPECT_EQ(rep.last_command_id, 0x0102);
+  ASSERT_NO_FATAL_FAILURE(expect_decoded(RiftModel::DK2, r, sizeof r, rep, 2, 0xDEADBEEFu, 0x0102, 3150));
   EXPECT_EQ(rep.samples_since_start, 60000);
-  EXPECT_EQ(rep.temperature, 3150);
   EXPECT_EQ(rep.samples[0].accel, (std::array<int32_t, 3>{1, 2, 3}));
   EXPECT_EQ(rep.samples[0].gyro, (std::array<int32_t, 3>{4, 5, 6}));
   EXPECT_EQ(rep.samples[1].accel, (std::array<int32_t, 3>{-7, -8, -9}));

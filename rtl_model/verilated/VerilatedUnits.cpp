@@ -165,18 +165,6 @@ struct Offers {
 #define ARP_SAME(field) &&a.field == b.field
 #define ARP_NAME(field) "/" #field
 #define ARP_VALUE(field) << "/" << h.field
-#define ARP_MODULE_HELPERS(module)                                                                    \
-  bool same_##module(const HdlConfig& a, const HdlConfig& b) { return true ARP_HDL_PARAMS_##module(ARP_SAME); } \
-  std::string values_##module(const HdlConfig& h) {                                                   \
-    std::ostringstream s;                                                                             \
-    s ARP_HDL_PARAMS_##module(ARP_VALUE);                                                             \
-    return s.str().substr(1);                                                                         \
-  }                                                                                                   \
-  std::string names_##module() { return std::string(ARP_HDL_PARAMS_##module(ARP_NAME)).substr(1); }
-ARP_MODULE_HELPERS(omu)
-ARP_MODULE_HELPERS(cfag)
-ARP_MODULE_HELPERS(comp)
-ARP_MODULE_HELPERS(filt)
 
 template <class Impl, class Unit>
 void offer(std::unique_ptr<Unit>& slot, bool same, const HdlConfig& built, const char* config, const std::string& values,
@@ -188,22 +176,25 @@ void offer(std::unique_ptr<Unit>& slot, bool same, const HdlConfig& built, const
   }
 }
 
-template <class Top>
-void offer_omu(Units& u, const HdlConfig& c, const char* config, const HdlConfig& want, Offers& o) {
-  offer<RotateImpl<Top>>(u.rotate, same_omu(c, want), c, config, values_omu(c), o);
-}
-template <class Top>
-void offer_cfag(Units& u, const HdlConfig& c, const char* config, const HdlConfig& want, Offers& o) {
-  offer<AddressImpl<Top>>(u.address, same_cfag(c, want), c, config, values_cfag(c), o);
-}
-template <class Top>
-void offer_comp(Units& u, const HdlConfig& c, const char* config, const HdlConfig& want, Offers& o) {
-  offer<ComposeImpl<Top>>(u.compose, same_comp(c, want), c, config, values_comp(c), o);
-}
-template <class Top>
-void offer_filt(Units& u, const HdlConfig& c, const char* config, const HdlConfig& want, Offers& o) {
-  offer<FilterImpl<Top>>(u.filter, same_filt(c, want), c, config, values_filt(c), o);
-}
+// A module's helpers: whether two configurations agree on its parameters,
+// its values and names for messages, and the offer of one of its builds for
+// its slot (impl) in Units.
+#define ARP_MODULE_HELPERS(module, impl, slot)                                                                     \
+  bool same_##module(const HdlConfig& a, const HdlConfig& b) { return true ARP_HDL_PARAMS_##module(ARP_SAME); }   \
+  std::string values_##module(const HdlConfig& h) {                                                               \
+    std::ostringstream s;                                                                                         \
+    s ARP_HDL_PARAMS_##module(ARP_VALUE);                                                                         \
+    return s.str().substr(1);                                                                                     \
+  }                                                                                                               \
+  std::string names_##module() { return std::string(ARP_HDL_PARAMS_##module(ARP_NAME)).substr(1); }             \
+  template <class Top>                                                                                            \
+  void offer_##module(Units& u, const HdlConfig& c, const char* config, const HdlConfig& want, Offers& o) {      \
+    offer<impl<Top>>(u.slot, same_##module(c, want), c, config, values_##module(c), o);                           \
+  }
+ARP_MODULE_HELPERS(omu, RotateImpl, rotate)
+ARP_MODULE_HELPERS(cfag, AddressImpl, address)
+ARP_MODULE_HELPERS(comp, ComposeImpl, compose)
+ARP_MODULE_HELPERS(filt, FilterImpl, filter)
 
 }  // namespace
 

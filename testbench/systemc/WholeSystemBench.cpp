@@ -19,6 +19,15 @@ struct Case {
   dp::ArpConfig config;
 };
 
+// The same contents twice: the functional reference reads one, the timed run the other (host writes change it).
+struct MemoryPair {
+  MemoryPair(const dp::MemoryConfig& m, int eyes) : timed(m, eyes), ref(m, eyes) {
+    fill_memories(timed);
+    fill_memories(ref);
+  }
+  dp::DisplayMemorySet timed, ref;
+};
+
 dp::ArpConfig variant(const std::string& v) {
   dp::ArpConfig c = small_config();
   if (v == "default") return c;
@@ -74,13 +83,11 @@ std::string first_difference(const V& got, const HmdFrame& want, bool photon = f
 }
 
 void expect_same_as_functional(scm::Fidelity level, const dp::ArpConfig& c, int frames) {
-  dp::DisplayMemorySet mem_timed(c.memory, c.timing.eyes), mem_ref(c.memory, c.timing.eyes);
-  fill_memories(mem_timed);
-  fill_memories(mem_ref);
+  MemoryPair mem(c.memory, c.timing.eyes);
   const dp::OrientationStream o = fast_turn(c, 1, frames);
-  stage::TimedInputs in = inputs(c, mem_ref, o, 1, frames);
+  stage::TimedInputs in = inputs(c, mem.ref, o, 1, frames);
   const auto want = functional_frames(in);
-  in.memories = &mem_timed;
+  in.memories = &mem.timed;
   scm::TimedResult res;
   const auto got = run_level(level, in, &res);
   ASSERT_EQ(got.size(), want.size());
@@ -134,11 +141,9 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
   c.timed.host_clock_hz = 3'000'000;
   c.timed.host_texels_per_cycle = 2;
   const dp::VideoTiming t(c.timing);
-  dp::DisplayMemorySet mem_timed(c.memory, 2), mem_ref(c.memory, 2);
-  fill_memories(mem_timed);
-  fill_memories(mem_ref);
+  MemoryPair mem(c.memory, 2);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(0, 0, 0));
-  stage::TimedInputs in = inputs(c, mem_ref, still, 0, 4);
+  stage::TimedInputs in = inputs(c, mem.ref, still, 0, 4);
   // Job 0: memory 1 of eye 0, a near red square over the -Z face, started mid-frame 0.
   // Job 1: the same memory again (waits for job 0's swap), cleared: the square goes away.
   stage::HostWriteJob j0;
@@ -146,7 +151,7 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
   j0.eye = 0;
   j0.memory = 1;
   for (int y = 16; y < 48; ++y)
-    for (int x = 16; x < 48; ++x) j0.texels.push_back({5, static_cast<uint16_t>(x), static_cast<uint16_t>(y), mem_ref.format().pack_rgb8(255, 0, 0), 10});
+    for (int x = 16; x < 48; ++x) j0.texels.push_back({5, static_cast<uint16_t>(x), static_cast<uint16_t>(y), mem.ref.format().pack_rgb8(255, 0, 0), 10});
   stage::HostWriteJob j1 = j0;
   j1.texels.clear();
   j1.clear_first = true;
@@ -159,9 +164,9 @@ TEST_P(HostWrites, CommitSwapsAtTheNextVerticalBlankAndFramesMatch) {
   EXPECT_GT(plan[1].start_ps, plan[0].swap_ps);  // waited for the swap
   EXPECT_EQ(plan[1].swap_frame, 1);
 
-  in.memories = &mem_ref;
+  in.memories = &mem.ref;
   const auto want = functional_frames(in);
-  in.memories = &mem_timed;
+  in.memories = &mem.timed;
   scm::TimedResult res;
   const auto got = run_level(GetParam(), in, &res);
   ASSERT_EQ(res.host_jobs.size(), 2u);
@@ -195,13 +200,11 @@ class Backpressure : public ::testing::TestWithParam<scm::Fidelity> {};
 TEST_P(Backpressure, StalledStageFillsFifosThenUnderflowsAreCounted) {
   const dp::ArpConfig c = small_config();
   const dp::VideoTiming t(c.timing);
-  dp::DisplayMemorySet mem_timed(c.memory, 2), mem_ref(c.memory, 2);
-  fill_memories(mem_timed);
-  fill_memories(mem_ref);
+  MemoryPair mem(c.memory, 2);
   const auto still = dp::OrientationStream::constant(dp::from_yaw_pitch_roll_deg(10, 5, 0));
-  stage::TimedInputs in = inputs(c, mem_ref, still, 0, 2);
+  stage::TimedInputs in = inputs(c, mem.ref, still, 0, 2);
   const auto want = functional_frames(in);
-  in.memories = &mem_timed;
+  in.memories = &mem.timed;
   const int64_t stall_at = t.pixel_cycle(0, 0, 40, 30);
   const int64_t stall_len = 40;
   in.stalls = {{dp::Stage::Filter, stall_at, stall_len}};

@@ -97,7 +97,7 @@ struct Driven {
   test::ManualClock clock;
   test::RiftEmulator device;
   RiftStream stream;
-  Driven(RiftModel model, std::vector<PoseSample> truth, RiftStreamOptions o)
+  Driven(RiftModel model, std::vector<PoseSample> truth, RiftStreamOptions o = {})
       : device(model, std::move(truth)), stream((o.host_clock = clock.function(), o)) {
     device.drive_by(clock);
   }
@@ -107,8 +107,9 @@ struct Driven {
     EXPECT_TRUE(ok) << err;
     return ok;
   }
+  std::vector<PoseSample> poses;  // what drive() took
   void drive(int64_t ms, std::vector<PoseSample>* out) { ::drive(clock, device, stream, ms, out); }
-  void drive(int64_t ms, std::vector<PoseSample>& out) { drive(ms, &out); }
+  void drive(int64_t ms) { drive(ms, &poses); }
 };
 
 }  // namespace
@@ -131,16 +132,15 @@ TEST(RiftStream, Dk1StreamsAcrossTheCounterWrapAndKeepsItsKeepAlive) {
   EXPECT_TRUE(dk1.kernel_driver_detached());
   EXPECT_TRUE(dk1.interface_claimed());
   EXPECT_TRUE(r.stats().kernel_driver_detached);
-  std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(t.drive(1200, poses));
-  ASSERT_NO_FATAL_FAILURE(collect(r, poses, 1201));
+  ASSERT_NO_FATAL_FAILURE(t.drive(1200));
+  ASSERT_NO_FATAL_FAILURE(collect(r, t.poses, 1201));
   EXPECT_EQ(dk1.reports_sent(), 1201);  // the device never ran out of keep-alive
   EXPECT_TRUE(r.connected());
   EXPECT_EQ(r.stats().malformed, 0);
   EXPECT_EQ(r.stats().time_went_back, 0);
   EXPECT_EQ(r.stats().clock_reanchors, 0);
-  ASSERT_EQ(poses.size(), 1201u);
-  for (size_t k = 0; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
+  ASSERT_EQ(t.poses.size(), 1201u);
+  for (size_t k = 0; k < t.poses.size(); ++k) ASSERT_EQ(t.poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   expect_fused_motion(r, truth);
   // The config report first, then keep-alives, byte-exact: one at the start and one each 100 ms of the
   // clock (the stream checks between any two reports, so at the millisecond it is due or the next).
@@ -169,8 +169,7 @@ TEST(RiftStream, ADeviceWhoseKeepAliveRunsOutStops) {
   test::RiftEmulator& dk1 = t.device;
   RiftStream& r = t.stream;
   ASSERT_TRUE(t.open());
-  std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(t.drive(600, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(600));
   EXPECT_EQ(dk1.reports_sent(), 301);  // 0..300 ms
   EXPECT_EQ(r.stats().keep_alives, 1);
 }
@@ -258,27 +257,25 @@ TEST(RiftStream, NoDeviceGivesAClearAnswer) {
 // its report was sent.
 TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
   const auto truth = yaw_90(12.0);
-  RiftStreamOptions o;
-  Driven t(RiftModel::DK1, truth, o);
+  Driven t(RiftModel::DK1, truth);
   test::RiftEmulator& dk1 = t.device;
   RiftStream& r = t.stream;
   ASSERT_TRUE(t.open());
-  std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(t.drive(199, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(199));
   EXPECT_EQ(r.stats().samples, 200);
 
   dk1.set_report_length(62);
-  ASSERT_NO_FATAL_FAILURE(t.drive(200, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(200));
   EXPECT_EQ(r.stats().samples, 400);
   EXPECT_EQ(r.stats().malformed, 0);
 
   dk1.inject_sample_count(7);
-  ASSERT_NO_FATAL_FAILURE(t.drive(1, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(1));
   EXPECT_EQ(r.stats().samples_lost_on_device, 4);  // 7 taken, 3 held
   EXPECT_EQ(r.stats().samples, 401);               // the two older slots were fused already
 
   dk1.inject_malformed_report(150);
-  ASSERT_NO_FATAL_FAILURE(t.drive(151, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(151));
   EXPECT_EQ(r.stats().malformed, 150);
   EXPECT_EQ(r.stats().malformed_short, 150);
   // 150 ms without a sample: a break, bridged by holding the pose. The fused orientation then trails the
@@ -289,10 +286,10 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
 
   // The restart sets the counter back by more than the stale tolerance (20 ms): the counter, which wrapped
   // at the 536th report, reads 100 or more after 640 reports.
-  ASSERT_NO_FATAL_FAILURE(t.drive(640 - 552, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(640 - 552));
   EXPECT_EQ(r.stats().clock_reanchors, 0);
   dk1.restart_counter();
-  ASSERT_NO_FATAL_FAILURE(t.drive(300, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(300));
   EXPECT_EQ(r.stats().clock_reanchors, 1);
   EXPECT_EQ(r.stats().clock_held_reports, 0);  // the arrival it re-anchored at is the device's time
   EXPECT_EQ(r.stats().time_went_back, 0);
@@ -300,12 +297,12 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
   // itself loses nothing: its first sample is integrated over the device's 1 ms).
   expect_fused_motion(r, truth, 13.5);
   // Each sample at the millisecond its report was sent: no re-anchor moved the timeline.
-  ASSERT_NO_FATAL_FAILURE(collect(r, poses, static_cast<size_t>(r.stats().samples)));
-  for (size_t i = 1; i < poses.size(); ++i) {
-    ASSERT_GT(poses[i].time_ps, poses[i - 1].time_ps) << i;
-    ASSERT_EQ(poses[i].time_ps % kMsPs, 0) << i;
+  ASSERT_NO_FATAL_FAILURE(collect(r, t.poses, static_cast<size_t>(r.stats().samples)));
+  for (size_t i = 1; i < t.poses.size(); ++i) {
+    ASSERT_GT(t.poses[i].time_ps, t.poses[i - 1].time_ps) << i;
+    ASSERT_EQ(t.poses[i].time_ps % kMsPs, 0) << i;
   }
-  EXPECT_EQ(poses.back().time_ps, t.clock.now_ps());
+  EXPECT_EQ(t.poses.back().time_ps, t.clock.now_ps());
 
   // Events: the 1st, 10th and 100th malformed report, one re-anchor; never one line per report.
   int malformed_events = 0, reanchor_events = 0;
@@ -327,37 +324,35 @@ TEST(RiftStream, Dk1QuirksAreTakenCountedAndSummarised) {
 // step, and neither glitch is integrated as motion.
 TEST(RiftStream, Dk2TimesShedALateStartAndSurviveAJump) {
   const auto truth = yaw_90(4.0);
-  RiftStreamOptions o;
-  Driven t(RiftModel::DK2, truth, o);
+  Driven t(RiftModel::DK2, truth);
   test::RiftEmulator& dk2 = t.device;
   RiftStream& r = t.stream;
   dk2.delay_delivery(20);
   ASSERT_TRUE(t.open());
-  std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(t.drive(500, poses));
-  ASSERT_NO_FATAL_FAILURE(collect(r, poses, 501));
+  ASSERT_NO_FATAL_FAILURE(t.drive(500));
+  ASSERT_NO_FATAL_FAILURE(collect(r, t.poses, 501));
   EXPECT_EQ(r.stats().clock_reanchors, 0);
   EXPECT_EQ(r.stats().clock_held_reports, 20);  // the burst's reports after the anchor
-  for (size_t k = 1; k < poses.size(); ++k) ASSERT_GT(poses[k].time_ps, poses[k - 1].time_ps) << k;
-  for (size_t k = 21; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
+  for (size_t k = 1; k < t.poses.size(); ++k) ASSERT_GT(t.poses[k].time_ps, t.poses[k - 1].time_ps) << k;
+  for (size_t k = 21; k < t.poses.size(); ++k) ASSERT_EQ(t.poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   expect_fused_motion(r, truth);
 
   // A glitch of 100 ms, inside the lead tolerance: shed by the envelope (no re-anchor, times go on), and
   // its sample integrated over the device's own millisecond, not over the glitch (9 deg at 90 deg/s).
   dk2.jump_counter(100'000);
-  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
-  ASSERT_NO_FATAL_FAILURE(collect(r, poses, 601));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100));
+  ASSERT_NO_FATAL_FAILURE(collect(r, t.poses, 601));
   EXPECT_EQ(r.stats().clock_reanchors, 0);
   EXPECT_EQ(r.stats().gaps, 1);
   EXPECT_NEAR(r.stats().gap_s, 0.101, 1e-9);
-  for (size_t k = 501; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
+  for (size_t k = 501; k < t.poses.size(); ++k) ASSERT_EQ(t.poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   expect_fused_motion(r, truth);
 
   dk2.jump_counter(2'000'000);  // 2 s of microseconds
-  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
-  ASSERT_NO_FATAL_FAILURE(collect(r, poses, 701));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100));
+  ASSERT_NO_FATAL_FAILURE(collect(r, t.poses, 701));
   EXPECT_EQ(r.stats().clock_reanchors, 1);
-  for (size_t k = 601; k < poses.size(); ++k) ASSERT_EQ(poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
+  for (size_t k = 601; k < t.poses.size(); ++k) ASSERT_EQ(t.poses[k].time_ps, static_cast<int64_t>(k) * kMsPs) << k;
   EXPECT_EQ(r.stats().gaps, 1);  // the jump was in the counter, not in the samples
   expect_fused_motion(r, truth);
 }
@@ -371,16 +366,15 @@ TEST(RiftStream, TransferErrorsAreRetriedAndARunOfThemIsAnUnplug) {
   Driven t(RiftModel::DK1, yaw_90(4.0), o);
   RiftStream& r = t.stream;
   ASSERT_TRUE(t.open());
-  std::vector<PoseSample> poses;
-  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100));
   t.device.fail_transfers(5, ETIME);
-  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100));
   EXPECT_EQ(r.stats().transfer_errors, 5);
   EXPECT_EQ(r.stats().disconnects, 0);
   EXPECT_EQ(r.stats().samples, 201);  // every report: the errors cost no sample
   EXPECT_EQ(r.stats().gaps, 0);
   t.device.fail_transfers(20, EPROTO);
-  ASSERT_NO_FATAL_FAILURE(t.drive(100, poses));
+  ASSERT_NO_FATAL_FAILURE(t.drive(100));
   EXPECT_EQ(r.stats().transfer_errors, 25);  // every one counted; the 20th in a row is the unplug
   EXPECT_EQ(r.stats().disconnects, 1);
   EXPECT_EQ(r.stats().reconnects, 1);
