@@ -106,3 +106,20 @@ TEST(IncludeDirection, TheGoldenReferenceIncludesNoDatapathArithmetic) {
       }
   EXPECT_GE(model_includes, 2);  // the scan does see the configuration and memory includes
 }
+
+// Apps parse arguments and print; the work is in the libraries. A command
+// file that grows past 150 lines is doing a library's work.
+TEST(IncludeDirection, EveryCommandFileOnlyTalks) {
+  const fs::path root(ARPSIM_SOURCE_DIR);
+  int commands = 0;
+  for (const auto& e : fs::directory_iterator(root / "apps/arpsim")) {
+    const std::string name = e.path().filename().string();
+    if (name.size() < 11 || name.compare(name.size() - 11, 11, "Command.cpp") != 0) continue;
+    ++commands;
+    std::ifstream in(e.path());
+    int lines = 0;
+    for (std::string l; std::getline(in, l);) ++lines;
+    EXPECT_LE(lines, 150) << "apps/arpsim/" << name << " has " << lines << " lines";
+  }
+  EXPECT_GE(commands, 11);  // frame, verify, config, tracker (+ import), run, gtkw, latency, live, tradeoff, plan
+}
