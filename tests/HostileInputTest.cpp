@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "TestSupport.hpp"
@@ -31,7 +32,33 @@ struct Case {
   std::string says;  // part of the message
 };
 
-void expect_refused(const std::vector<Case>& cases, const TempDir& d) {
+// The group's cases of tests/data/hostile/refusals.txt, $H and $D replaced by the data folder and `d`.
+std::vector<Case> refusals(const std::string& group, const TempDir& d) {
+  std::vector<Case> cases;
+  std::ifstream in(kData + "refusals.txt");
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> f;
+    for (size_t at = 0;;) {
+      const size_t bar = line.find(" | ", at);
+      f.push_back(line.substr(at, bar == std::string::npos ? std::string::npos : bar - at));
+      if (bar == std::string::npos) break;
+      at = bar + 3;
+    }
+    EXPECT_EQ(f.size(), 4u) << "refusals.txt line " << number << ": " << line;
+    if (f.size() != 4 || f[0] != group) continue;
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"$H", kData.substr(0, kData.size() - 1)}, {"$D", d.path()}})
+      for (size_t at; (at = f[3].find(key)) != std::string::npos;) f[3].replace(at, key.size(), value);
+    cases.push_back({f[3], std::stoi(f[1]), f[2]});
+  }
+  return cases;
+}
+
+void expect_refused(const std::string& group, const TempDir& d) {
+  const std::vector<Case> cases = refusals(group, d);
+  EXPECT_GE(cases.size(), 5u) << group;  // the table is read
   for (const Case& c : cases) {
     const auto r = run_command("cd " + d.path() + " && timeout 120 " + kArpsim + " " + c.args);
     EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.output.substr(0, 2000);
@@ -79,57 +106,12 @@ TEST(HostileInput, BadFilesAreRefusedWithFilePlaceAndReason) {
   std::ofstream(d.file("long.json")) << "{\"objects\": [{\"sphere\": \"" << std::string(10 << 20, 'x') << "\"}]}";
   std::ofstream(d.file("huge.tif"), std::ios::binary) << tiff_header(16384, 16384, 16);
   ASSERT_EQ(::mkfifo(d.file("fifo").c_str(), 0600), 0);
-  const std::string H = kData;
-  expect_refused(
-      {
-          // Model import: a hang and a 10^9-vertex header, through a scene.
-          {"frame --out out.png --scene " + H + "scene-truncated-model.json", 2, "truncated.ply"},
-          {"frame --out out.png --scene " + H + "scene-huge-model.json", 2, "declares 1000000000"},
-          // Configuration: nesting, overflow, narrowing, duplicates, NUL bytes, huge integers.
-          {"config --config deep.json", 2, "nested deeper than 64"},
-          {"config --set lens.k=[1e400,0,0,0]", 2, "too large for a double"},
-          {"config --set memory.background=[4294967296,0,0]", 2, "element 0 is 4294967296, must be in [0, 255]"},
-          {"config --config " + H + "config-narrowing.json", 2, "element 0 is 4294967296"},
-          {"config --config " + H + "config-duplicate.json", 2, "vec_frac"},
-          {"config --config " + H + "config-nul.json", 2, "NUL byte"},
-          {"config --set memory.face_size=18446744073709551615", 2, "must be in 1 .. 2^14"},
-          {"config --set lens.k=[1e308,0,0,0]", 2, "must be in"},
-          // Scenes and walks.
-          {"frame --out out.png --scene " + H + "scene-fractional-segments.json", 2, "segments"},
-          {"frame --out out.png --scene " + H + "scene-overflow.json", 2, "too large for a double"},
-          {"frame --out out.png --scene long.json", 2, "sphere"},
-          {"run -q --frames 1 --scene gallery --walk " + H + "walk-overflow.json --report r.json", 2, "too large for a double"},
-          // Images: bytes counted from the header before anything is allocated; special files.
-          {"frame --out out.png --cross huge.tif", 2, "images are limited to 1024 MB"},
-          {"frame --out out.png --cross /dev/zero", 2, "must be a regular file"},
-          {"frame --out out.png --cross fifo", 2, "must be a regular file"},
-          {"config --config /dev/zero", 2, "must be a regular file"},
-          {"config --config fifo", 2, "must be a regular file"},
-          {"frame --out out.png --scene /dev/zero", 2, "must be a regular file"},
-          {"run -q --frames 1 --scene gallery --walk /dev/zero --report r.json", 2, "must be a regular file"},
-          {"run -q --frames 1 --trace /dev/zero --report r.json", 2, "must be a regular file"},
-          {"run -q --frames 1 --trace fifo --report r.json", 2, "must be a regular file"},
-          {"run -q --frames 1 --trace " + H + "trace-nul.csv --report r.json", 2, "line 3: a NUL byte"},
-          {"gtkw /dev/zero -o x.gtkw", 2, "must be a regular file"},
-          {"gtkw " + H + "bad-timestamp.vcd -o x.gtkw", 2, "line 6: '#abc' is not a timestamp"},
-          {"tracker import /dev/zero t.csv", 2, "must be a regular file"},
-      },
-      d);
+  expect_refused("files", d);
 }
 
 TEST(HostileInput, TimesOutsideThe64BitPicosecondRangeAreRefusedWithTheLimit) {
   TempDir d;
-  expect_refused(
-      {
-          {"frame --out out.png --frame 1000000000000", 2, "past the last frame whose times fit"},
-          {"frame --out out.png --frame 9223372036854775808", 2, "outside the range"},
-          {"frame --out out.png --frame -1", 2, "--frame"},
-          {"run -q --frames 1 --first-frame 1000000000 --report r.json", 2, "days at this display's 59.94 Hz"},
-          // A 1 kHz pixel clock: 420 s a frame, so the range ends after about 21 960 frames.
-          {"run -q --frames 1 --first-frame 30000 --set display.pixel_clock_hz=1000 --report r.json", 2, "past the last frame"},
-          {"run -q --frames 1000000 --first-frame 552000000 --report r.json", 2, "past the last frame"},
-      },
-      d);
+  expect_refused("times", d);
   // A run ending within a frame of the range's end: its motion window is held
   // at the range's end, not wrapped (UBSan aborts on the overflow in the ASan build).
   const auto last = run_command(kArpsim + " run -q --frames 1 --first-frame 552853308 --every 0 --report " + d.file("last.json"));
@@ -147,15 +129,7 @@ TEST(HostileInput, TimesOutsideThe64BitPicosecondRangeAreRefusedWithTheLimit) {
 
 TEST(HostileInput, NumericOptionsAreStrict) {
   TempDir d;
-  expect_refused(
-      {
-          {"run -q --frames 0x10", 2, "'0x10' is not a whole number"},
-          {"run -q --frames 1e3", 2, "not a whole number"},
-          {"frame --out out.png --yaw 1e400", 2, "not a finite number"},
-          {"frame --out out.png --yaw nan", 2, "not a finite number"},
-          {"frame --out out.png --pitch inf", 2, "not a finite number"},
-      },
-      d);
+  expect_refused("numbers", d);
   // "010" is ten, not octal eight; a denormal is a number.
   const auto r = run_command(kArpsim + " frame --out " + d.file("f.png") + " --frame 010 --yaw 1e-320");
   ASSERT_EQ(r.status, 0) << r.output;
@@ -169,21 +143,7 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
   std::ofstream(d.file("d.txt")) << "timestamp frameId w x y z\n0 0 1 0 0 0\n1 1 1 0 0 0\n";
   const auto size_of = [&](const std::string& f) { return fs::file_size(d.file(f)); };
   const auto png = size_of("x.png"), csv = size_of("t.csv"), txt = size_of("d.txt");
-  expect_refused(
-      {
-          {"frame --cross x.png --out x.png", 2, "is the --cross input"},
-          {"frame --cross x.png --out ./x.png", 2, "is the --cross input"},
-          {"tracker import d.txt d.txt", 2, "is the dataset input"},
-          {"run -q --frames 1 --trace t.csv --report t.csv", 2, "is the --trace input"},
-          {"run -q --frames 1 --report r.json --csv r.json", 2, "is also the --report output"},
-          {"run -q --frames 1 --report /proc/r.json", 2, "cannot write there"},
-          {"run -q --frames 1 --report missing/r.json", 2, "does not exist"},
-          {"run -q --frames 1 --report " + d.path(), 2, "is a folder"},
-          // A valid report beside an unwritable host CSV: refused before the run, neither written.
-          {"run -q --frames 1 --scene gallery --walk gallery --report r.json --host-csv /proc/h.csv", 2, "--host-csv"},
-          {"latency --out-dir /proc/x", 2, "cannot create the folder"},
-      },
-      d);
+  expect_refused("outputs", d);
   EXPECT_EQ(size_of("x.png"), png);
   EXPECT_EQ(size_of("t.csv"), csv);
   EXPECT_EQ(size_of("d.txt"), txt);
