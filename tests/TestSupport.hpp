@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/InputError.hpp"
 
@@ -76,6 +77,23 @@ inline CommandResult run_command(const std::string& cmd) {
   const int st = ::pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
+}
+
+// A usage a command refuses: the arguments that make it bad and part of what it must say.
+struct Refusal {
+  std::string args, says;
+};
+// Each `before + args + after` exits with status 2 (bad input) saying `says`; `not_written`, if given, does not exist after.
+inline void expect_refused(const std::string& before, const std::vector<Refusal>& bad, const std::string& after = "",
+                           const std::string& not_written = "") {
+  for (const Refusal& b : bad) {
+    const CommandResult r = run_command(before + b.args + after);
+    EXPECT_EQ(r.status, 2) << b.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(b.says), std::string::npos) << b.args << "\n" << r.output;
+    if (!not_written.empty()) {
+      EXPECT_FALSE(std::filesystem::exists(not_written)) << b.args;
+    }
+  }
 }
 
 }  // namespace arp::test

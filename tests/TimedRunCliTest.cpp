@@ -129,24 +129,19 @@ TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
 TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
   TempDir d;
   const std::string base = kArpsim + " run -q --frames 1 --every 0" + kSmall;
-  struct Bad {
-    std::string args, says;
-  };
-  for (const Bad& b : std::vector<Bad>{
-           {" --fidelity gates", "--fidelity"},
-           {" --fidelity functional --vcd " + d.file("x.vcd"), "no waveform"},
-           {" --fidelity rtl --vcd /proc/arpsim/x.vcd", "cannot create the folder"},
-           {" --fidelity rtl --set timed.fifo_depth=0", "timed.fifo_depth"},
-           {" --fidelity cycle --set memory.count=9", "memory.count"},
-           {" --fidelity rtl --set display.pixel_clock_hz=200000000", "timed.lens_latency"},
-           {" --fidelity rtl --vcd " + d.file("y.vcd") + " --vcd-lines 5:2", "--vcd-lines"},
-           {" --fidelity rtl --vcd-lines 0:2", "needs --vcd"},
-           {" --fidelity lt --trace " + d.file("none.csv"), "none.csv"}}) {
-    const auto r = run_command(base + b.args + " --report " + d.file("r.json"));
-    EXPECT_EQ(r.status, 2) << b.args << "\n" << r.output;
-    EXPECT_NE(r.output.find(b.says), std::string::npos) << b.args << "\n" << r.output;
-    EXPECT_FALSE(std::filesystem::exists(d.file("r.json"))) << b.args;
-  }
+  arp::test::expect_refused(base,
+                 {
+                     {" --fidelity gates", "--fidelity"},
+                     {" --fidelity functional --vcd " + d.file("x.vcd"), "no waveform"},
+                     {" --fidelity rtl --vcd /proc/arpsim/x.vcd", "cannot create the folder"},
+                     {" --fidelity rtl --set timed.fifo_depth=0", "timed.fifo_depth"},
+                     {" --fidelity cycle --set memory.count=9", "memory.count"},
+                     {" --fidelity rtl --set display.pixel_clock_hz=200000000", "timed.lens_latency"},
+                     {" --fidelity rtl --vcd " + d.file("y.vcd") + " --vcd-lines 5:2", "--vcd-lines"},
+                     {" --fidelity rtl --vcd-lines 0:2", "needs --vcd"},
+                     {" --fidelity lt --trace " + d.file("none.csv"), "none.csv"},
+                 },
+                 " --report " + d.file("r.json"), d.file("r.json"));
   EXPECT_EQ(d.entries(), 0u);  // not even a waveform
 }
 
