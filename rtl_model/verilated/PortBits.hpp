@@ -55,4 +55,19 @@ int64_t get_signed(const T& s, int lsb, int width) {
   return static_cast<int64_t>((get_unsigned(s, lsb, width) ^ sign) - sign);
 }
 
+// Vector ports: three signed fields of `width` bits each, x in the low bits
+// (V: any type with members x, y, z, e.g. dp::Vec3q).
+template <class T, class V>
+void put_vector(T& s, int width, const V& v) {
+  put_field(s, 0, width, v.x);
+  put_field(s, width, width, v.y);
+  put_field(s, 2 * width, width, v.z);
+}
+template <class V, class T>
+V get_vector(const T& s, int width) {
+  using C = decltype(V{}.x);
+  return {static_cast<C>(get_signed(s, 0, width)), static_cast<C>(get_signed(s, width, width)),
+          static_cast<C>(get_signed(s, 2 * width, width))};
+}
+
 }  // namespace arp::vl

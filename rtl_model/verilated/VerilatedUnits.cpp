@@ -69,14 +69,10 @@ class RotateImpl final : public RotateUnit {
         n,
         [&](Top& t, size_t i) {
           for (int k = 0; k < 9; ++k) put_field(t.in_matrix, k * mw_, mw_, m[i].m[k]);
-          put_field(t.in_vector, 0, vw_, v[i].x);
-          put_field(t.in_vector, vw_, vw_, v[i].y);
-          put_field(t.in_vector, 2 * vw_, vw_, v[i].z);
+          put_vector(t.in_vector, vw_, v[i]);
         },
         [&](const Top& t, size_t i) {
-          out[i] = {static_cast<int32_t>(get_signed(t.out_vector, 0, rw_)),
-                    static_cast<int32_t>(get_signed(t.out_vector, rw_, rw_)),
-                    static_cast<int32_t>(get_signed(t.out_vector, 2 * rw_, rw_))};
+          out[i] = get_vector<dp::Vec3q>(t.out_vector, rw_);
         });
   }
 
@@ -93,9 +89,7 @@ class AddressImpl final : public AddressUnit {
     s_.run(
         n,
         [&](Top& t, size_t i) {
-          put_field(t.in_vector, 0, rw_, r[i].x);
-          put_field(t.in_vector, rw_, rw_, r[i].y);
-          put_field(t.in_vector, 2 * rw_, rw_, r[i].z);
+          put_vector(t.in_vector, rw_, r[i]);
         },
         [&](const Top& t, size_t i) {
           face[i] = static_cast<int32_t>(t.out_face);

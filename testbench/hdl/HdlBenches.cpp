@@ -43,6 +43,12 @@ using vl::HdlConfig;
 using vl::get_signed;
 using vl::get_unsigned;
 using vl::put_field;
+using vl::put_vector;
+using vl::get_vector;
+// An RTL output vector as read, before any narrowing (a wrong wide value must not alias a right one).
+struct Vec3Wide {
+  int64_t x, y, z;
+};
 
 // ---- the valid/ready driver -----------------------------------------------
 struct DriveResult {
@@ -135,11 +141,35 @@ DriveResult drive(Top& top, size_t n, const std::function<void(Top&, size_t)>& a
   return r;
 }
 
-// Both phases: unstalled (every latency exact) then random gaps and back-pressure.
+// Coverage bins: each directed case must be reached at least once.
+class Coverage {
+ public:
+  void declare(const std::string& bin) { bins_[bin]; }
+  void hit(const std::string& bin) { bins_[bin]++; }
+  void expect_all_hit() const {
+    for (const auto& [bin, count] : bins_) EXPECT_GT(count, 0u) << "directed case never reached: " << bin;
+  }
+  std::string summary() const {
+    std::ostringstream s;
+    const char* sep = "";
+    for (const auto& [bin, count] : bins_) {
+      s << sep << bin << " " << count;
+      sep = ", ";
+    }
+    return s.str();
+  }
+
+ private:
+  std::map<std::string, size_t> bins_;
+};
+
+// Both phases: unstalled (every latency exact) then random gaps and back-pressure;
+// then the directed cases (every one reached, unless a mutant runs).
 template <class Top>
-void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&, size_t)>& apply,
-               const std::function<std::string(const Top&, size_t)>& check, const std::string& coverage,
+void run_bench(const std::string& unit, size_t n, int latency, bool mutant, const std::function<void(Top&, size_t)>& apply,
+               const std::function<std::string(const Top&, size_t)>& check, const Coverage& cov,
                const std::function<void()>& before_teardown) {
+  std::printf("%s: %zu vectors\n", unit.c_str(), n);
   size_t mismatches = 0;
   std::string first;
   Top top;  // one instance for both phases: drive() resets it first
@@ -166,7 +196,8 @@ void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&
     std::printf("back-pressure (70 %% offered, 60 %% taken): %zu outputs compared, %zu mismatches, latency %d..%d clocks\n",
                 r.compared, r.mismatches, r.min_latency, r.max_latency);
   }
-  std::printf("directed-case coverage: %s\n", coverage.c_str());
+  std::printf("directed-case coverage: %s\n", cov.summary().c_str());
+  if (!mutant) cov.expect_all_hit();
   if (mutant) {
     EXPECT_GT(mismatches, 0u) << "the mutant passed the bench: the vectors do not reach what it breaks";
     if (!first.empty()) std::printf("mutant caught: %s\n", first.c_str());
@@ -176,27 +207,6 @@ void run_bench(size_t n, int latency, bool mutant, const std::function<void(Top&
   if (before_teardown) before_teardown();
 }
 
-// Coverage bins: each directed case must be reached at least once.
-class Coverage {
- public:
-  void declare(const std::string& bin) { bins_[bin]; }
-  void hit(const std::string& bin) { bins_[bin]++; }
-  void expect_all_hit() const {
-    for (const auto& [bin, count] : bins_) EXPECT_GT(count, 0u) << "directed case never reached: " << bin;
-  }
-  std::string summary() const {
-    std::ostringstream s;
-    const char* sep = "";
-    for (const auto& [bin, count] : bins_) {
-      s << sep << bin << " " << count;
-      sep = ", ";
-    }
-    return s.str();
-  }
-
- private:
-  std::map<std::string, size_t> bins_;
-};
 
 dp::Vec3q random_unit_vector(std::mt19937& rng, int frac) {
   std::normal_distribution<double> g(0, 1);
@@ -303,13 +313,10 @@ void bench_omu(const HdlConfig& cfg, int mutant, const std::function<void()>& be
   }
   auto apply = [&](Top& top, size_t i) {
     for (int k = 0; k < 9; ++k) put_field(top.in_matrix, k * mw, mw, ms[i].m[k]);
-    put_field(top.in_vector, 0, vw, vs[i].x);
-    put_field(top.in_vector, vw, vw, vs[i].y);
-    put_field(top.in_vector, 2 * vw, vw, vs[i].z);
+    put_vector(top.in_vector, vw, vs[i]);
   };
   auto check = [&](const Top& top, size_t i) -> std::string {
-    const int64_t x = get_signed(top.out_vector, 0, rw), y = get_signed(top.out_vector, rw, rw),
-                  z = get_signed(top.out_vector, 2 * rw, rw);
+    const auto [x, y, z] = get_vector<Vec3Wide>(top.out_vector, rw);
     const dp::Vec3q& e = expected[i];
     if (x == e.x && y == e.y && z == e.z) return "";
     std::ostringstream s;
@@ -319,9 +326,7 @@ void bench_omu(const HdlConfig& cfg, int mutant, const std::function<void()>& be
       << "), datapath (" << e.x << " " << e.y << " " << e.z << ")";
     return s.str();
   };
-  std::printf("orientation matrix unit: %zu vectors\n", ms.size());
-  run_bench<Top>(ms.size(), cfg.rotate_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
-  if (mutant == 0) cov.expect_all_hit();
+  run_bench<Top>("orientation matrix unit", ms.size(), cfg.rotate_latency, mutant != 0, apply, check, cov, before_teardown);
 }
 
 // ---- cube-face address generator -----------------------------------------
@@ -400,9 +405,7 @@ void bench_cfag(const HdlConfig& cfg, int mutant, const std::function<void()>& b
     if (std::all_of(lut_hit.begin(), lut_hit.end(), [](bool b) { return b; })) cov.hit("every reciprocal table entry");
   }
   auto apply = [&](Top& top, size_t i) {
-    put_field(top.in_vector, 0, rw, rs[i].x);
-    put_field(top.in_vector, rw, rw, rs[i].y);
-    put_field(top.in_vector, 2 * rw, rw, rs[i].z);
+    put_vector(top.in_vector, rw, rs[i]);
   };
   auto check = [&](const Top& top, size_t i) -> std::string {
     const uint64_t face = top.out_face, u = get_unsigned(top.out_u, 0, uw), v = get_unsigned(top.out_v, 0, uw);
@@ -413,9 +416,7 @@ void bench_cfag(const HdlConfig& cfg, int mutant, const std::function<void()>& b
       << " u " << u << " v " << v << ", datapath face " << dp::face_name(e.face) << " u " << e.u << " v " << e.v;
     return s.str();
   };
-  std::printf("cube-face address generator: %zu vectors\n", rs.size());
-  run_bench<Top>(rs.size(), cfg.address_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
-  if (mutant == 0) cov.expect_all_hit();
+  run_bench<Top>("cube-face address generator", rs.size(), cfg.address_latency, mutant != 0, apply, check, cov, before_teardown);
 }
 
 // ---- composition unit ------------------------------------------------------
@@ -482,9 +483,7 @@ void bench_comp(const HdlConfig& cfg, int mutant, const std::function<void()>& b
       << e.depth << " memory " << e.memory;
     return s.str();
   };
-  std::printf("composition unit (%d memories): %zu vectors\n", n, words.size());
-  run_bench<Top>(words.size(), cfg.compose_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
-  if (mutant == 0) cov.expect_all_hit();
+  run_bench<Top>("composition unit (" + std::to_string(n) + " memories)", words.size(), cfg.compose_latency, mutant != 0, apply, check, cov, before_teardown);
 }
 
 // ---- bilinear filter ---------------------------------------------------------
@@ -540,9 +539,7 @@ void bench_filt(const HdlConfig& cfg, int mutant, const std::function<void()>& b
       << ins[i].wx << " " << ins[i].wy << ": RTL " << c << ", datapath " << expected[i];
     return s.str();
   };
-  std::printf("bilinear filter: %zu vectors\n", ins.size());
-  run_bench<Top>(ins.size(), cfg.filter_latency, mutant != 0, apply, check, cov.summary(), before_teardown);
-  if (mutant == 0) cov.expect_all_hit();
+  run_bench<Top>("bilinear filter", ins.size(), cfg.filter_latency, mutant != 0, apply, check, cov, before_teardown);
 }
 
 // The coverage bench: the module's bench on a build with Verilator's
@@ -604,14 +601,12 @@ void trace_omu(const HdlConfig& cfg, const std::string& module) {
       top, ms.size(),
       [&](Top& t, size_t i) {
         for (int k = 0; k < 9; ++k) put_field(t.in_matrix, k * mw, mw, ms[i].m[k]);
-        put_field(t.in_vector, 0, vw, vs[i].x);
-        put_field(t.in_vector, vw, vw, vs[i].y);
-        put_field(t.in_vector, 2 * vw, vw, vs[i].z);
+        put_vector(t.in_vector, vw, vs[i]);
       },
       [&](const Top& t, size_t i) -> std::string {
         const dp::Vec3q e = dp::rotate(ms[i], vs[i], params);
-        const bool same = get_signed(t.out_vector, 0, rw) == e.x && get_signed(t.out_vector, rw, rw) == e.y &&
-                          get_signed(t.out_vector, 2 * rw, rw) == e.z;
+        const Vec3Wide got = get_vector<Vec3Wide>(t.out_vector, rw);
+        const bool same = got.x == e.x && got.y == e.y && got.z == e.z;
         return same ? "" : "differs from the datapath";
       },
       0.8, 0.7, 3, wave);
