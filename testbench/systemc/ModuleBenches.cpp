@@ -48,6 +48,12 @@ struct World {
     in.frames = 3;
   }
   stage::StageContext context() const { return {in, dp::PipelineSchedule(c)}; }
+  // The pixel clock to `end` and a FIFO of the configured depth.
+  scm::ClockGenerator clock(int64_t end) const { return scm::ClockGenerator("clock", c.timing.pixel_clock_hz, 0, 0, end); }
+  template <class T>
+  scm::FifoChannel<T> fifo(const char* name) const {
+    return scm::FifoChannel<T>(name, c.timed.fifo_depth);
+  }
 };
 
 template <class In, class Out>
@@ -94,12 +100,12 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   using Out = typename Module::Output;
   sc_set_time_resolution(1, SC_PS);
   sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
-  scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, cycles);
+  scm::ClockGenerator gen = w.clock(cycles);
   const int64_t host_cycles = dp::clock_cycle_at_or_after(dp::clock_cycle_to_ps(cycles, w.c.timing.pixel_clock_hz),
                                                           w.c.timed.host_clock_hz);
   scm::ClockGenerator host_gen("host_clock", w.c.timed.host_clock_hz, 0, 0, host_cycles);
-  scm::FifoChannel<In> in_fifo("stimulus_fifo", w.c.timed.fifo_depth);
-  scm::FifoChannel<Out> out_fifo("response_fifo", w.c.timed.fifo_depth);
+  scm::FifoChannel<In> in_fifo = w.fifo<In>("stimulus_fifo");
+  scm::FifoChannel<Out> out_fifo = w.fifo<Out>("response_fifo");
   StimulusDriver<In> drv("driver", stimulus, 11);
   drv.phase_two_cycle = phase_two_cycle;
   drv.clk(gen);
@@ -468,8 +474,8 @@ TEST(ModuleBench, VideoTimingGenerator) {
   const dp::VideoTiming t(w.c.timing);
   const dp::PipelineSchedule sched(w.c);
   const int64_t end = t.frame_start_cycle(2) + 10;
-  scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, end);
-  scm::FifoChannel<stage::PixelSlot> out_fifo("requests", w.c.timed.fifo_depth);
+  scm::ClockGenerator gen = w.clock(end);
+  scm::FifoChannel<stage::PixelSlot> out_fifo = w.fifo<stage::PixelSlot>("requests");
   scm::VideoTimingGenerator dut("dut", w.context());
   dut.clk(gen);
   dut.output(out_fifo);
@@ -533,24 +539,17 @@ TEST(ModuleBench, HmdScanOut) {
       due.push_back(is_late ? slot : slot - 3);  // late: written at its own slot, after scan-out needed it
     }
   const int64_t end = sched.swap_cycle(1) + 1;
-  scm::ClockGenerator gen("clock", w.c.timing.pixel_clock_hz, 0, 0, end);
-  scm::FifoChannel<stage::ColorToken> in_fifo("colors", w.c.timed.fifo_depth);
+  scm::ClockGenerator gen = w.clock(end);
+  scm::FifoChannel<stage::ColorToken> in_fifo = w.fifo<stage::ColorToken>("colors");
   scm::HmdScanOut dut("dut", w.context());
   dut.clk(gen);
   dut.input(in_fifo);
   // A driver writing each token at its due clock.
-  struct TimedDriver : sc_module {
-    sc_port<scm::ClockIf> clk;
-    SC_HAS_PROCESS(TimedDriver);
+  struct TimedDriver : ClockedBenchModule {
     TimedDriver(sc_module_name n, scm::FifoChannel<stage::ColorToken>& f, const std::vector<stage::ColorToken>& tk,
                 const std::vector<int64_t>& d)
-        : sc_module(n), fifo(f), tokens(tk), due(d) {
-      SC_METHOD(tick);
-      sensitive << clk;
-      dont_initialize();
-    }
-    void tick() {
-      const int64_t cycle = clk->cycle();
+        : ClockedBenchModule(n), fifo(f), tokens(tk), due(d) {}
+    void on_clock(int64_t cycle) override {
       if (next < tokens.size() && due[next] <= cycle && fifo.can_write()) fifo.write(tokens[next++], cycle);
     }
     scm::FifoChannel<stage::ColorToken>& fifo;

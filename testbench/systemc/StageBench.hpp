@@ -17,27 +17,39 @@
 
 namespace arp::bench {
 
-template <class T>
-class StimulusDriver : public sc_core::sc_module {
+// A bench module that acts at each rising edge of the pixel clock: a clock
+// port and one method process calling on_clock(the cycle).
+class ClockedBenchModule : public sc_core::sc_module {
  public:
   sc_core::sc_port<scm::ClockIf> clk;
-  sc_core::sc_port<scm::FifoWriteIf<T>> stimulus_out;
 
-  SC_HAS_PROCESS(StimulusDriver);
-  StimulusDriver(sc_core::sc_module_name n, std::vector<T> items, uint32_t seed)
-      : sc_module(n), clk("clk"), stimulus_out("stimulus_out"), items_(std::move(items)), rng_(seed) {
-    SC_METHOD(on_clock);
+ protected:
+  SC_HAS_PROCESS(ClockedBenchModule);
+  explicit ClockedBenchModule(sc_core::sc_module_name n) : sc_module(n), clk("clk") {
+    SC_METHOD(tick);
     sensitive << clk;
     dont_initialize();
   }
+  virtual void on_clock(int64_t cycle) = 0;
+
+ private:
+  void tick() { on_clock(clk->cycle()); }
+};
+
+template <class T>
+class StimulusDriver : public ClockedBenchModule {
+ public:
+  sc_core::sc_port<scm::FifoWriteIf<T>> stimulus_out;
+
+  StimulusDriver(sc_core::sc_module_name n, std::vector<T> items, uint32_t seed)
+      : ClockedBenchModule(n), stimulus_out("stimulus_out"), items_(std::move(items)), rng_(seed) {}
   std::vector<int64_t> write_cycle;  // per item
   size_t phase_one() const { return items_.size() / 2; }
   int64_t start_cycle = 0;           // nothing is driven before this cycle
   int64_t phase_two_cycle = 0;       // nor the second half before this one
 
  private:
-  void on_clock() {
-    const int64_t cycle = clk->cycle();
+  void on_clock(int64_t cycle) override {
     if (cycle < start_cycle || next_ >= items_.size()) return;
     if (next_ >= phase_one() && cycle < phase_two_cycle) return;
     if (next_ >= phase_one() && std::bernoulli_distribution(0.3)(rng_)) return;  // a gap
@@ -51,28 +63,22 @@ class StimulusDriver : public sc_core::sc_module {
 };
 
 template <class T>
-class ResponseMonitor : public sc_core::sc_module {
+class ResponseMonitor : public ClockedBenchModule {
  public:
-  sc_core::sc_port<scm::ClockIf> clk;
   sc_core::sc_port<scm::FifoReadIf<T>> response_in;
 
-  SC_HAS_PROCESS(ResponseMonitor);
   ResponseMonitor(sc_core::sc_module_name n, size_t phase_one, uint32_t seed)
-      : sc_module(n), clk("clk"), response_in("response_in"), phase_one_(phase_one), rng_(seed) {
-    SC_METHOD(on_clock);
-    sensitive << clk;
-    dont_initialize();
-  }
+      : ClockedBenchModule(n), response_in("response_in"), phase_one_(phase_one), rng_(seed) {}
   std::vector<T> got;
   std::vector<int64_t> read_cycle;
 
  private:
-  void on_clock() {
+  void on_clock(int64_t cycle) override {
     if (!response_in->can_read()) return;
     if (got.size() >= phase_one_ && std::bernoulli_distribution(0.3)(rng_)) return;  // backpressure
     got.push_back(response_in->front());
-    read_cycle.push_back(clk->cycle());
-    response_in->read(clk->cycle());
+    read_cycle.push_back(cycle);
+    response_in->read(cycle);
   }
   size_t phase_one_;
   std::mt19937 rng_;
