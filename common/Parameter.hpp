@@ -87,21 +87,22 @@ struct Parameter {
 template <class Root>
 class ParameterTable {
  public:
-  template <class Ref>
-  ParameterTable& integer(std::string key, Ref ref, int64_t lo, int64_t hi, std::string unit, std::string doc) {
-    return add(bounded(scalar<int64_t>(std::move(key), ParamType::Integer, ref, std::move(unit), std::move(doc)), lo, hi));
-  }
-  template <class Ref>
-  ParameterTable& real(std::string key, Ref ref, double lo, double hi, std::string unit, std::string doc) {
-    return add(bounded(scalar<double>(std::move(key), ParamType::Real, ref, std::move(unit), std::move(doc)), lo, hi));
-  }
-  template <class Ref>
-  ParameterTable& integer_array(std::string key, Ref ref, int64_t lo, int64_t hi, std::string unit, std::string doc) {
-    return add(bounded(array<int64_t>(std::move(key), ParamType::IntegerArray, ref, std::move(unit), std::move(doc)), lo, hi));
-  }
-  template <class Ref>
-  ParameterTable& real_array(std::string key, Ref ref, double lo, double hi, std::string unit, std::string doc) {
-    return add(bounded(array<double>(std::move(key), ParamType::RealArray, ref, std::move(unit), std::move(doc)), lo, hi));
+  // A number, or a std::array of numbers, each in [lo, hi]; its type comes
+  // from the field: integer (read and written as int64_t) when the field is
+  // integral, real (double) otherwise.
+  template <class Ref, class Lo, class Hi>
+  ParameterTable& number(std::string key, Ref ref, Lo lo, Hi hi, std::string unit, std::string doc) {
+    using Field = std::remove_reference_t<decltype(ref(std::declval<Root&>()))>;
+    if constexpr (std::is_arithmetic_v<Field>) {
+      using V = std::conditional_t<std::is_integral_v<Field>, int64_t, double>;
+      const ParamType t = std::is_integral_v<Field> ? ParamType::Integer : ParamType::Real;
+      return add(bounded(scalar<V>(std::move(key), t, ref, std::move(unit), std::move(doc)), static_cast<V>(lo), static_cast<V>(hi)));
+    } else {
+      using Element = std::remove_const_t<typename Field::value_type>;
+      using V = std::conditional_t<std::is_integral_v<Element>, int64_t, double>;
+      const ParamType t = std::is_integral_v<Element> ? ParamType::IntegerArray : ParamType::RealArray;
+      return add(bounded(array<V>(std::move(key), t, ref, std::move(unit), std::move(doc)), static_cast<V>(lo), static_cast<V>(hi)));
+    }
   }
   template <class E, class Ref>
   ParameterTable& choice(std::string key, Ref ref, const EnumNames<E>& names, std::string doc) {

@@ -35,124 +35,124 @@ namespace {
 void add_stage_timing(ParameterTable<ArpConfig>& t, Stage s, const char* what) {
   const size_t i = static_cast<size_t>(s);
   const std::string k = std::string("timed.") + stage_key(s);
-  t.integer(k + "_latency", [i](auto& c) -> auto& { return c.timed.stage[i].latency_cycles; }, 1, 64, "clocks",
-            std::string(what) + ": pixel clocks from taking a pixel to the next stage seeing it (its register stages, "
+  t.number(k + "_latency", [i](auto& c) -> auto& { return c.timed.stage[i].latency_cycles; }, 1, 64, "clocks",
+           std::string(what) + ": pixel clocks from taking a pixel to the next stage seeing it (its register stages, "
                                 "including the output FIFO's register)");
-  t.integer(k + "_logic_ps", [i](auto& c) -> auto& { return c.timed.stage[i].logic_delay_ps; }, 0, 1'000'000'000, "ps",
-            std::string(what) + ": combinational delay of its arithmetic; divided over its register stages it must fit "
+  t.number(k + "_logic_ps", [i](auto& c) -> auto& { return c.timed.stage[i].logic_delay_ps; }, 0, 1'000'000'000, "ps",
+           std::string(what) + ": combinational delay of its arithmetic; divided over its register stages it must fit "
                                 "one pixel clock period");
 }
 
 ParameterTable<ArpConfig> make_parameters() {
   ParameterTable<ArpConfig> t;
   // display: video timing (VideoTiming)
-  t.integer("display.eyes", [](auto& c) -> auto& { return c.timing.eyes; }, 1, 2, "",
-            "2 = stereo (one lens table and one set of display memories per eye), 1 = mono");
+  t.number("display.eyes", [](auto& c) -> auto& { return c.timing.eyes; }, 1, 2, "",
+           "2 = stereo (one lens table and one set of display memories per eye), 1 = mono");
   t.choice("display.eye_scan", [](auto& c) -> auto& { return c.timing.eye_scan; }, eye_scan_names(),
            "lockstep: both eyes' panels scanned simultaneously (same cycle for the same pixel); side_by_side: one "
            "panel, each line scans the left eye's pixels then the right eye's");
-  t.integer("display.h_active", [](auto& c) -> auto& { return c.timing.h_active; }, 1, 8192, "px",
-            "active pixels per line, per eye");
-  t.integer("display.h_front_porch", [](auto& c) -> auto& { return c.timing.h_front_porch; }, 0, 8192, "clocks",
-            "horizontal blanking after the active pixels");
-  t.integer("display.h_sync", [](auto& c) -> auto& { return c.timing.h_sync; }, 0, 8192, "clocks", "horizontal sync");
-  t.integer("display.h_back_porch", [](auto& c) -> auto& { return c.timing.h_back_porch; }, 0, 8192, "clocks",
-            "horizontal back porch; total line = active + porches + sync (800 by default)");
-  t.integer("display.v_active", [](auto& c) -> auto& { return c.timing.v_active; }, 1, 8192, "lines", "active lines per eye");
-  t.integer("display.v_front_porch", [](auto& c) -> auto& { return c.timing.v_front_porch; }, 0, 8192, "lines",
-            "vertical blanking after the active lines");
-  t.integer("display.v_sync", [](auto& c) -> auto& { return c.timing.v_sync; }, 0, 8192, "lines", "vertical sync");
-  t.integer("display.v_back_porch", [](auto& c) -> auto& { return c.timing.v_back_porch; }, 0, 8192, "lines",
-            "vertical back porch; total frame = active + porches + sync (525 lines by default)");
-  t.integer("display.pixel_clock_hz", [](auto& c) -> auto& { return c.timing.pixel_clock_hz; }, 1000, 100'000'000'000,
-            "Hz", "pixel clock; 25.175 MHz / (800 x 525) = 59.94 Hz");
-  t.integer("display.fields_per_frame", [](auto& c) -> auto& { return c.timing.fields_per_frame; }, 1, 2, "",
-            "1 progressive; 2 interlaced: even lines in field 0, odd lines in field 1, each field half a frame (the "
-            "frame's clock count must be even)");
+  t.number("display.h_active", [](auto& c) -> auto& { return c.timing.h_active; }, 1, 8192, "px",
+           "active pixels per line, per eye");
+  t.number("display.h_front_porch", [](auto& c) -> auto& { return c.timing.h_front_porch; }, 0, 8192, "clocks",
+           "horizontal blanking after the active pixels");
+  t.number("display.h_sync", [](auto& c) -> auto& { return c.timing.h_sync; }, 0, 8192, "clocks", "horizontal sync");
+  t.number("display.h_back_porch", [](auto& c) -> auto& { return c.timing.h_back_porch; }, 0, 8192, "clocks",
+           "horizontal back porch; total line = active + porches + sync (800 by default)");
+  t.number("display.v_active", [](auto& c) -> auto& { return c.timing.v_active; }, 1, 8192, "lines", "active lines per eye");
+  t.number("display.v_front_porch", [](auto& c) -> auto& { return c.timing.v_front_porch; }, 0, 8192, "lines",
+           "vertical blanking after the active lines");
+  t.number("display.v_sync", [](auto& c) -> auto& { return c.timing.v_sync; }, 0, 8192, "lines", "vertical sync");
+  t.number("display.v_back_porch", [](auto& c) -> auto& { return c.timing.v_back_porch; }, 0, 8192, "lines",
+           "vertical back porch; total frame = active + porches + sync (525 lines by default)");
+  t.number("display.pixel_clock_hz", [](auto& c) -> auto& { return c.timing.pixel_clock_hz; }, 1000, 100'000'000'000,
+           "Hz", "pixel clock; 25.175 MHz / (800 x 525) = 59.94 Hz");
+  t.number("display.fields_per_frame", [](auto& c) -> auto& { return c.timing.fields_per_frame; }, 1, 2, "",
+           "1 progressive; 2 interlaced: even lines in field 0, odd lines in field 1, each field half a frame (the "
+           "frame's clock count must be even)");
   // lens: lens vector table (LensVectorTable)
-  t.real("lens.fov_deg", [](auto& c) -> auto& { return c.lens.fov_deg; }, 0.001, 179.999, "deg",
-         "horizontal field of view of one eye's undistorted mapping");
-  t.real_array("lens.k", [](auto& c) -> auto& { return c.lens.k; }, -100, 100, "",
-               "radial distortion polynomial scale(r) = k0 + k1 r^2 + k2 r^4 + k3 r^6, r in half-widths from the lens "
-               "centre; the scale must stay positive over the panel ([1, 0.22, 0.24, 0] is DK1-like)");
-  t.real("lens.center_offset_px", [](auto& c) -> auto& { return c.lens.center_offset_px; }, -4096, 4096, "px",
-         "lens centre moved toward the nose (left eye right, right eye left); less than half of display.h_active in "
-         "magnitude");
+  t.number("lens.fov_deg", [](auto& c) -> auto& { return c.lens.fov_deg; }, 0.001, 179.999, "deg",
+           "horizontal field of view of one eye's undistorted mapping");
+  t.number("lens.k", [](auto& c) -> auto& { return c.lens.k; }, -100, 100, "",
+           "radial distortion polynomial scale(r) = k0 + k1 r^2 + k2 r^4 + k3 r^6, r in half-widths from the lens "
+           "centre; the scale must stay positive over the panel ([1, 0.22, 0.24, 0] is DK1-like)");
+  t.number("lens.center_offset_px", [](auto& c) -> auto& { return c.lens.center_offset_px; }, -4096, 4096, "px",
+           "lens centre moved toward the nose (left eye right, right eye left); less than half of display.h_active in "
+           "magnitude");
   // datapath: widths, rounding and division
-  t.integer("datapath.vec_frac", [](auto& c) -> auto& { return c.widths.vec_frac; }, 1, 28, "bits",
-            "lens vectors: signed Q1.vec_frac (vec_frac + 2 bits)");
-  t.integer("datapath.mat_frac", [](auto& c) -> auto& { return c.widths.mat_frac; }, 1, 28, "bits",
-            "orientation matrix entries: signed Q1.mat_frac, saturating");
-  t.integer("datapath.rot_frac", [](auto& c) -> auto& { return c.widths.rot_frac; }, 1, 28, "bits",
-            "rotated vector: signed Q1.rot_frac, saturating");
+  t.number("datapath.vec_frac", [](auto& c) -> auto& { return c.widths.vec_frac; }, 1, 28, "bits",
+           "lens vectors: signed Q1.vec_frac (vec_frac + 2 bits)");
+  t.number("datapath.mat_frac", [](auto& c) -> auto& { return c.widths.mat_frac; }, 1, 28, "bits",
+           "orientation matrix entries: signed Q1.mat_frac, saturating");
+  t.number("datapath.rot_frac", [](auto& c) -> auto& { return c.widths.rot_frac; }, 1, 28, "bits",
+           "rotated vector: signed Q1.rot_frac, saturating");
   t.choice("datapath.rot_rounding", [](auto& c) -> auto& { return c.widths.rot_rounding; }, rounding_names(),
            "rounding of the matrix x vector products to rot_frac");
   t.choice("datapath.divider", [](auto& c) -> auto& { return c.widths.divider; }, divider_names(),
            "division by the major component: reciprocal unit (leading-one normaliser, table, Newton-Raphson, one "
            "multiply per quotient) or an exact divider");
-  t.integer("datapath.recip_index_bits", [](auto& c) -> auto& { return c.widths.recip_index_bits; }, 1, 16, "bits",
-            "the reciprocal table has 2^bits entries, indexed by the mantissa bits below the leading one");
-  t.integer("datapath.recip_frac_bits", [](auto& c) -> auto& { return c.widths.recip_frac_bits; }, 4, 30, "bits",
-            "reciprocal table entries and refined reciprocal: unsigned Q1.recip_frac");
-  t.integer("datapath.newton_steps", [](auto& c) -> auto& { return c.widths.newton_steps; }, 0, 4, "",
-            "Newton-Raphson refinements y <- y(2 - m y) after the table");
-  t.integer("datapath.quot_frac", [](auto& c) -> auto& { return c.widths.quot_frac; }, 2, 30, "bits",
-            "face coordinate sc/|ma|: signed Q1.quot_frac, clamped to +-1");
+  t.number("datapath.recip_index_bits", [](auto& c) -> auto& { return c.widths.recip_index_bits; }, 1, 16, "bits",
+           "the reciprocal table has 2^bits entries, indexed by the mantissa bits below the leading one");
+  t.number("datapath.recip_frac_bits", [](auto& c) -> auto& { return c.widths.recip_frac_bits; }, 4, 30, "bits",
+           "reciprocal table entries and refined reciprocal: unsigned Q1.recip_frac");
+  t.number("datapath.newton_steps", [](auto& c) -> auto& { return c.widths.newton_steps; }, 0, 4, "",
+           "Newton-Raphson refinements y <- y(2 - m y) after the table");
+  t.number("datapath.quot_frac", [](auto& c) -> auto& { return c.widths.quot_frac; }, 2, 30, "bits",
+           "face coordinate sc/|ma|: signed Q1.quot_frac, clamped to +-1");
   t.choice("datapath.div_rounding", [](auto& c) -> auto& { return c.widths.div_rounding; }, rounding_names(),
            "rounding in the reciprocal unit and of the quotients");
-  t.integer("datapath.texel_frac", [](auto& c) -> auto& { return c.widths.texel_frac; }, 0, 16, "bits",
-            "sub-texel bits of the texel-space position: the bilinear weights (at least 1 with bilinear)");
+  t.number("datapath.texel_frac", [](auto& c) -> auto& { return c.widths.texel_frac; }, 0, 16, "bits",
+           "sub-texel bits of the texel-space position: the bilinear weights (at least 1 with bilinear)");
   t.choice("datapath.texel_rounding", [](auto& c) -> auto& { return c.widths.texel_rounding; }, rounding_names(),
            "rounding of (q + 1)/2 x S to texel_frac bits");
   // memory: display memories (DisplayMemoryBank)
-  t.integer("memory.count", [](auto& c) -> auto& { return c.memory.count; }, 1, 16, "",
-            "display memories per eye (memory 0 is the most often updated and wins depth ties)");
-  t.integer("memory.face_size", [](auto& c) -> auto& { return c.memory.face_size; }, 1, 16384, "texels",
-            "S: each cube face is S x S texels");
-  t.integer("memory.red_bits", [](auto& c) -> auto& { return c.memory.red_bits; }, 1, 16, "bits",
-            "red channel width (red + green + blue at most 32)");
-  t.integer("memory.green_bits", [](auto& c) -> auto& { return c.memory.green_bits; }, 1, 16, "bits", "green channel width");
-  t.integer("memory.blue_bits", [](auto& c) -> auto& { return c.memory.blue_bits; }, 1, 16, "bits", "blue channel width");
-  t.integer("memory.depth_bits", [](auto& c) -> auto& { return c.memory.depth_bits; }, 2, 32, "bits",
-            "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
-  t.integer_array("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
-                  "colour shown where every memory is empty");
-  t.integer("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
-            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
-  t.integer("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
-            "each next memory is updated this many times less often (Regan & Pose: 2, harmonic rates)");
+  t.number("memory.count", [](auto& c) -> auto& { return c.memory.count; }, 1, 16, "",
+           "display memories per eye (memory 0 is the most often updated and wins depth ties)");
+  t.number("memory.face_size", [](auto& c) -> auto& { return c.memory.face_size; }, 1, 16384, "texels",
+           "S: each cube face is S x S texels");
+  t.number("memory.red_bits", [](auto& c) -> auto& { return c.memory.red_bits; }, 1, 16, "bits",
+           "red channel width (red + green + blue at most 32)");
+  t.number("memory.green_bits", [](auto& c) -> auto& { return c.memory.green_bits; }, 1, 16, "bits", "green channel width");
+  t.number("memory.blue_bits", [](auto& c) -> auto& { return c.memory.blue_bits; }, 1, 16, "bits", "blue channel width");
+  t.number("memory.depth_bits", [](auto& c) -> auto& { return c.memory.depth_bits; }, 2, 32, "bits",
+           "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
+  t.number("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
+           "colour shown where every memory is empty");
+  t.number("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
+           "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
+  t.number("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
+           "each next memory is updated this many times less often (Regan & Pose: 2, harmonic rates)");
   // pipeline: latch, filtering and scan-out
   t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
            "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "
            "for every pixel");
-  t.integer("pipeline.latch_lead_cycles", [](auto& c) -> auto& { return c.pipeline.latch_lead_cycles; }, 0,
-            1'000'000'000, "clocks",
-            "extra lead: the register is sampled this many pixel clocks before the latch-point pixel enters the "
-            "orientation matrix unit (the total lead adds the unit's distance to scan-out, 14 clocks by default)");
+  t.number("pipeline.latch_lead_cycles", [](auto& c) -> auto& { return c.pipeline.latch_lead_cycles; }, 0,
+           1'000'000'000, "clocks",
+           "extra lead: the register is sampled this many pixel clocks before the latch-point pixel enters the "
+           "orientation matrix unit (the total lead adds the unit's distance to scan-out, 14 clocks by default)");
   t.choice("pipeline.aa", [](auto& c) -> auto& { return c.pipeline.aa; }, aa_names(),
            "anti-aliasing: nearest texel, or bilinear over four taps each composited first");
-  t.integer("pipeline.display_bits", [](auto& c) -> auto& { return c.pipeline.display_bits; }, 1, 10, "bits",
-            "bits per channel at the HMD; memory colour is rescaled with rounding");
-  t.integer("pipeline.photon_delay_ps", [](auto& c) -> auto& { return c.pipeline.photon_delay_ps; }, 0,
-            1'000'000'000'000, "ps", "panel response: photon time = scan-out time + this");
+  t.number("pipeline.display_bits", [](auto& c) -> auto& { return c.pipeline.display_bits; }, 1, 10, "bits",
+           "bits per channel at the HMD; memory colour is rescaled with rounding");
+  t.number("pipeline.photon_delay_ps", [](auto& c) -> auto& { return c.pipeline.photon_delay_ps; }, 0,
+           1'000'000'000'000, "ps", "panel response: photon time = scan-out time + this");
   // timed: hardware timing of the cycle models, two keys per stage in data-flow order
   static const char* const what[kStageCount] = {
       "lens vector table",         "orientation matrix unit", "cube-face address generator", "display memory read",
       "composition unit",          "anti-aliasing filter",    "HMD scan-out (the pixel is taken this many clocks before its slot)"};
   for (int s = 0; s < kStageCount; ++s) add_stage_timing(t, static_cast<Stage>(s), what[s]);
-  t.integer("timed.fifo_depth", [](auto& c) -> auto& { return c.timed.fifo_depth; }, 1, 4096, "tokens",
-            "tokens each inter-stage FIFO holds; at least issue_slack_cycles + 2 (the scan-out FIFO holds slack + 1 "
-            "and has no bypass)");
-  t.integer("timed.issue_slack_cycles", [](auto& c) -> auto& { return c.timed.issue_slack_cycles; }, 0, 4096, "clocks",
-            "the timing generator issues each pixel this much earlier than the latencies need; the slack waits in the "
-            "scan-out FIFO and absorbs stalls");
-  t.integer("timed.host_clock_hz", [](auto& c) -> auto& { return c.timed.host_clock_hz; }, 1000, 100'000'000'000, "Hz",
-            "clock of the host's write port into display memory");
-  t.integer("timed.host_texels_per_cycle", [](auto& c) -> auto& { return c.timed.host_texels_per_cycle; }, 1, 1 << 20,
-            "texels", "texels the write port stores per host clock (its bandwidth)");
+  t.number("timed.fifo_depth", [](auto& c) -> auto& { return c.timed.fifo_depth; }, 1, 4096, "tokens",
+           "tokens each inter-stage FIFO holds; at least issue_slack_cycles + 2 (the scan-out FIFO holds slack + 1 "
+           "and has no bypass)");
+  t.number("timed.issue_slack_cycles", [](auto& c) -> auto& { return c.timed.issue_slack_cycles; }, 0, 4096, "clocks",
+           "the timing generator issues each pixel this much earlier than the latencies need; the slack waits in the "
+           "scan-out FIFO and absorbs stalls");
+  t.number("timed.host_clock_hz", [](auto& c) -> auto& { return c.timed.host_clock_hz; }, 1000, 100'000'000'000, "Hz",
+           "clock of the host's write port into display memory");
+  t.number("timed.host_texels_per_cycle", [](auto& c) -> auto& { return c.timed.host_texels_per_cycle; }, 1, 1 << 20,
+           "texels", "texels the write port stores per host clock (its bandwidth)");
   // plan: what `arpsim plan` records (sim/Planner)
-  t.integer("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
-            "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");
+  t.number("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
+           "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");
   return t;
 }
 
