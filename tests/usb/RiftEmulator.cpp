@@ -465,130 +465,104 @@ RiftEmulator::~RiftEmulator() {
   release_testbed();
 }
 
+// fn(State&) under the state's lock: the ioctl handler works on it on umockdev's thread.
+template <class F>
+auto RiftEmulator::locked(F&& fn) const {
+  std::lock_guard<std::mutex> lock(s_->mu);
+  return fn(*s_);
+}
+
 void RiftEmulator::jump_counter(int64_t ticks) {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->counter_shift += static_cast<uint64_t>(ticks);
+  locked([&](State& s) { s.counter_shift += static_cast<uint64_t>(ticks); });
 }
-
 void RiftEmulator::delay_delivery(int64_t ms) {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->deliver_from_ps = s_->now_ps() + ms * 1'000'000'000;
+  locked([&](State& s) { s.deliver_from_ps = s.now_ps() + ms * 1'000'000'000; });
 }
-
 void RiftEmulator::drive_by(const ManualClock& clock) {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->clock = &clock;
+  locked([&](State& s) { s.clock = &clock; });
 }
-
 bool RiftEmulator::host_drained() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->drained;
+  return locked([](const State& s) { return s.drained; });
 }
-
 int64_t RiftEmulator::reports_due() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->due(s_->now_ps());
+  return locked([](const State& s) { return s.due(s.now_ps()); });
 }
-
 void RiftEmulator::unplug() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->connected = false;
-  s_->claimed = false;
+  locked([](State& s) { s.connected = s.claimed = false; });
 }
-
 void RiftEmulator::replug() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->connected = true;
-  s_->detached = false;  // the kernel binds usbhid again
-  s_->streaming = false;  // until the next keep-alive
-  s_->withholding_new = false;
+  locked([](State& s) {
+    s.connected = true;
+    s.detached = false;         // the kernel binds usbhid again
+    s.streaming = false;        // until the next keep-alive
+    s.withholding_new = false;
+  });
 }
-
 void RiftEmulator::inject_malformed_report(int n) {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->cut_remaining += n;
+  locked([&](State& s) { s.cut_remaining += n; });
 }
-
 void RiftEmulator::set_report_length(size_t bytes) {
   if (bytes > tracker::kRiftReportSize) throw std::invalid_argument("a Rift report is at most 64 bytes");
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->report_length = bytes;
+  locked([&](State& s) { s.report_length = bytes; });
 }
-
 void RiftEmulator::inject_sample_count(int count) {
   if (count < 1 || count > 255) throw std::invalid_argument("a sample count is 1..255");
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->claimed_count_next = count;
+  locked([&](State& s) { s.claimed_count_next = count; });
 }
-
 void RiftEmulator::withhold_transfers() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  for (auto& u : s_->interrupts) u.withheld = true;
-  s_->withholding_new = true;
+  locked([](State& s) {
+    for (auto& u : s.interrupts) u.withheld = true;
+    s.withholding_new = true;
+  });
 }
-
 void RiftEmulator::give_back() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  for (auto it = s_->interrupts.begin(); it != s_->interrupts.end();) {
-    if (!it->withheld) {
-      ++it;
-      continue;
+  locked([](State& s) {
+    for (auto it = s.interrupts.begin(); it != s.interrupts.end();) {
+      if (!it->withheld) {
+        ++it;
+        continue;
+      }
+      Urb u = *it;
+      it = s.interrupts.erase(it);
+      u.withheld = false;
+      u.status = -ENOENT;  // cancelled
+      s.done.push_back(u);
     }
-    Urb u = *it;
-    it = s_->interrupts.erase(it);
-    u.withheld = false;
-    u.status = -ENOENT;  // cancelled
-    s_->done.push_back(u);
-  }
+  });
 }
-
 void RiftEmulator::fail_transfers(int n, int error) {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->fail_remaining = n;
-  s_->fail_error = error;
+  locked([&](State& s) {
+    s.fail_remaining = n;
+    s.fail_error = error;
+  });
 }
-
 void RiftEmulator::stall() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->halted = true;
+  locked([](State& s) { s.halted = true; });
 }
-
 void RiftEmulator::hold_interface_elsewhere() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  s_->claimed_elsewhere = true;
-  s_->detached = true;  // the other program took it from usbhid
+  locked([](State& s) { s.claimed_elsewhere = s.detached = true; });  // the other program took it from usbhid
 }
-
 int64_t RiftEmulator::clear_halts() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->clear_halt_count;
+  return locked([](const State& s) { return s.clear_halt_count; });
 }
-
 void RiftEmulator::restart_counter() {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  if (s_->sent >= static_cast<int64_t>(s_->reports.size())) return;
-  // The next report's timestamp becomes 0.
-  s_->counter_shift = (~s_->timestamp_of(s_->reports[static_cast<size_t>(s_->sent)])) + 1;
+  locked([](State& s) {
+    if (s.sent >= static_cast<int64_t>(s.reports.size())) return;
+    // The next report's timestamp becomes 0.
+    s.counter_shift = (~s.timestamp_of(s.reports[static_cast<size_t>(s.sent)])) + 1;
+  });
 }
-
 std::vector<std::vector<uint8_t>> RiftEmulator::feature_reports() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->features;
+  return locked([](const State& s) { return s.features; });
 }
-
 int64_t RiftEmulator::reports_sent() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->sent;
+  return locked([](const State& s) { return s.sent; });
 }
-
 bool RiftEmulator::kernel_driver_detached() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->detached;
+  return locked([](const State& s) { return s.detached; });
 }
-
 bool RiftEmulator::interface_claimed() const {
-  std::lock_guard<std::mutex> lock(s_->mu);
-  return s_->claimed;
+  return locked([](const State& s) { return s.claimed; });
 }
 
 }  // namespace arp::test

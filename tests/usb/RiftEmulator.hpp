@@ -103,6 +103,8 @@ class RiftEmulator {
   struct State;
 
  private:
+  template <class F>
+  auto locked(F&& fn) const;
   std::unique_ptr<State> s_;
 };
 
