@@ -4,7 +4,8 @@
 # bilinear, per-scanline latch) with the head turning at 200 deg/s: the
 # `arpsim run` report's own figure (time inside the simulation only, set-up
 # excluded), best of RUNS tries -- on a shared machine a neighbour only ever
-# slows a run down. With VCD on, every signal of the whole run is traced.
+# slows a run down. With VCD on, the whole run is traced: every signal
+# (--vcd-signals all), or the control signals only (control).
 # Also checks that every level produced the same frames and photon times.
 # The verilated level needs a build with Verilator (scripts/setup.sh).
 # Usage: bench/timed-speed.sh [CSV]   (env: FRAMES, VCD_FRAMES, RUNS, ARPSIM)
@@ -30,21 +31,24 @@ speed() {  # level frames extra-args... -> best pixel clocks/s; leaves the repor
 }
 fingerprint() { grep -o '"p[a-z]*_hash": *"[0-9a-f]*"' "$tmp/last.json" | tr '\n' ' '; }
 echo "level,vcd,frames,pixel_clocks_per_s" > "$tmp/out.csv"
-printf "%-11s %-4s %-7s %s\n" level vcd frames "M pixel clocks/s"
+printf "%-11s %-8s %-7s %s\n" level vcd frames "M pixel clocks/s"
 ref=""
 for level in functional lt cycle detailed verilated; do
   s=$(speed "$level" "$FRAMES")
   fp=$(fingerprint)
   [ -z "$ref" ] && ref=$fp
   same=$([ "$fp" = "$ref" ] && echo "frames and photon times identical to functional" || echo "DIFFERENT FROM FUNCTIONAL")
-  printf "%-11s %-4s %-7s %8.2f   %s\n" "$level" off "$FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" "$same"
+  printf "%-11s %-8s %-7s %8.2f   %s\n" "$level" off "$FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" "$same"
   echo "$level,off,$FRAMES,$s" >> "$tmp/out.csv"
   [ "$fp" = "$ref" ] || exit 1
 done
 for level in lt cycle detailed; do
-  s=$(speed "$level" "$VCD_FRAMES" --vcd "$tmp/w.vcd")
-  printf "%-11s %-4s %-7s %8.2f   (VCD %s MB)\n" "$level" on "$VCD_FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" \
-    "$(( $(stat -c %s "$tmp/w.vcd") / 1000000 ))"
-  echo "$level,on,$VCD_FRAMES,$s" >> "$tmp/out.csv"
+  for signals in all control; do
+    [ "$level" = lt ] && [ "$signals" = control ] && continue  # lt traces its quantum variables only
+    s=$(speed "$level" "$VCD_FRAMES" --vcd "$tmp/w.vcd" --vcd-signals "$signals")
+    printf "%-11s %-8s %-7s %8.2f   (VCD %s MB)\n" "$level" "$signals" "$VCD_FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" \
+      "$(( $(stat -c %s "$tmp/w.vcd") / 1000000 ))"
+    echo "$level,$signals,$VCD_FRAMES,$s" >> "$tmp/out.csv"
+  done
 done
 [ -n "$CSV" ] && cp "$tmp/out.csv" "$CSV" && echo "written $CSV"

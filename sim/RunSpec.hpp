@@ -44,6 +44,7 @@ struct OutputSpec {
   bool photon_times = false;     // --photon-times
   std::string report, csv, host_csv;
   std::string vcd, vcd_lines, vcd_time_us;  // --vcd NAME, window in lines or microseconds
+  std::string vcd_signals = "all";          // --vcd-signals: all, or control (no register data fields)
   int64_t error_every = 10;      // --error-every (walks)
   std::string tear_image, tear_at;
 };

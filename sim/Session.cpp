@@ -80,6 +80,8 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
                                       " level is untimed and has no waveform; use --fidelity lt, cycle or detailed");
   if ((!o.vcd_lines.empty() || !o.vcd_time_us.empty()) && o.vcd.empty())
     throw InputError(o.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
+  if (o.vcd_signals != "all" && o.vcd_signals != "control") throw InputError("--vcd-signals", o.vcd_signals, "must be all or control");
+  if (o.vcd_signals != "all" && o.vcd.empty()) throw InputError("--vcd-signals", o.vcd_signals, "needs --vcd");
   if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
@@ -350,6 +352,7 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
   make_output_folder("--vcd", fs::path(vcd_final_).parent_path().string());
   vcd_tmp_base_ = temp_path_beside(vcd_final_).string();
   opt.vcd.path = vcd_tmp_base_;
+  opt.vcd.data = o.vcd_signals == "all";
   if (!o.vcd_lines.empty()) {
     const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);
     if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", o.vcd_lines, "lines must be whole numbers >= 0");

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "TestSupport.hpp"
@@ -139,6 +141,8 @@ TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
                      {" --fidelity rtl --set display.pixel_clock_hz=200000000", "timed.lens_latency"},
                      {" --fidelity rtl --vcd " + d.file("y.vcd") + " --vcd-lines 5:2", "--vcd-lines"},
                      {" --fidelity rtl --vcd-lines 0:2", "needs --vcd"},
+                     {" --fidelity rtl --vcd-signals control", "--vcd-signals: control: needs --vcd"},
+                     {" --fidelity rtl --vcd " + d.file("z.vcd") + " --vcd-signals data", "must be all or control"},
                      {" --fidelity lt --trace " + d.file("none.csv"), "none.csv"},
                  },
                  " --report " + d.file("r.json"), d.file("r.json"));
@@ -176,6 +180,52 @@ TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
   EXPECT_NE(bad.output.find("cycle-accurate"), std::string::npos) << bad.output;
   const auto bad2 = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity rtl --stall divider:10:5");
   EXPECT_EQ(bad2.status, 2);
+}
+
+// --vcd-signals control: the same waveform without the stages' register data
+// fields (the values of the tokens passing), at the fast and detailed levels
+// alike; everything else is still traced, and nothing simulated changes.
+TEST(TimedRunCli, ControlSignalsLeaveOutOnlyTheRegistersData) {
+  TempDir d;
+  // The data fields, by the names docs/timed-models.md gives them.
+  const std::set<std::string> data{"view_x",     "view_y",     "view_z",   "world_x", "world_y",  "world_z",
+                                   "face",       "texel_x",    "texel_y",  "word_tap0_mem0",      "weight_x",
+                                   "weight_y",   "color_tap0", "color_tap1", "color",  "x",        "y"};
+  auto vars = [](const std::string& vcd) {  // the leaf names declared
+    std::set<std::string> names;
+    std::istringstream in(read_text(vcd));
+    for (std::string l; std::getline(in, l) && l.rfind("$enddefinitions", 0) != 0;)
+      if (l.rfind("$var", 0) == 0) {
+        std::istringstream f(l);
+        std::string var, kind, width, id, name;
+        f >> var >> kind >> width >> id >> name;
+        names.insert(name);
+      }
+    return names;
+  };
+  for (const std::string level : {"cycle", "detailed"}) {
+    std::map<std::string, std::string> hashes;
+    for (const std::string signals : {"all", "control"}) {
+      const std::string w = d.file(level + "-" + signals + ".vcd"), j = d.file(level + "-" + signals + ".json");
+      const auto r = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity " + level + " --vcd " + w +
+                                 " --vcd-lines 0:40 --vcd-signals " + signals + " --report " + j);
+      ASSERT_EQ(r.status, 0) << r.output;
+      hashes[signals] = load(j)["frames"][0]["pixel_hash"].get<std::string>() + load(j)["frames"][0]["photon_hash"].get<std::string>();
+    }
+    EXPECT_EQ(hashes["all"], hashes["control"]) << level;
+    const auto all = vars(d.file(level + "-all.vcd")), control = vars(d.file(level + "-control.vcd"));
+    size_t left_out = 0;
+    for (const auto& n : all) {
+      EXPECT_EQ(control.count(n), data.count(n) ? 0u : 1u) << level << ": " << n;
+      left_out += data.count(n);
+    }
+    EXPECT_EQ(left_out, data.size()) << level;
+    for (const char* kept : {"valid_out", "ready_in", "occupancy", "h_count", "matrix_sample", "front_select", "display_rgb"})
+      EXPECT_EQ(control.count(kept), 1u) << level << ": " << kept;
+    EXPECT_LT(std::filesystem::file_size(d.file(level + "-control.vcd")) * 2,
+              std::filesystem::file_size(d.file(level + "-all.vcd")))
+        << level;
+  }
 }
 
 // Each module bench writes its waveform on request, and the view committed

@@ -45,6 +45,10 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
   cmd->add_option("--vcd", o.vcd, "VCD waveform (lt, cycle, detailed); a bare name goes into waveforms/; a .gtkw is written beside it");
   cmd->add_option("--vcd-lines", o.vcd_lines, "Trace only scanlines START:END counted from the first frame's start");
   cmd->add_option("--vcd-time-us", o.vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
+  cmd->add_option("--vcd-signals", o.vcd_signals,
+                  "all, or control: without each stage's register data (clocks, handshakes, FIFOs, scan position, host "
+                  "port and orientation register only; a fraction of the file and of the time)")
+      ->capture_default_str();
   cmd->add_option("--error-every", o.error_every,
                   "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
       ->capture_default_str();

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
@@ -95,15 +96,60 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
   }
 }
 
-// What a waveform shows of a token leaving a stage (first eye): up to three
-// values, named by probe_names().
-inline void probe(const LensToken& t, std::array<int64_t, 3>& o) { o = {t.view[0].x, t.view[0].y, t.view[0].z}; }
-inline void probe(const RotatedToken& t, std::array<int64_t, 3>& o) { o = {t.world[0].x, t.world[0].y, t.world[0].z}; }
-inline void probe(const AddressToken& t, std::array<int64_t, 3>& o) { o = {t.address[0].face, t.address[0].x, t.address[0].y}; }
-inline void probe(const FetchToken& t, std::array<int64_t, 3>& o) {
-  o = {static_cast<int64_t>(t.words[0][0][0]), t.wx[0], t.wy[0]};
+// What a waveform shows of a token leaving a stage (first eye): three values,
+// named by the stage's StageInfo probes, f(value) for each in order.
+template <class F>
+void for_each_probe_field(const LensToken& t, F&& f) {
+  f(t.view[0].x), f(t.view[0].y), f(t.view[0].z);
 }
-inline void probe(const ComposedToken& t, std::array<int64_t, 3>& o) { o = {t.tap_color[0][0], t.tap_color[0][1], t.wx[0]}; }
-inline void probe(const ColorToken& t, std::array<int64_t, 3>& o) { o = {t.color[0], t.slot.x, t.slot.y}; }
+template <class F>
+void for_each_probe_field(const RotatedToken& t, F&& f) {
+  f(t.world[0].x), f(t.world[0].y), f(t.world[0].z);
+}
+template <class F>
+void for_each_probe_field(const AddressToken& t, F&& f) {
+  f(t.address[0].face), f(t.address[0].x), f(t.address[0].y);
+}
+template <class F>
+void for_each_probe_field(const FetchToken& t, F&& f) {
+  f(t.words[0][0][0]), f(t.wx[0]), f(t.wy[0]);
+}
+template <class F>
+void for_each_probe_field(const ComposedToken& t, F&& f) {
+  f(t.tap_color[0][0]), f(t.tap_color[0][1]), f(t.wx[0]);
+}
+template <class F>
+void for_each_probe_field(const ColorToken& t, F&& f) {
+  f(t.color[0]), f(t.slot.x), f(t.slot.y);
+}
+
+// The probe values of a token, as the waveform's 64-bit variables hold them.
+template <class Token>
+void probe(const Token& t, std::array<int64_t, 3>& o) {
+  size_t i = 0;
+  for_each_probe_field(t, [&](auto v) { o[i++] = static_cast<int64_t>(v); });
+}
+// How a waveform shows a probe: its field's own width and signedness (the
+// 64-bit variable holding it is traced as that).
+struct ProbeFormat {
+  int bits = 64;
+  bool is_signed = true;
+};
+template <class Token>
+std::array<ProbeFormat, 3> probe_formats() {
+  std::array<ProbeFormat, 3> f{};
+  size_t i = 0;
+  for_each_probe_field(Token{}, [&](auto v) {
+    using T = decltype(v);
+    f[i++] = {static_cast<int>(8 * sizeof(T)), std::is_signed_v<T>};
+  });
+  return f;
+}
+
+// A register's data field for a waveform: its 64-bit variable and format.
+struct NarrowProbe {
+  const int64_t& value;
+  ProbeFormat format;
+};
 
 }  // namespace arp::stage

@@ -46,7 +46,8 @@ class RegisteredStage {
   void for_each_probe(Fn&& fn) const {
     fn("ready_in", pipe_.ready_in);
     fn("valid_out", pipe_.valid_out);
-    for (size_t i = 0; i < 3; ++i) fn(Info.probes[i], pipe_.data_out[i]);
+    static const std::array<ProbeFormat, 3> formats = probe_formats<Out>();
+    for (size_t i = 0; i < 3; ++i) fn(Info.probes[i], NarrowProbe{pipe_.data_out[i], formats[i]});
     derived().for_each_own_probe(fn);
   }
   template <class Fn>

@@ -83,14 +83,14 @@ class DetailedPipeline : public sc_core::sc_module {
   StageChain<List>& chain() { return chain_; }
 
   // Waveforms: clocks, then every module (the tracker after the timing generator), then FIFO occupancy.
-  void trace(sc_core::sc_trace_file* tf) {
+  void trace(sc_core::sc_trace_file* tf, bool data = true) {
     tracing_ = true;
     const std::string n = name();
     pixel_clock.trace(tf, n + ".pixel_clk");
     host_clock.trace(tf, n + ".host_clk");
     pixel_clock.trace_cycle(tf, n + ".pixel_cycle");
     chain_.for_each_module([&](auto& m) {
-      m.trace(tf);
+      m.trace(tf, data);
       if constexpr (std::is_same_v<std::decay_t<decltype(m)>, VideoTimingGenerator>) tracker.trace(tf);
     });
     chain_.for_each_fifo([&](const auto& f) { sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"); });

@@ -14,8 +14,8 @@ DisplayMemoryBanks::DisplayMemoryBanks(sc_module_name name, const stage::StageCo
   dont_initialize();
 }
 
-void DisplayMemoryBanks::trace(sc_trace_file* tf) {
-  StageModule::trace(tf);
+void DisplayMemoryBanks::trace(sc_trace_file* tf, bool data) {
+  StageModule::trace(tf, data);
   const std::string n = name();
   sc_trace(tf, host_.busy, n + ".host_busy");
   sc_trace(tf, host_.job, n + ".host_job");

@@ -18,7 +18,7 @@ class DisplayMemoryBanks : public StageModule<stage::MemoryReadStage> {
 
   const stage::HostWritePort& host_port() const { return host_; }
   // The read port's waveform, then the write port's.
-  void trace(sc_core::sc_trace_file* tf);
+  void trace(sc_core::sc_trace_file* tf, bool data = true);
 
  private:
   void on_host_clock() { host_.tick(host_clk->cycle()); }

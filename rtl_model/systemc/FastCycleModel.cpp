@@ -98,16 +98,14 @@ void FastCycleModel::host_domain() {
 }
 
 // The same signals as the detailed model's modules (each stage's probes under its module's name).
-void FastCycleModel::trace(sc_trace_file* tf) {
+void FastCycleModel::trace(sc_trace_file* tf, bool data) {
   tracing_ = true;
   const std::string n = name();
   sc_trace(tf, cycle_, n + ".pixel_cycle");
   std::apply(
       [&](auto&... st) {
         auto one = [&](auto& s) {
-          s.set_probing(true);
-          const std::string m = n + "." + std::decay_t<decltype(s)>::kInfo.block + ".";
-          s.for_each_probe([&](const std::string& probe, const auto& value) { sc_trace(tf, value, m + probe); });
+          trace_stage(tf, s, n + "." + std::decay_t<decltype(s)>::kInfo.block + ".", data);
           if constexpr (std::is_same_v<std::decay_t<decltype(s)>, stage::VideoTimingStage>) tracker.trace(tf);
         };
         (one(st), ...);

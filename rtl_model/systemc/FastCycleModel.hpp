@@ -32,7 +32,7 @@ class FastCycleModel : public sc_core::sc_module {
   FastCycleModel(sc_core::sc_module_name name, const stage::TimedInputs& in, bool speculate);
 
   const RunWindow& window() const { return w_; }
-  void trace(sc_core::sc_trace_file* tf);
+  void trace(sc_core::sc_trace_file* tf, bool data = true);
   void stop_tracing();
   const TrackerInterface& tracker_interface() const { return tracker; }
   std::vector<std::pair<std::string, stage::FifoStats>> fifo_stats(int64_t end_cycle) const;

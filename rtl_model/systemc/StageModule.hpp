@@ -17,6 +17,37 @@
 
 namespace arp::scm {
 
+// A stage's probe into a waveform: a value with its type's bits, a narrow
+// probe (a register's data field) with its own.
+template <class T>
+void trace_probe(sc_core::sc_trace_file* tf, const T& value, const std::string& name) {
+  sc_trace(tf, value, name);
+}
+inline void trace_probe(sc_core::sc_trace_file* tf, const stage::NarrowProbe& p, const std::string& name) {
+  if (p.format.is_signed) {
+    sc_trace(tf, p.value, name, p.format.bits);
+  } else {  // the same 64 bits read unsigned (signed and unsigned variants may alias)
+    sc_trace(tf, reinterpret_cast<const uint64_t&>(p.value), name, p.format.bits);
+  }
+}
+
+// A stage's probes under `prefix` ("top.module."). Without `data`, its
+// register's data fields are left out (the control signals stay: handshakes,
+// scan position, the orientation register, the buffer select), and the stage
+// does not compute them.
+template <class S>
+void trace_stage(sc_core::sc_trace_file* tf, S& stage, const std::string& prefix, bool data) {
+  bool has_data = false;
+  stage.for_each_probe([&](const std::string& probe, const auto& value) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, stage::NarrowProbe>) {
+      has_data = true;
+      if (!data) return;
+    }
+    trace_probe(tf, value, prefix + probe);
+  });
+  stage.set_probing(data || !has_data);
+}
+
 namespace detail {
 struct NoPort {  // where a stage has no input (or no output)
   explicit NoPort(const char*) {}
@@ -57,11 +88,8 @@ class StageModule : public sc_core::sc_module {
   const S& stage() const { return stage_; }
   static dp::ScheduledStage scheduled(const dp::ArpConfig& c) { return S::scheduled(c); }
 
-  void trace(sc_core::sc_trace_file* tf) {
-    stage_.set_probing(true);
-    const std::string n = name();
-    stage_.for_each_probe([&](const std::string& probe, const auto& value) { sc_trace(tf, value, n + "." + probe); });
-  }
+  // data: the register's data fields too (VcdOptions::data).
+  void trace(sc_core::sc_trace_file* tf, bool data = true) { trace_stage(tf, stage_, std::string(name()) + ".", data); }
   void stop_trace() { stage_.set_probing(false); }
 
  protected:

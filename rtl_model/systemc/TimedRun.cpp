@@ -208,8 +208,8 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     tf = sc_create_vcd_trace_file(opt.vcd.path.c_str());
     if (!tf) throw InputError(opt.vcd.path + ".vcd", "", "cannot create the waveform file");
     tf->set_time_unit(1, SC_PS);
-    if (rtl) rtl->trace(tf);
-    if (fast) fast->trace(tf);
+    if (rtl) rtl->trace(tf, opt.vcd.data);
+    if (fast) fast->trace(tf, opt.vcd.data);
     if (lt) lt->trace(tf);
   };
 

@@ -30,6 +30,10 @@ struct VcdOptions {
   std::string path;  // without ".vcd" (SystemC appends it); empty: no waveform
   int64_t from_ps = std::numeric_limits<int64_t>::min();  // absolute window
   int64_t to_ps = std::numeric_limits<int64_t>::max();
+  // Each stage's register data fields too; off: the control signals only
+  // (clocks, handshakes, FIFO occupancy, scan position, host port,
+  // orientation register), a fraction of the file and of the time.
+  bool data = true;
 };
 
 struct TimedRunOptions {
