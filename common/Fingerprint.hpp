@@ -25,6 +25,11 @@ class Fingerprint {
     return *this;
   }
   uint64_t value() const { return h_; }
+  // As a configuration key holds it: positive and never 0 (0 there means "none").
+  int64_t key() const {
+    const auto v = static_cast<int64_t>(h_ >> 1);
+    return v == 0 ? 1 : v;
+  }
 
  private:
   uint64_t h_ = 0xcbf29ce484222325ull;

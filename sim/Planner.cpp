@@ -185,6 +185,7 @@ Plan make_plan(const PlanRequest& r) {
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
+  p.config.plan.motion_hash = host::walk_hash(walk);
 
   // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
   progress(0.02, "measuring the display's pixel angles");
@@ -374,7 +375,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   std::string s = "# Plan for scene " + p.scene_name + "\n\n";
   s += "Scene: " + std::to_string(p.objects) + " objects, " + std::to_string(p.triangles) + " triangles (plan.scene_hash " +
        std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
-       ", " + fmt("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated. Started from " + r.base_source + ".\n\n";
+       ", " + fmt("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
+       std::to_string(p.config.plan.motion_hash) + "). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
   s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";

@@ -139,6 +139,25 @@ host::WalkPath HostSpec::make_walk() const {
   return w;
 }
 
+// A configuration planned for one walk (plan.motion_hash) run over another
+// motion: said once, before the run. A run without a scene shows a cube map,
+// which the plan's walk has nothing to do with.
+void Session::warn_if_planned_for_another_motion() const {
+  const int64_t planned = spec_.config.plan.motion_hash;
+  if (planned == 0 || spec_.memories.scene.empty()) return;
+  const std::string& cfg = spec_.config_source;
+  if (!walk_) {
+    std::fprintf(stderr, "arpsim: warning: %s was planned for a walk (plan.motion_hash %lld); this run has no --walk: "
+                         "run `arpsim plan` for its motion\n",
+                 cfg.c_str(), static_cast<long long>(planned));
+    return;
+  }
+  if (const int64_t h = host::walk_hash(*walk_); h != planned)
+    std::fprintf(stderr, "arpsim: warning: %s was planned for another walk (plan.motion_hash %lld); walk %s at %g m/s "
+                         "hashes to %lld: run `arpsim plan` for it\n",
+                 cfg.c_str(), static_cast<long long>(planned), spec_.host.walk.c_str(), walk_->speed(), static_cast<long long>(h));
+}
+
 double HostSpec::threshold_rad(double deg) {
   if (!(deg >= 0) || deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
   return deg_to_rad(deg);
@@ -151,6 +170,7 @@ void Session::build_motion() {
     if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
     walk_ = std::make_unique<host::WalkPath>(h.make_walk());
   }
+  warn_if_planned_for_another_motion();
   if (!spec_.trace.empty()) {
     // Only what the run can latch: a second of margin before the first frame covers every lead.
     std::vector<tracker::PoseSample> poses =

@@ -55,6 +55,7 @@ class Session {
 
  private:
   void build_motion();
+  void warn_if_planned_for_another_motion() const;
   void extend_motion(int64_t through_ps);
   void advance_motion(int64_t frame);
   void build_memories();

@@ -224,5 +224,33 @@ TEST(PlanCli, ThePlanIsAConfigurationAndKnowsItsScene) {
   EXPECT_NE(other.output.find("scene gallery hashes to"), std::string::npos) << other.output;
 }
 
+// The plan knows its walk too: the same walk runs quietly; another walk, the
+// same walk at another speed, or no walk at all is said once, before the run.
+TEST(PlanCli, ThePlanKnowsItsWalk) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
+  write(d.file("other.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -5]]})");
+  const std::string small = " --set display.h_active=160 --set display.v_active=120";
+  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
+                             " -o " + d.file("plan.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(config::load_file(d.file("plan.json")).plan.motion_hash, 0);
+  EXPECT_NE(test::read_text(d.file("plan.md")).find("plan.motion_hash"), std::string::npos);
+  const std::string run = kArpsim + " run -q --frames 1 --every 0 --config " + d.file("plan.json") + " --scene " + d.file("far.json");
+  const std::string warn = d.file("plan.json") + " was planned for ";
+  const auto same = run_command(run + " --walk " + d.file("walk.json"));
+  ASSERT_EQ(same.status, 0) << same.output;
+  EXPECT_EQ(same.output.find(warn), std::string::npos) << same.output;
+  for (const std::string& other : std::vector<std::string>{" --walk " + d.file("other.json"), " --walk " + d.file("walk.json") + " --speed 2", ""}) {
+    const auto o = run_command(run + other);
+    ASSERT_EQ(o.status, 0) << other << "\n" << o.output;
+    const size_t at = o.output.find(warn);
+    ASSERT_NE(at, std::string::npos) << other << "\n" << o.output;
+    EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
+    EXPECT_NE(o.output.find(other.empty() ? "this run has no --walk" : "planned for another walk"), std::string::npos) << o.output;
+  }
+}
+
 }  // namespace
 }  // namespace arp::sim

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/Fingerprint.hpp"
 #include "common/InputError.hpp"
 #include "host/scene/Scene.hpp"
 #include "common/StrictJson.hpp"
@@ -82,6 +83,13 @@ WalkPath walk_from_json(const nlohmann::json& j, const std::string& path) {
     pts.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
   }
   return WalkPath(std::move(pts), speed, path);
+}
+
+int64_t walk_hash(const WalkPath& w) {
+  Fingerprint h;
+  h.add(static_cast<uint64_t>(w.points().size())).add(w.speed());
+  for (const glm::dvec3& p : w.points()) h.add(p.x).add(p.y).add(p.z);
+  return h.key();
 }
 
 }  // namespace arp::host

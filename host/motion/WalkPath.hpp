@@ -39,4 +39,9 @@ WalkPath load_walk_file(const std::string& path);
 // The same from parsed JSON ({"speed": m/s, "points": [[x, y, z], ...]}); `path` names it in errors.
 WalkPath walk_from_json(const nlohmann::json& j, const std::string& path);
 
+// A fingerprint of the motion a walk makes (its points and speed), for
+// recognising the walk a configuration was planned for (plan.motion_hash).
+// Never 0.
+int64_t walk_hash(const WalkPath& w);
+
 }  // namespace arp::host

@@ -85,8 +85,7 @@ int64_t scene_hash(const Scene& s) {
     for (const auto& uv : m.uvs) h.add(uv.x).add(uv.y);
     for (const uint32_t i : m.indices) h.add(uint64_t{i});
   }
-  const int64_t v = static_cast<int64_t>(h.value() >> 1);
-  return v == 0 ? 1 : v;
+  return h.key();
 }
 
 }  // namespace arp::host

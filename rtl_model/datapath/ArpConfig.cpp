@@ -153,6 +153,9 @@ ParameterTable<ArpConfig> make_parameters() {
   // plan: what `arpsim plan` records (sim/Planner)
   t.number("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
            "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");
+  t.number("plan.motion_hash", [](auto& c) -> auto& { return c.plan.motion_hash; }, 0, INT64_MAX, "",
+           "hash of the walk (points and speed) this configuration was planned for (0: not planned); a run with "
+           "another walk, or with a scene and no walk, warns once");
   return t;
 }
 

@@ -97,9 +97,10 @@ struct MemoryConfig {
   static constexpr int64_t kMaxUpdateFrames = int64_t{1} << 20;
 };
 
-// What `arpsim plan` records of the scene it planned for.
+// What `arpsim plan` records of the scene and motion it planned for.
 struct PlanRecord {
-  int64_t scene_hash = 0;  // host::scene_hash of the scene (0: not planned)
+  int64_t scene_hash = 0;   // host::scene_hash of the scene (0: not planned)
+  int64_t motion_hash = 0;  // host::walk_hash of the walk (0: not planned)
 };
 
 struct PipelineConfig {
