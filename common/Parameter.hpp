@@ -94,11 +94,15 @@ class ParameterTable {
   ParameterTable& number(std::string key, Ref ref, Lo lo, Hi hi, std::string unit, std::string doc) {
     using Field = std::remove_reference_t<decltype(ref(std::declval<Root&>()))>;
     if constexpr (std::is_arithmetic_v<Field>) {
+      static_assert(!std::is_integral_v<Field> || (std::is_integral_v<Lo> && std::is_integral_v<Hi>),
+                    "an integer parameter's range is given in integers");
       using V = std::conditional_t<std::is_integral_v<Field>, int64_t, double>;
       const ParamType t = std::is_integral_v<Field> ? ParamType::Integer : ParamType::Real;
       return add(bounded(scalar<V>(std::move(key), t, ref, std::move(unit), std::move(doc)), static_cast<V>(lo), static_cast<V>(hi)));
     } else {
       using Element = std::remove_const_t<typename Field::value_type>;
+      static_assert(!std::is_integral_v<Element> || (std::is_integral_v<Lo> && std::is_integral_v<Hi>),
+                    "an integer parameter's range is given in integers");
       using V = std::conditional_t<std::is_integral_v<Element>, int64_t, double>;
       const ParamType t = std::is_integral_v<Element> ? ParamType::IntegerArray : ParamType::RealArray;
       return add(bounded(array<V>(std::move(key), t, ref, std::move(unit), std::move(doc)), static_cast<V>(lo), static_cast<V>(hi)));

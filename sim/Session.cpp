@@ -147,8 +147,9 @@ void Session::warn_if_planned_for_another_motion() const {
   if (planned == 0 || spec_.memories.scene.empty()) return;
   const std::string& cfg = spec_.config_source;
   if (!walk_) {
-    std::fprintf(stderr, "arpsim: warning: %s was planned for a walk (plan.motion_hash %lld); this run has no --walk: "
-                         "run `arpsim plan` for its motion\n",
+    std::fprintf(stderr, "arpsim: warning: %s was planned for a walk (plan.motion_hash %lld); this run's head stays in one "
+                         "place (no --walk): its memories were sized for the walk's motion (`arpsim plan --speed 0` "
+                         "plans for standing at the walk's first point)\n",
                  cfg.c_str(), static_cast<long long>(planned));
     return;
   }

@@ -124,11 +124,15 @@ SweepOutcome run_sweep_locally(const std::vector<SweepCommand>& commands, int jo
   return out;
 }
 
+void check_slurm_word(const std::string& what, const std::string& path) {
+  if (path.find_first_of(" \t\n'\"$`\\") != std::string::npos)
+    throw InputError(what, path, "a Slurm script names this path as it is: no whitespace, quotes, $, ` or \\ in it");
+}
+
 void check_slurm_sweep_paths(const std::string& scheduler, const std::string& script_dir, const std::string& out_dir) {
   if (scheduler != "slurm") throw InputError("--emit", scheduler, "the one scheduler known is slurm (--emit slurm DIR)");
-  for (const auto& [option, path] : {std::pair<const char*, std::string>{"--emit", script_dir}, {"--out", out_dir}})
-    if (path.find_first_of(" \t\n'\"$`\\") != std::string::npos)
-      throw InputError(option, path, "a Slurm script names this folder as it is: no whitespace, quotes, $, ` or \\ in it");
+  check_slurm_word("--emit", script_dir);
+  check_slurm_word("--out", out_dir);
   check_output_folder("--emit", script_dir);
 }
 

@@ -49,6 +49,8 @@ struct SlurmSweep {
 // Slurm script as they are (no whitespace, quotes, $, backquote or backslash)
 // and the script folder can be made.
 void check_slurm_sweep_paths(const std::string& scheduler, const std::string& script_dir, const std::string& out_dir);
+// InputError naming `what` unless `path` can stand in a Slurm script as it is.
+void check_slurm_word(const std::string& what, const std::string& path);
 
 // Writes DIR/shared.ids, exclusive.ids, points-shared.sbatch, points-exclusive.sbatch,
 // merge.sbatch and submit.sh (submits the arrays, then the merge with

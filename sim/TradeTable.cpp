@@ -372,7 +372,9 @@ SlurmSweep trade_slurm_sweep(const TradePlan& plan, const std::string& dir, cons
   SlurmSweep s;
   s.name = "arpsim-tradeoff";
   for (const auto& p : plan.points) (p.exclusive() ? s.exclusive_ids : s.shared_ids).push_back(p.id);
-  const std::string bin = "\"${ARPSIM:-" + binary + "}\"";  // checked: no quote, $ or whitespace in these paths
+  check_slurm_word("the arpsim binary", binary);
+  check_slurm_word("--out", dir);
+  const std::string bin = "\"${ARPSIM:-" + binary + "}\"";
   s.point_command = bin + " tradeoff -q --out " + dir + " --point \"$ID\" > " + dir + "/points/\"$ID\".log 2>&1";
   s.merge_command = bin + " tradeoff --out " + dir + " --merge";
   s.log_dir = (fs::path(dir) / "points").string();

@@ -41,7 +41,8 @@ std::string trade_log_path(const std::string& dir, const std::string& id);
 // beside its result (`dir` absolute: the processes may run elsewhere).
 std::vector<SweepCommand> trade_sweep_commands(const TradePlan& plan, const std::string& dir, const std::string& binary);
 // The same as a Slurm job array and its merge; $ARPSIM, when set where the
-// jobs run, names the binary instead.
+// jobs run, names the binary instead. InputError when `dir` or `binary`
+// cannot stand in a script as it is (whitespace, quotes, $, `, \).
 SlurmSweep trade_slurm_sweep(const TradePlan& plan, const std::string& dir, const std::string& binary);
 
 struct TradeTables {

@@ -220,6 +220,13 @@ TEST(Tradeoff, SlurmScriptsHaveTheSweepsShape) {
             std::string::npos);
   EXPECT_NE(std::string(test::error_of([&] { sim::check_slurm_sweep_paths("pbs", dir.path(), dir.path()); }).what()).find("slurm"),
             std::string::npos);
+  // The trade's array names the binary as well as the folder: each must stand in a script as it is.
+  const sim::TradePlan plan = sim::make_trade_plan(sim::TradeScale{true});
+  const sim::SlurmSweep ok = sim::trade_slurm_sweep(plan, "/data/trade", "/opt/arpsim");
+  EXPECT_EQ(ok.merge_command, "\"${ARPSIM:-/opt/arpsim}\" tradeoff --out /data/trade --merge");
+  EXPECT_EQ(ok.shared_ids.size() + ok.exclusive_ids.size(), plan.points.size());
+  EXPECT_EQ(test::error_of([&] { sim::trade_slurm_sweep(plan, "/data/trade", "/opt/my arpsim"); }).source(), "the arpsim binary");
+  EXPECT_EQ(test::error_of([&] { sim::trade_slurm_sweep(plan, "/data/$trade", "/opt/arpsim"); }).source(), "--out");
 }
 
 TEST(Tradeoff, MergeKeepsMissingAndBrokenPointsAsRowsWithTheReason) {

@@ -47,7 +47,8 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
   cmd->add_option("--vcd-time-us", o.vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
   cmd->add_option("--vcd-signals", o.vcd_signals,
                   "all, or control: without each stage's register data (clocks, handshakes, FIFOs, scan position, host "
-                  "port and orientation register only; a fraction of the file and of the time)")
+                  "port and orientation register only; a fraction of the file and of the time). cycle and detailed; "
+                  "lt traces its quantum variables either way")
       ->capture_default_str();
   cmd->add_option("--error-every", o.error_every,
                   "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
