@@ -127,6 +127,7 @@ std::vector<std::string> RunSummary::lines() const {
   std::vector<std::string> out;
   out.push_back(line("arpsim run: %s level, %" PRId64 " frames (%" PRId64 "..%" PRId64 ") of %s with %s", fidelity.c_str(), frames,
                      first_frame, first_frame + frames - 1, motion_source.c_str(), memory_source.c_str()));
+  if (!detail.empty()) out.push_back(detail);
   if (!complete())
     out.push_back(line("  STOPPED%s after %" PRId64 " of %" PRId64 " frames: the outputs cover those frames (the report says \"complete\": false)",
                        stop_signal ? (std::string(" by SIG") + sigabbrev_np(stop_signal)).c_str() : "", frames_done, frames));

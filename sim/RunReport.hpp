@@ -29,6 +29,7 @@ struct RunSummary {
   double wall_seconds = 0;
   int64_t images = 0;
   std::string out_dir, vcd, gtkw;
+  std::string detail;              // with --detail: which frames were detailed
   std::vector<std::string> notes;  // lines worth telling the user (a trace that ends early, the tear image)
   std::vector<std::string> lines() const;  // the printed summary
 };

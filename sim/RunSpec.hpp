@@ -53,6 +53,10 @@ struct RunSpec {
   dp::ArpConfig config;
   std::string config_source = "configuration";  // names the configuration in errors
   std::string fidelity = "functional";           // functional, lt, cycle, detailed (rtl)
+  // --detail FRAMES (repeatable): the functional level, switched to the detailed level for these
+  // frames, START:END (END exclusive) or one frame, counted from the first frame.
+  std::vector<std::string> detail;
+  int64_t detail_warmup = 1;                     // --detail-warmup: detailed frames before each window
   MemoryContents memories;
   tracker::MotionSpec motion;                    // --motion ...
   std::string trace;                             // --trace FILE

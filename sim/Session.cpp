@@ -23,6 +23,7 @@
 #include "common/Units.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
+#include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "tracker/MotionSummary.hpp"
 #include "tracker/TraceFile.hpp"
 
@@ -59,6 +60,15 @@ std::string vcd_path(const std::string& arg) {
   if (!p.has_parent_path()) p = fs::path("waveforms") / p;
   if (p.extension() != ".vcd") p += ".vcd";
   return p.string();
+}
+
+// "detailed level in frames 99..101, 199..201 (6 of 600 frames, 1 warm-up frame before each window); functional between".
+std::string detail_text(const stage::FrameWindows& w, const RunSpec& s, const scm::TimedResult& res) {
+  std::string t = "  detailed level in frames ";
+  for (const auto& [f0, f1] : w.windows()) t += (t.back() == ' ' ? "" : ", ") + std::to_string(f0) + ".." + std::to_string(f1 - 1);
+  return t + " (" + std::to_string(res.frames - res.untimed_frames) + " of " + std::to_string(res.frames) + " frames, " +
+         std::to_string(s.detail_warmup) + " warm-up frame" + (s.detail_warmup == 1 ? "" : "s") +
+         " before each window), functional between";
 }
 
 void check_spec(const RunSpec& s, scm::Fidelity fid) {
@@ -116,6 +126,7 @@ Session::Session(RunSpec spec)
   spec_.memories.expect_plan(spec_.config, spec_.config_source);
   if (!scm::parse(spec_.fidelity, fidelity_))
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
+  build_detail_windows();
   check_spec(spec_, fidelity_);
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
@@ -124,6 +135,38 @@ Session::Session(RunSpec spec)
 }
 
 Session::~Session() = default;
+
+// --detail: the run is functional except in these windows of frames, which
+// the detailed level simulates, each with --detail-warmup detailed frames
+// before it (what the pipeline's registers hold when the window starts).
+void Session::build_detail_windows() {
+  if (spec_.detail.empty()) {
+    if (spec_.detail_warmup != 1) throw InputError("--detail-warmup", "", "needs --detail");
+    return;
+  }
+  if (fidelity_ != scm::Fidelity::Functional && fidelity_ != scm::Fidelity::Detailed)
+    throw InputError("--detail", "", "switches between the functional and the detailed level: leave --fidelity at functional (or detailed)");
+  if (spec_.detail_warmup < 0 || spec_.detail_warmup > 1000) throw InputError("--detail-warmup", "", "must be 0 .. 1000 frames");
+  std::vector<stage::FrameWindows::Window> w;
+  for (const std::string& d : spec_.detail) {
+    int64_t a = 0, b = 0;
+    try {
+      size_t n1 = 0, n2 = 0;
+      const auto colon = d.find(':');
+      a = std::stoll(d.substr(0, colon), &n1);
+      b = colon == std::string::npos ? a + 1 : std::stoll(d.substr(colon + 1), &n2);
+      if (n1 != (colon == std::string::npos ? d.size() : colon) || (colon != std::string::npos && n2 != d.size() - colon - 1))
+        throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      throw InputError("--detail", d, "expected START:END (frames counted from the first frame, END exclusive) or one frame");
+    }
+    if (a < 0 || b <= a || b > spec_.frames)
+      throw InputError("--detail", d, "frames must satisfy 0 <= START < END <= --frames (" + std::to_string(spec_.frames) + ")");
+    w.push_back({spec_.first_frame + std::max<int64_t>(0, a - spec_.detail_warmup), spec_.first_frame + b});
+  }
+  timed_frames_ = stage::FrameWindows(std::move(w));
+  fidelity_ = scm::Fidelity::Detailed;
+}
 
 // The head motion: a trace, synthetic motion, a walk (facing where it goes,
 // turning on top of it), or live input that grows frame by frame. Generated
@@ -384,6 +427,12 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
     opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
+  } else if (!timed_frames_.every_frame()) {
+    // With detailed windows: the first window (its warm-up frames too), from the vertical blank before it to the one after it.
+    const dp::PipelineSchedule sched(spec_.config);
+    const auto [f0, f1] = timed_frames_.windows().front();
+    opt.vcd.from_ps = timing_.cycles_to_ps(sched.swap_cycle(f0 - 1));
+    opt.vcd.to_ps = timing_.cycles_to_ps(sched.swap_cycle(f1 - 1) + 1);
   }
 }
 
@@ -446,6 +495,7 @@ void Session::on_scanned_out(const HmdFrame& f, const stage::FrameReport& r) {
   }
   const auto [lo, hi] = dp::LatchRule(spec_.config).frame_samples(stream_, r.frame);
   nlohmann::json row = frame_row(r, lo, hi, ph, th);
+  if (!timed_frames_.every_frame()) row["level"] = timed_frames_.contains(r.frame) ? "detailed" : "functional";
   if (probe_ && k % o.error_every == 0) {
     nlohmann::json err;
     probe_->measure(f, r.frame, err);
@@ -474,6 +524,7 @@ RunSummary Session::run() {
   in.orientation = &stream_;
   in.first_frame = spec_.first_frame;
   in.frames = spec_.frames;
+  in.timed_frames = timed_frames_;
   in.stalls = stall_windows();
   if (live_) build_live_input(in);
   if (host_)
@@ -529,7 +580,7 @@ RunSummary Session::run() {
     write_text_atomic(s.gtkw, gtkw_for_vcd(vcd_final_, fs::path(vcd_final_).filename().string(), two_lines));
   }
   std::sort(medians.begin(), medians.end());
-  s.fidelity = scm::to_string(fidelity_);
+  s.fidelity = timed_frames_.every_frame() ? scm::to_string(fidelity_) : "functional";  // the detailed windows: s.detail
   s.motion_source = motion_source_;
   s.memory_source = memory_source_;
   s.first_frame = spec_.first_frame;
@@ -540,6 +591,7 @@ RunSummary Session::run() {
   s.latency_median_ps = res.frames ? medians[medians.size() / 2] : 0;
   s.latency_max_ps = worst;
   s.cycle_accurate = fidelity_ == scm::Fidelity::Detailed || fidelity_ == scm::Fidelity::Cycle;
+  if (!timed_frames_.every_frame()) s.detail = detail_text(timed_frames_, spec_, res);
   s.underflows = res.underflows;
   s.late_discarded = res.late_discarded;
   s.swaps = res.swaps;
@@ -587,6 +639,14 @@ RunSummary Session::run() {
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
   r["complete"] = s.complete();
+  if (!timed_frames_.every_frame()) {
+    nlohmann::json windows = nlohmann::json::array();
+    for (const auto& [f0, f1] : timed_frames_.windows()) windows.push_back({f0, f1});
+    r["detail"] = {{"windows", windows},
+                   {"warmup_frames", spec_.detail_warmup},
+                   {"frames_detailed", res.frames - res.untimed_frames},
+                   {"frames_functional", res.untimed_frames}};
+  }
   r["frames_done"] = s.frames_done;
   r["motion"] = motion_source_;
   r["cube_map"] = memory_source_;

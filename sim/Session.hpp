@@ -47,6 +47,8 @@ class Session {
 
   const RunSpec& spec() const { return spec_; }
   scm::Fidelity fidelity() const { return fidelity_; }
+  // The frames simulated at the timed level (--detail; default: every frame).
+  const stage::FrameWindows& timed_frames() const { return timed_frames_; }
   const std::string& motion_source() const { return motion_source_; }
   const std::string& memory_source() const { return memory_source_; }
   // What the motion looks like, for the command to print before the run: a
@@ -54,6 +56,7 @@ class Session {
   const std::vector<std::string>& motion_notes() const { return motion_notes_; }
 
  private:
+  void build_detail_windows();
   void build_motion();
   void warn_if_planned_for_another_motion() const;
   void extend_motion(int64_t through_ps);
@@ -66,6 +69,7 @@ class Session {
 
   RunSpec spec_;
   scm::Fidelity fidelity_ = scm::Fidelity::Functional;
+  stage::FrameWindows timed_frames_;
   dp::VideoTiming timing_;
   int64_t start_ps_ = 0, end_ps_ = 0;
   // The motion not yet in the stream: appends the poses through a time (and

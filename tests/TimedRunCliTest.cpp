@@ -228,6 +228,45 @@ TEST(TimedRunCli, ControlSignalsLeaveOutOnlyTheRegistersData) {
   }
 }
 
+// --detail: a run at the functional level switched to the detailed level for
+// a window of frames and back gives the detailed run's frames -- every frame,
+// the window's and the functional ones -- and, from the vertical blank before
+// the window on, its waveform; without the warm-up frame the registers start
+// the window holding other values (what the warm-up is for).
+TEST(TimedRunCli, DetailedWindowsGiveTheDetailedRunsFramesAndWaveform) {
+  TempDir d;
+  const std::string common = " run -q --frames 6 --every 0 --motion shake --peak 1000" + kSmall;
+  // 109 lines a frame here: lines 175..400 run from the blank before frame 2 into frame 3's.
+  auto run = [&](const std::string& name, const std::string& how) {
+    const auto r = run_command(kArpsim + common + how + " --vcd " + d.file(name) + " --vcd-lines 175:400 --report " + d.file(name + ".json"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    return load(d.file(name + ".json"));
+  };
+  auto body = [](const std::string& vcd) {  // the waveform without its $date block
+    const std::string t = read_text(vcd);
+    const auto end = t.find("$end", t.find("$date"));
+    return t.substr(end);
+  };
+  const nlohmann::json full = run("full", " --fidelity detailed"), win = run("win", " --detail 2:4"),
+                       cold = run("cold", " --detail 2:4 --detail-warmup 0");
+  ASSERT_EQ(win["frames"].size(), 6u);
+  const char* levels[] = {"functional", "detailed", "detailed", "detailed", "functional", "functional"};
+  for (size_t f = 0; f < 6; ++f) {
+    for (const char* k : {"pixel_hash", "photon_hash", "latency_ps", "first_sample", "last_sample", "underflows"})
+      EXPECT_EQ(win["frames"][f][k], full["frames"][f][k]) << "frame " << f << " " << k;
+    EXPECT_EQ(win["frames"][f]["level"], levels[f]) << f;
+  }
+  EXPECT_EQ(win["detail"]["windows"], nlohmann::json::parse("[[1, 4]]"));
+  EXPECT_EQ(win["detail"]["frames_detailed"], 3);
+  EXPECT_EQ(win["detail"]["frames_functional"], 3);
+  EXPECT_EQ(full["frames"][0].count("level"), 0u);  // a run at one level says nothing new
+  // Half the frames were simulated clock by clock: half the pixels through the stage FIFOs.
+  EXPECT_EQ(2 * win["fifos"][0]["writes"].get<int64_t>(), full["fifos"][0]["writes"].get<int64_t>());
+  EXPECT_EQ(body(d.file("win.vcd")), body(d.file("full.vcd")));
+  EXPECT_NE(body(d.file("cold.vcd")), body(d.file("full.vcd")));
+  EXPECT_EQ(cold["frames"][2]["pixel_hash"], full["frames"][2]["pixel_hash"]);  // the frames do not depend on it
+}
+
 // Each module bench writes its waveform on request, and the view committed
 // for it in waveforms/ matches what `arpsim gtkw` makes of that waveform.
 TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {
@@ -281,22 +320,26 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
 }
 
 // The host model at every level: it updates the memories in the vertical
-// blank before each frame, so all four levels show the same walk bit for bit.
+// blank before each frame, so all four levels -- and a functional run with a
+// detailed window -- show the same walk bit for bit.
 TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
   TempDir d;
   std::map<std::string, nlohmann::json> rep;
-  for (const std::string level : {"functional", "lt", "cycle", "detailed"}) {
+  const std::map<std::string, std::string> levels{{"functional", "functional"}, {"lt", "lt"}, {"cycle", "cycle"},
+                                                   {"detailed", "detailed"}, {"window", "functional --detail 1:3"}};
+  for (const auto& [name, level] : levels) {
     const auto r = run_command(kArpsim + " run -q --fidelity " + level + " --scene gallery --walk gallery --frames 5" +
                                " --every 0 --error-every 0 --threshold-deg 2 --set memory.face_size=64 --report " +
-                               d.file(level + ".json"));
+                               d.file(name + ".json"));
     ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
-    rep[level] = load(d.file(level + ".json"));
+    rep[name] = load(d.file(name + ".json"));
   }
-  for (const std::string level : {"lt", "cycle", "detailed"}) {
+  for (const std::string level : {"lt", "cycle", "detailed", "window"}) {
     for (size_t f = 0; f < 5; ++f)
       EXPECT_EQ(rep[level]["frames"][f]["pixel_hash"], rep["functional"]["frames"][f]["pixel_hash"]) << level << " " << f;
     EXPECT_EQ(rep[level]["host"]["memories"], rep["functional"]["host"]["memories"]) << level;
   }
+  EXPECT_EQ(rep["window"]["detail"]["frames_detailed"], 3);
 }
 
 // Region priority rendering from the command line: the report has the

@@ -27,7 +27,7 @@ int run(RunArgs& a) {
   const InterruptGuard ctrl_c;  // Ctrl-C / SIGTERM: stop after the frame in flight, keep what is finished
   sim::Session session(a.spec);
   for (const auto& l : session.motion_notes()) std::fprintf(stderr, "arpsim run: %s\n", l.c_str());
-  ProgressLine progress("run " + scm::to_string(session.fidelity()), !a.quiet);
+  ProgressLine progress(session.timed_frames().every_frame() ? "run " + scm::to_string(session.fidelity()) : "run functional/detailed", !a.quiet);
   session.on_progress = [&progress](double f, const std::string& what) { progress.update(f, what); };
   session.stop_when = interrupt_signal;
   const sim::RunSummary s = session.run();
@@ -89,6 +89,12 @@ Runner add_run_command(CLI::App& app) {
                   "functional (untimed), lt (loosely timed, scanline quantum), cycle (fast cycle-accurate), "
                   "detailed (detailed cycle-accurate, one SystemC module per stage; also: rtl), verilated (the "
                   "functional level's timing with the verilated RTL doing the per-pixel arithmetic; slow)")
+      ->capture_default_str();
+  cmd->add_option("--detail", s.detail,
+                  "Switch to the detailed level for these frames, START:END (counted from the first frame, END exclusive) or "
+                  "one frame, and back: functional elsewhere, identical frames; repeatable")
+      ->take_all();
+  cmd->add_option("--detail-warmup", s.detail_warmup, "--detail: detailed frames before each window (what its registers hold at the start)")
       ->capture_default_str();
   cmd->add_option("--trace", s.trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth");
   cmd->add_option("--live", s.live,

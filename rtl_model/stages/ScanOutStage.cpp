@@ -3,7 +3,7 @@
 namespace arp::stage {
 
 ScanOutStage::ScanOutStage(const StageContext& ctx)
-    : scan_(ctx.config(), ctx.in.first_frame, ctx.in.frames),
+    : scan_(ctx.config(), ctx.in.first_frame, ctx.in.frames, ctx.in.timed_frames),
       panel_(dp::MemoryFormat(ctx.config().memory), ctx.config().pipeline),
       stream_(*ctx.in.orientation),
       sink_(ctx.in.sink),

@@ -1,6 +1,7 @@
 #include "ScanTiming.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace arp::stage {
 
@@ -8,12 +9,13 @@ namespace {
 int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
 }  // namespace
 
-ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames)
+ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames, FrameWindows windows)
     : timing_(c.timing),
       tc_(c.timing),
       latch_(c),
       first_(first_frame),
       end_(first_frame + frames),
+      windows_(std::move(windows)),
       field_cycles_(timing_.field_cycles()),
       row_pixels_(c.timing.eye_scan == dp::EyeScan::SideBySide ? c.timing.eyes * c.timing.h_active
                                                                 : c.timing.h_active) {
@@ -59,6 +61,13 @@ const ScanPosition& ScanTiming::position(int64_t cycle, Cursor& cur) const {
 bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
   const ScanPosition& p = position(slot_cycle, cur);
   if (!p.active || p.frame < first_ || p.frame >= end_) return false;
+  if (!windows_.every_frame()) {
+    if (cur.windows_frame != p.frame) {
+      cur.windows_frame = p.frame;
+      cur.in_windows = windows_.contains(p.frame);
+    }
+    if (!cur.in_windows) return false;
+  }
   out.frame = p.frame;
   out.slot_cycle = slot_cycle;
   out.y = p.line * tc_.fields_per_frame + cur.field;

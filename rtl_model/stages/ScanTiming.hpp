@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "FrameWindows.hpp"
 #include "PixelTokens.hpp"
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
@@ -20,14 +21,15 @@ struct ScanPosition {
 
 class ScanTiming {
  public:
-  // Pixels of frames [first_frame, first_frame + frames) are decoded.
-  ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames);
+  // Pixels of frames [first_frame, first_frame + frames) are decoded -- of
+  // those, only the frames in `windows` (a run with detailed windows).
+  ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames, FrameWindows windows = {});
 
   const dp::VideoTiming& timing() const { return timing_; }
   int64_t first_frame() const { return first_; }
   int64_t end_frame() const { return end_; }
 
-  // The pixel scanned out at `slot_cycle`; false in blanking or outside the run's frames.
+  // The pixel scanned out at `slot_cycle`; false in blanking or outside the run's (windows') frames.
   bool decode(int64_t slot_cycle, PixelSlot& out) const { return decode(slot_cycle, out, scratch_); }
   ScanPosition position(int64_t cycle) const;
 
@@ -37,6 +39,8 @@ class ScanTiming {
     int64_t cycle = std::numeric_limits<int64_t>::min();
     int field = 0;
     ScanPosition pos;
+    int64_t windows_frame = std::numeric_limits<int64_t>::min();  // the frame last looked up in the windows
+    bool in_windows = true;
   };
   const ScanPosition& position(int64_t cycle, Cursor& cur) const;  // a reference: no copy of a just-written struct
   bool decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const;
@@ -48,6 +52,7 @@ class ScanTiming {
   dp::VideoTimingConfig tc_;
   dp::LatchRule latch_;
   int64_t first_, end_;
+  FrameWindows windows_;
   int64_t field_cycles_;
   int row_pixels_;      // active pixel clocks per line
   int64_t last_offset_;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "FrameReport.hpp"
+#include "FrameWindows.hpp"
 #include "HostWritePort.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
@@ -31,6 +32,9 @@ struct TimedInputs {
   const dp::OrientationStream* orientation = nullptr;
   std::vector<HostWriteJob> host_jobs;
   int64_t first_frame = 0, frames = 1;
+  // The frames a timed level simulates clock by clock (default: every one);
+  // the run driver computes the others at the functional level (--detail).
+  FrameWindows timed_frames;
   std::vector<StallWindow> stalls;              // cycle-accurate levels only
   FrameSink sink;
   // A host model updating the memories between frames: called before each

@@ -5,7 +5,7 @@
 namespace arp::stage {
 
 VideoTimingStage::VideoTimingStage(const StageContext& ctx)
-    : scan_(ctx.config(), ctx.in.first_frame, ctx.in.frames), sched_(ctx.schedule), lead_(ctx.schedule.issue_lead()) {}
+    : scan_(ctx.config(), ctx.in.first_frame, ctx.in.frames, ctx.in.timed_frames), sched_(ctx.schedule), lead_(ctx.schedule.issue_lead()) {}
 
 void VideoTimingStage::grow() {
   std::vector<PixelSlot> r(ring_.size() * 2);

@@ -10,9 +10,10 @@
 #include "ArpPipelineTop.hpp"
 #include "ClockGenerator.hpp"
 #include "FastCycleModel.hpp"
+#include "FunctionalFrames.hpp"
+#include "FunctionalStandIn.hpp"
 #include "LooselyTimedModel.hpp"
 #include "common/InputError.hpp"
-#include "rtl_model/functional/FunctionalModel.hpp"
 #include "rtl_model/verilated/VerilatedFrameModel.hpp"
 
 namespace arp::scm {
@@ -65,41 +66,24 @@ void check_inputs(const stage::TimedInputs& in, bool timed) {
 TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& opt) {
   TimedResult r;
   r.fidelity = opt.fidelity;
-  const FunctionalModel model(in.config);
   std::unique_ptr<vl::VerilatedFrameModel> rtl;
-  if (opt.fidelity == Fidelity::Verilated) rtl = std::make_unique<vl::VerilatedFrameModel>(in.config);
+  FunctionalFrames::Renderer renderer;
+  if (opt.fidelity == Fidelity::Verilated) {
+    rtl = std::make_unique<vl::VerilatedFrameModel>(in.config);
+    renderer = [&rtl, &in](int64_t frame, HmdFrame& f) { rtl->render(*in.memories, *in.orientation, frame, f, true); };
+  }
+  FunctionalFrames frames(in, opt.threads, renderer);
   const stage::StageContext ctx{in, dp::PipelineSchedule(in.config)};
   const dp::PipelineSchedule& sched = ctx.schedule;
-  const auto& t = model.timing();
+  const auto& t = frames.model().timing();
   const stage::VideoTimingStage timing(ctx);  // the run's clocks and the frames' last slots, as the timed levels have them
-  const stage::ScanTiming& scan = timing.scan();
   stage::PlannedHostWrites host(in.config, in.host_jobs);
-  RenderOptions ro;
-  ro.threads = opt.threads;
-  ro.photon_times = true;
   const auto t0 = Clock::now();
-  HmdFrame f;
-  stage::LatencyCollector lat;
-  const auto& pc = in.config.pipeline;
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
     if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
-    if (rtl) rtl->render(*in.memories, *in.orientation, frame, f, true);
-    else model.render(*in.memories, *in.orientation, frame, f, ro);
-    stage::FrameReport fr;
-    fr.frame = frame;
-    fr.pixels = static_cast<int64_t>(f.width) * f.height;
-    for (int e = 0; e < f.eyes; ++e)
-      for (int y = 0; y < f.height; ++y)
-        for (int x = 0; x < f.width; ++x) {
-          const size_t s = model.latch_rule().sample(*in.orientation, frame, e, x, y);
-          lat.add(f.photon_ps[f.index(e, x, y)], (*in.orientation)[s].time_ps);
-        }
-    lat.summarise(fr);
-    lat.reset();
-    fr.first_photon_ps = t.cycles_to_ps(t.frame_start_cycle(frame)) + pc.photon_delay_ps;
-    fr.last_photon_ps = t.cycles_to_ps(scan.last_slot(frame)) + pc.photon_delay_ps;
-    if (in.sink) in.sink(f, fr);
+    const stage::FrameReport fr = frames.render(frame);
+    if (in.sink) in.sink(frames.frame(), fr);
     ++r.frames;
     r.swaps += host.at_vertical_blank(t.cycles_to_ps(sched.swap_cycle(frame)), *in.memories);
     if (opt.progress)
@@ -113,7 +97,7 @@ TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& 
   r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.host_jobs = host.timings();
   r.first_cycle = timing.first_cycle();
-  r.end_cycle = r.stopped ? std::min(timing.end_cycle(), scan.last_slot(in.first_frame + r.frames - 1) + 1) : timing.end_cycle();
+  r.end_cycle = r.stopped ? std::min(timing.end_cycle(), timing.scan().last_slot(in.first_frame + r.frames - 1) + 1) : timing.end_cycle();
   r.issue_lead = sched.issue_lead();
   r.orientation_lead = sched.orientation_lead();
   return r;
@@ -152,6 +136,9 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     return run_functional(in, opt);
   }
   check_inputs(in, true);
+  const bool windows = !in.timed_frames.every_frame();
+  if (windows && opt.fidelity != Fidelity::Detailed)
+    throw InputError("--detail", "", "detailed windows switch between the functional and the detailed level (--fidelity functional or detailed)");
   claim_simulation();
 
   TimedResult r;
@@ -174,11 +161,13 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   std::unique_ptr<ArpPipelineTop> rtl;
   std::unique_ptr<FastCycleModel> fast;
   std::unique_ptr<LooselyTimedModel> lt;
+  std::unique_ptr<FunctionalStandIn> untimed;  // the frames between detailed windows
   RunWindow w{};
   switch (opt.fidelity) {
     case Fidelity::Detailed:
       rtl = std::make_unique<ArpPipelineTop>("arp", run_in);
       w = rtl->window();
+      if (windows) untimed = std::make_unique<FunctionalStandIn>("functional_frames", run_in, w.base_ps, opt.threads);
       break;
     case Fidelity::Cycle:
       // Waveforms show every stage's data: no speculation while tracing.
@@ -240,6 +229,7 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     w.end_cycle = r.end_cycle;
   }
 
+  if (untimed) r.untimed_frames = untimed->frames_done();
   if (rtl) {
     fill_cycle_statistics(r, *rtl, rtl->memories().stage(), rtl->memories().host_port(), rtl->timing().stage(),
                           rtl->scan_out().stage(), w.end_cycle);

@@ -50,6 +50,7 @@ struct TimedRunOptions {
 struct TimedResult {
   Fidelity fidelity = Fidelity::Detailed;
   int64_t frames = 0;     // frames scanned out (the sink saw each)
+  int64_t untimed_frames = 0;  // of those, computed by the functional model between detailed windows
   bool stopped = false;   // ended early by TimedRunOptions::stop
   bool stages_measured = false, fifos_modelled = false;
   std::array<stage::StageStats, dp::kStageCount> stages{};
