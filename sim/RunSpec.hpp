@@ -57,6 +57,7 @@ struct RunSpec {
   // frames, START:END (END exclusive) or one frame, counted from the first frame.
   std::vector<std::string> detail;
   int64_t detail_warmup = 1;                     // --detail-warmup: detailed frames before each window
+  double detail_speed_dps = 200;                 // --detail-speed-dps: `--detail auto` details frames turning faster
   MemoryContents memories;
   tracker::MotionSpec motion;                    // --motion ...
   std::string trace;                             // --trace FILE

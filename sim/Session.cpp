@@ -9,6 +9,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 
@@ -64,6 +65,7 @@ std::string vcd_path(const std::string& arg) {
 
 // "detailed level in frames 99..101, 199..201 (6 of 600 frames, 1 warm-up frame before each window); functional between".
 std::string detail_text(const stage::FrameWindows& w, const RunSpec& s, const scm::TimedResult& res) {
+  if (w.windows().empty()) return "  detailed level in no frame (--detail auto found none): functional throughout";
   std::string t = "  detailed level in frames ";
   for (const auto& [f0, f1] : w.windows()) t += (t.back() == ' ' ? "" : ", ") + std::to_string(f0) + ".." + std::to_string(f1 - 1);
   return t + " (" + std::to_string(res.frames - res.untimed_frames) + " of " + std::to_string(res.frames) + " frames, " +
@@ -131,6 +133,7 @@ Session::Session(RunSpec spec)
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
   build_motion();
+  add_auto_detail();
   build_memories();
 }
 
@@ -139,16 +142,23 @@ Session::~Session() = default;
 // --detail: the run is functional except in these windows of frames, which
 // the detailed level simulates, each with --detail-warmup detailed frames
 // before it (what the pipeline's registers hold when the window starts).
+// `auto` adds its windows once the motion is known (add_auto_detail).
 void Session::build_detail_windows() {
   if (spec_.detail.empty()) {
     if (spec_.detail_warmup != 1) throw InputError("--detail-warmup", "", "needs --detail");
+    if (spec_.detail_speed_dps != RunSpec{}.detail_speed_dps) throw InputError("--detail-speed-dps", "", "needs --detail auto");
     return;
   }
   if (fidelity_ != scm::Fidelity::Functional && fidelity_ != scm::Fidelity::Detailed)
     throw InputError("--detail", "", "switches between the functional and the detailed level: leave --fidelity at functional (or detailed)");
   if (spec_.detail_warmup < 0 || spec_.detail_warmup > 1000) throw InputError("--detail-warmup", "", "must be 0 .. 1000 frames");
-  std::vector<stage::FrameWindows::Window> w;
+  if (!(spec_.detail_speed_dps >= 0 && spec_.detail_speed_dps <= 1e6))
+    throw InputError("--detail-speed-dps", "", "must be 0 .. 1000000 degrees per second");
   for (const std::string& d : spec_.detail) {
+    if (d == "auto") {
+      auto_detail_ = true;
+      continue;
+    }
     int64_t a = 0, b = 0;
     try {
       size_t n1 = 0, n2 = 0;
@@ -158,14 +168,42 @@ void Session::build_detail_windows() {
       if (n1 != (colon == std::string::npos ? d.size() : colon) || (colon != std::string::npos && n2 != d.size() - colon - 1))
         throw std::invalid_argument("");
     } catch (const std::exception&) {
-      throw InputError("--detail", d, "expected START:END (frames counted from the first frame, END exclusive) or one frame");
+      throw InputError("--detail", d, "expected START:END (frames counted from the first frame, END exclusive), one frame, or auto");
     }
     if (a < 0 || b <= a || b > spec_.frames)
       throw InputError("--detail", d, "frames must satisfy 0 <= START < END <= --frames (" + std::to_string(spec_.frames) + ")");
-    w.push_back({spec_.first_frame + std::max<int64_t>(0, a - spec_.detail_warmup), spec_.first_frame + b});
+    detail_windows_.push_back({a, b});
+  }
+  fidelity_ = scm::Fidelity::Detailed;
+}
+
+// `--detail auto`: the frames where the head turns faster than
+// --detail-speed-dps (its mean speed over the frame, from the run's motion)
+// and the frames an injected stall (--stall) reaches, then the windows given
+// by hand; with the warm-up frames before each, as absolute frames.
+void Session::add_auto_detail() {
+  if (spec_.detail.empty()) return;
+  std::vector<stage::FrameWindows::Window> w = detail_windows_;
+  if (auto_detail_) {
+    const std::vector<double> v = frame_speeds_dps();
+    for (int64_t k = 0; k < spec_.frames; ++k)
+      if (v[static_cast<size_t>(k)] > spec_.detail_speed_dps) {
+        w.push_back({k, k + 1});
+        ++auto_fast_frames_;
+      }
+    // A stall holds the pipeline from its clock on; what it pushed back drains by the next frame's end.
+    const int64_t base = timing_.frame_start_cycle(spec_.first_frame), F = timing_.frame_cycles();
+    for (const stage::StallWindow& st : stall_windows()) {
+      const int64_t k0 = (st.first_cycle - base) / F, k1 = std::min(spec_.frames, (st.first_cycle + st.cycles - base) / F + 2);
+      for (int64_t k = k0; k < k1; ++k) w.push_back({k, k + 1});
+      auto_stall_frames_ += std::max<int64_t>(0, k1 - k0);
+    }
+  }
+  for (auto& [a, b] : w) {
+    a = spec_.first_frame + std::max<int64_t>(0, a - spec_.detail_warmup);
+    b = spec_.first_frame + b;
   }
   timed_frames_ = stage::FrameWindows(std::move(w));
-  fidelity_ = scm::Fidelity::Detailed;
 }
 
 // The head motion: a trace, synthetic motion, a walk (facing where it goes,
@@ -226,11 +264,7 @@ void Session::build_motion() {
     motion_notes_.push_back("trace " + spec_.trace + " over the run's window: " + d[0]);
     motion_notes_.push_back("  " + d[1]);
     for (const auto& w : tracker::motion_warnings(*trace_summary_)) motion_notes_.push_back("warning: " + w);
-    more_poses_ = [poses = std::move(poses)](int64_t, std::vector<tracker::PoseSample>& out) mutable {
-      out = std::move(poses);
-      poses.clear();
-      return true;
-    };
+    trace_poses_ = std::make_shared<std::vector<tracker::PoseSample>>(std::move(poses));
   } else if (spec_.motion.given()) {
     // Synthetic motion keeps its sample times in double seconds; past the pose time limit it refuses to start.
     if (seconds_of(start_ps_) - 1.0 > tracker::kPoseTimeLimitS)
@@ -238,29 +272,9 @@ void Session::build_motion() {
                        "starts " + std::to_string(static_cast<int64_t>(seconds_of(start_ps_))) +
                            " s in; synthetic motion (--motion) covers the first " + tracker::pose_time_limit_text() +
                            ": use a trace or a still head");
-    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
-    auto g = std::make_shared<tracker::MotionGenerator>(
-        spec_.motion.generator(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01));
     motion_source_ = "synthetic " + spec_.motion.motion;
-    more_poses_ = [g](int64_t through_ps, std::vector<tracker::PoseSample>& out) {
-      g->take_through(through_ps, out);
-      return g->done();
-    };
-  } else if (walk_) {  // still head on the walk: sample it at 1 kHz
-    const double t1 = seconds_of(end_ps_) + 0.01;
-    more_poses_ = [tt = seconds_of(start_ps_) - 1.0, t1](int64_t through_ps, std::vector<tracker::PoseSample>& out) mutable {
-      for (; tt <= t1; tt += 1e-3) {
-        tracker::PoseSample p;
-        p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
-        out.push_back(p);
-        if (p.time_ps > through_ps) {
-          tt += 1e-3;
-          return false;
-        }
-      }
-      return true;
-    };
   }
+  more_poses_ = pose_source(true);
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
   if (!spec_.record_live.empty() && spec_.live.empty())
     throw InputError("--record-live", spec_.record_live, "records the motion of live input: use it with --live usb");
@@ -270,6 +284,89 @@ void Session::build_motion() {
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
   extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));
+}
+
+// The run's generated motion from its start, afresh: appends the poses
+// through a time (and one past it) and says whether it has given all. A
+// trace's poses are handed over (`consume`: moved, once) or copied. Empty for
+// a still head without a walk, and for live input.
+Session::MorePoses Session::pose_source(bool consume) const {
+  if (trace_poses_) {
+    if (consume)
+      return [p = trace_poses_](int64_t, std::vector<tracker::PoseSample>& out) {
+        out = std::move(*p);
+        p->clear();
+        return true;
+      };
+    return [p = trace_poses_](int64_t, std::vector<tracker::PoseSample>& out) {
+      out = *p;
+      return true;
+    };
+  }
+  if (spec_.motion.given()) {
+    // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
+    auto g = std::make_shared<tracker::MotionGenerator>(
+        spec_.motion.generator(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01));
+    return [g](int64_t through_ps, std::vector<tracker::PoseSample>& out) {
+      g->take_through(through_ps, out);
+      return g->done();
+    };
+  }
+  if (!walk_) return {};
+  // A still head on the walk: sampled at 1 kHz (the walk turns it, face_walk).
+  const double t1 = seconds_of(end_ps_) + 0.01;
+  return [tt = seconds_of(start_ps_) - 1.0, t1](int64_t through_ps, std::vector<tracker::PoseSample>& out) mutable {
+    for (; tt <= t1; tt += 1e-3) {
+      tracker::PoseSample p;
+      p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+      out.push_back(p);
+      if (p.time_ps > through_ps) {
+        tt += 1e-3;
+        return false;
+      }
+    }
+    return true;
+  };
+}
+
+// On a walk the head faces where it goes, turning on top of that.
+void Session::face_walk(std::vector<tracker::PoseSample>& poses) const {
+  if (!walk_) return;
+  for (auto& p : poses) {
+    const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
+    const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
+    p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
+  }
+}
+
+// The head's mean angular speed over each frame of the run, degrees per
+// second (the rotation from the sample at its start to the one at its end),
+// from the run's motion generated afresh: a second of it held at a time.
+std::vector<double> Session::frame_speeds_dps() const {
+  std::vector<double> out(static_cast<size_t>(spec_.frames), 0.0);
+  MorePoses src = pose_source(false);
+  if (!src) return out;
+  std::deque<tracker::PoseSample> held;
+  bool done = false;
+  auto at = [&held](int64_t t) {  // the last sample at or before t (or the first)
+    auto it = std::upper_bound(held.begin(), held.end(), t, [](int64_t v, const tracker::PoseSample& p) { return v < p.time_ps; });
+    return glm::normalize((it == held.begin() ? *it : *std::prev(it)).orientation);
+  };
+  for (int64_t k = 0; k < spec_.frames; ++k) {
+    const int64_t f0 = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + k));
+    const int64_t f1 = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + k + 1));
+    while (!done && (held.empty() || held.back().time_ps < f1)) {
+      std::vector<tracker::PoseSample> more;
+      done = src(plus_saturated(f1, kPsPerSecond), more);
+      face_walk(more);
+      held.insert(held.end(), more.begin(), more.end());
+    }
+    if (held.empty()) return out;
+    const double c = std::min(1.0, std::abs(glm::dot(at(f0), at(f1))));
+    out[static_cast<size_t>(k)] = rad_to_deg(2.0 * std::acos(c)) / seconds_of(f1 - f0);
+    while (held.size() > 1 && held[1].time_ps <= f1) held.pop_front();
+  }
+  return out;
 }
 
 // After frame k is scanned out (every level reports its frames in order),
@@ -291,12 +388,7 @@ void Session::extend_motion(int64_t through_ps) {
   std::vector<tracker::PoseSample> more;
   motion_done_ = more_poses_(through_ps, more);
   if (more.empty()) return;
-  for (auto& p : more)
-    if (walk_) {
-      const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
-      const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
-      p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
-    }
+  face_walk(more);
   last_pose_ps_ = more.back().time_ps;
   if (!motion_started_) stream_ = dp::OrientationStream(to_orientation_samples(more), motion_source_);
   else stream_.append(to_orientation_samples(more), motion_source_);
@@ -646,6 +738,10 @@ RunSummary Session::run() {
                    {"warmup_frames", spec_.detail_warmup},
                    {"frames_detailed", res.frames - res.untimed_frames},
                    {"frames_functional", res.untimed_frames}};
+    if (auto_detail_)
+      r["detail"]["auto"] = {{"speed_threshold_dps", spec_.detail_speed_dps},
+                             {"frames_over_speed", auto_fast_frames_},
+                             {"frames_with_a_stall", auto_stall_frames_}};
   }
   r["frames_done"] = s.frames_done;
   r["motion"] = motion_source_;

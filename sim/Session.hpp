@@ -57,7 +57,12 @@ class Session {
 
  private:
   void build_detail_windows();
+  void add_auto_detail();
   void build_motion();
+  using MorePoses = std::function<bool(int64_t, std::vector<tracker::PoseSample>&)>;
+  MorePoses pose_source(bool consume) const;
+  void face_walk(std::vector<tracker::PoseSample>& poses) const;
+  std::vector<double> frame_speeds_dps() const;
   void warn_if_planned_for_another_motion() const;
   void extend_motion(int64_t through_ps);
   void advance_motion(int64_t frame);
@@ -70,11 +75,15 @@ class Session {
   RunSpec spec_;
   scm::Fidelity fidelity_ = scm::Fidelity::Functional;
   stage::FrameWindows timed_frames_;
+  std::vector<stage::FrameWindows::Window> detail_windows_;  // --detail's, counted from the first frame
+  bool auto_detail_ = false;                                   // --detail auto
+  int64_t auto_fast_frames_ = 0, auto_stall_frames_ = 0;
   dp::VideoTiming timing_;
   int64_t start_ps_ = 0, end_ps_ = 0;
   // The motion not yet in the stream: appends the poses through a time (and
   // one past it) and says whether it has given all it has.
-  std::function<bool(int64_t, std::vector<tracker::PoseSample>&)> more_poses_;
+  MorePoses more_poses_;
+  std::shared_ptr<std::vector<tracker::PoseSample>> trace_poses_;  // a trace over the run's window, until the run takes it
   bool motion_started_ = false, motion_done_ = false;
   int64_t last_pose_ps_ = 0;
   std::string motion_source_ = "still head", memory_source_;

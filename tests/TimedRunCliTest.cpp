@@ -267,6 +267,48 @@ TEST(TimedRunCli, DetailedWindowsGiveTheDetailedRunsFramesAndWaveform) {
   EXPECT_EQ(cold["frames"][2]["pixel_hash"], full["frames"][2]["pixel_hash"]);  // the frames do not depend on it
 }
 
+// --detail auto: the frames where the head turns faster than the threshold
+// (a head shake's mean speed over each frame, in closed form: angle A sin(2 pi
+// f t)) and those an injected stall reaches -- whose underflows are then the
+// detailed run's, frame by frame.
+TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
+  TempDir d;
+  const double peak = 400, f = 10, threshold = 200, kPi = std::acos(-1.0);
+  const auto r = run_command(kArpsim + " run -q --frames 60 --every 0 --motion shake --peak 400 --frequency 10 --hz 20000" + kSmall +
+                             " --detail auto --detail-speed-dps 200 --detail-warmup 0 --report " + d.file("a.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json a = load(d.file("a.json"));
+  const double delay = a["config"]["pipeline"]["photon_delay_ps"].get<double>(), amp = peak / (2 * kPi * f);
+  int over = 0, checked = 0;
+  for (size_t k = 0; k + 1 < a["frames"].size(); ++k) {
+    const double t0 = (a["frames"][k]["first_photon_ps"].get<double>() - delay) * 1e-12,
+                 t1 = (a["frames"][k + 1]["first_photon_ps"].get<double>() - delay) * 1e-12;
+    const double speed = std::abs(amp * (std::sin(2 * kPi * f * t1) - std::sin(2 * kPi * f * t0))) / (t1 - t0);
+    if (std::abs(speed - threshold) < 20) continue;  // near the threshold: the samples' grid decides
+    ++checked;
+    over += speed > threshold;
+    EXPECT_EQ(a["frames"][k]["level"], speed > threshold ? "detailed" : "functional") << k << ": " << speed << " deg/s";
+  }
+  EXPECT_GT(checked, 40);
+  EXPECT_GT(over, 10);
+  EXPECT_LT(over, checked - 10);
+  EXPECT_EQ(a["detail"]["auto"]["frames_over_speed"], a["detail"]["frames_detailed"]);
+
+  // A stall of 300 clocks in frame 5 (27 904 clocks a frame here): frames 5 and 6 detailed, and a warm-up frame.
+  const std::string stall = " --frames 12 --every 0 --motion shake --peak 100 --stall rotate:145000:300" + kSmall;
+  ASSERT_EQ(run_command(kArpsim + " run -q --fidelity detailed" + stall + " --report " + d.file("s-full.json")).status, 0);
+  const auto s = run_command(kArpsim + " run -q --detail auto" + stall + " --report " + d.file("s-auto.json"));
+  ASSERT_EQ(s.status, 0) << s.output;
+  const nlohmann::json full = load(d.file("s-full.json")), win = load(d.file("s-auto.json"));
+  EXPECT_EQ(win["detail"]["windows"], nlohmann::json::parse("[[4, 7]]"));
+  EXPECT_EQ(win["detail"]["auto"]["frames_with_a_stall"], 2);
+  EXPECT_GT(full["underflows"].get<int64_t>(), 0);
+  EXPECT_EQ(win["underflows"], full["underflows"]);
+  for (size_t k = 0; k < 12; ++k)
+    for (const char* key : {"pixel_hash", "photon_hash", "underflows", "late_discarded", "latency_ps"})
+      EXPECT_EQ(win["frames"][k][key], full["frames"][k][key]) << k << " " << key;
+}
+
 // Each module bench writes its waveform on request, and the view committed
 // for it in waveforms/ matches what `arpsim gtkw` makes of that waveform.
 TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {

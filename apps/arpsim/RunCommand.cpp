@@ -92,8 +92,11 @@ Runner add_run_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--detail", s.detail,
                   "Switch to the detailed level for these frames, START:END (counted from the first frame, END exclusive) or "
-                  "one frame, and back: functional elsewhere, identical frames; repeatable")
+                  "one frame, and back: functional elsewhere, identical frames; repeatable. auto: the frames where the head "
+                  "turns faster than --detail-speed-dps or a --stall reaches")
       ->take_all();
+  cmd->add_option("--detail-speed-dps", s.detail_speed_dps, "--detail auto: head speed over a frame above which it is detailed, deg/s")
+      ->capture_default_str();
   cmd->add_option("--detail-warmup", s.detail_warmup, "--detail: detailed frames before each window (what its registers hold at the start)")
       ->capture_default_str();
   cmd->add_option("--trace", s.trace, "Trace file (CSV, docs/tracker.md); e.g. from arpsim tracker synth");
