@@ -12,6 +12,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "FrameImage.hpp"
 #include "HardwareCost.hpp"
@@ -183,6 +184,7 @@ void Session::build_detail_windows() {
 // by hand; with the warm-up frames before each, as absolute frames.
 void Session::add_auto_detail() {
   if (spec_.detail.empty()) return;
+  const int64_t base = timing_.frame_start_cycle(spec_.first_frame), F = timing_.frame_cycles();
   std::vector<stage::FrameWindows::Window> w = detail_windows_;
   if (auto_detail_) {
     const std::vector<double> v = frame_speeds_dps();
@@ -192,18 +194,25 @@ void Session::add_auto_detail() {
         ++auto_fast_frames_;
       }
     // A stall holds the pipeline from its clock on; what it pushed back drains by the next frame's end.
-    const int64_t base = timing_.frame_start_cycle(spec_.first_frame), F = timing_.frame_cycles();
-    for (const stage::StallWindow& st : stall_windows()) {
-      const int64_t k0 = (st.first_cycle - base) / F, k1 = std::min(spec_.frames, (st.first_cycle + st.cycles - base) / F + 2);
-      for (int64_t k = k0; k < k1; ++k) w.push_back({k, k + 1});
-      auto_stall_frames_ += std::max<int64_t>(0, k1 - k0);
-    }
+    std::set<int64_t> stalled;
+    for (const stage::StallWindow& st : stall_windows())
+      for (int64_t k = (st.first_cycle - base) / F; k < std::min(spec_.frames, (st.first_cycle + st.cycles - base) / F + 2); ++k)
+        stalled.insert(k);
+    for (const int64_t k : stalled) w.push_back({k, k + 1});
+    auto_stall_frames_ = static_cast<int64_t>(stalled.size());
   }
   for (auto& [a, b] : w) {
     a = spec_.first_frame + std::max<int64_t>(0, a - spec_.detail_warmup);
     b = spec_.first_frame + b;
   }
   timed_frames_ = stage::FrameWindows(std::move(w));
+  // A stall in a functional frame would stall nothing: said, not ignored.
+  const std::vector<stage::StallWindow> stalls = stall_windows();
+  for (size_t i = 0; i < stalls.size(); ++i)
+    if (const int64_t k = (stalls[i].first_cycle - base) / F; !timed_frames_.contains(spec_.first_frame + k))
+      throw InputError("--stall", spec_.stalls[i],
+                       "falls in frame " + std::to_string(k) + ", which --detail leaves at the functional level (no clock to stall there): "
+                       "add --detail " + std::to_string(k) + " or use --detail auto");
 }
 
 // The head motion: a trace, synthetic motion, a walk (facing where it goes,
