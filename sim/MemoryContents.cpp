@@ -40,7 +40,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
                                                     " m, the farthest a view is supported (docs/accuracy.md)");
   }
   const glm::dquat q(head.w, head.x, head.y, head.z);
-  const auto render = make_bank_renderer(renderer, threads);
+  const auto render = make_bank_renderer(renderer, threads, face_culling);
   for (int e = 0; e < mem.eyes(); ++e) {
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
     render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank, nullptr);

@@ -19,6 +19,7 @@ struct MemoryContents {
   double time_s = 0.0;                 // --scene: animation time
   double ipd_m = 0.064;                // distance between the eyes
   std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
+  bool face_culling = true;            // not --no-face-culling: each object drawn only on the faces it reaches
   // The scene the configuration was planned for (plan.scene_hash; 0: none) and the configuration's
   // name: load_scene() warns once when the scene is another (expect_plan sets both).
   int64_t plan_scene_hash = 0;

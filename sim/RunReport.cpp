@@ -95,7 +95,7 @@ nlohmann::json pipeline_report(const scm::TimedResult& res, const dp::ArpConfig&
   for (const auto& j : res.host_jobs)
     jobs.push_back({{"start_ps", j.start_ps}, {"commit_ps", j.commit_ps}, {"swap_ps", j.swap_ps}, {"swap_frame", j.swap_frame}});
   const dp::VideoTiming t(c.timing);
-  return {{"fidelity", scm::to_string(res.fidelity)},
+  nlohmann::json report = {{"fidelity", scm::to_string(res.fidelity)},
           {"fidelity_description", scm::describe(res.fidelity)},
           {"pipeline",
            {{"issue_lead_cycles", res.issue_lead},
@@ -121,6 +121,12 @@ nlohmann::json pipeline_report(const scm::TimedResult& res, const dp::ArpConfig&
             {"vcd_time_zero_ps", t.cycles_to_ps(res.first_cycle)},
             {"vcd", vcd}}},
           {"config", config::to_json(c)}};
+  // Only the cycle-accurate levels have clocks to evaluate or gate (--no-clock-gating).
+  if (res.fidelity == scm::Fidelity::Cycle || res.fidelity == scm::Fidelity::Detailed) {
+    report["simulation"]["pixel_clocks_evaluated"] = res.evaluated_cycles;
+    report["simulation"]["host_clocks_evaluated"] = res.evaluated_host_cycles;
+  }
+  return report;
 }
 
 std::vector<std::string> RunSummary::lines() const {

@@ -68,6 +68,7 @@ struct RunSpec {
   int64_t first_frame = 0, frames = 60;
   std::vector<std::string> stalls;               // --stall STAGE:CLOCK:CYCLES
   bool speculate = true;                         // not --no-speculation
+  bool clock_gating = true;                      // not --no-clock-gating
   int threads = 0;
   OutputSpec out;
 };

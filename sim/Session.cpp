@@ -94,6 +94,8 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if ((!o.vcd_lines.empty() || !o.vcd_time_us.empty()) && o.vcd.empty())
     throw InputError(o.vcd_lines.empty() ? "--vcd-time-us" : "--vcd-lines", "", "needs --vcd");
   if (o.vcd_signals != "all" && o.vcd_signals != "control") throw InputError("--vcd-signals", o.vcd_signals, "must be all or control");
+  if (!s.clock_gating && fid != scm::Fidelity::Detailed && fid != scm::Fidelity::Cycle)
+    throw InputError("--no-clock-gating", "", "only the cycle-accurate levels (cycle, detailed) have clocks to gate");
   if (o.vcd_signals != "all" && o.vcd.empty()) throw InputError("--vcd-signals", o.vcd_signals, "needs --vcd");
   if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
@@ -448,8 +450,10 @@ void Session::build_memories() {
     if (!(h.warp_falloff >= 0) || h.warp_falloff > h.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
     host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : h.region_size / 2);
   }
-  if (spec_.memories.renderer != "software") host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads));
+  if (spec_.memories.renderer != "software")
+    host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads, spec_.memories.face_culling));
   host_->set_render_threads(spec_.threads);
+  host_->set_face_culling(spec_.memories.face_culling);
   host_->prime(seconds_of(start_ps_));
   memory_source_ = "scene " + scene_->name + " (" + std::to_string(scene_->objects.size()) + " objects, " +
                    std::to_string(scene_->triangles()) + " triangles), host rendering " +
@@ -612,6 +616,7 @@ RunSummary Session::run() {
   opt.fidelity = fidelity_;
   opt.threads = spec_.threads;
   opt.speculate = spec_.speculate;
+  opt.clock_gating = spec_.clock_gating;
   opt.progress = on_progress;
   if (live_ && on_progress)  // a live run slower than the display says how far behind the tracker it is
     opt.progress = [this](double f, const std::string& what) { on_progress(f, what + live_lag_text()); };

@@ -309,6 +309,46 @@ TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
       EXPECT_EQ(win["frames"][k][key], full["frames"][k][key]) << k << " " << key;
 }
 
+// What the model skips to be fast changes only the work: without clock
+// gating the cycle-accurate levels evaluate every pixel and host clock and
+// report the same (a stall filling the FIFOs included); without face culling
+// the host submits every object to all six faces and the frames are the same.
+TEST(TimedRunCli, ClockGatingAndFaceCullingChangeOnlyTheWork) {
+  TempDir d;
+  const std::string common = " run -q --frames 3 --every 0 --motion shake --peak 1000 --stall address:30000:200" + kSmall;
+  for (const std::string level : {"cycle", "detailed"}) {
+    nlohmann::json rep[2];
+    for (int gated = 0; gated < 2; ++gated) {
+      const std::string j = d.file(level + std::to_string(gated) + ".json");
+      const auto r = run_command(kArpsim + common + " --fidelity " + level + (gated ? "" : " --no-clock-gating") + " --report " + j);
+      ASSERT_EQ(r.status, 0) << r.output;
+      rep[gated] = load(j);
+    }
+    const nlohmann::json& sim0 = rep[0]["simulation"];
+    const nlohmann::json& sim1 = rep[1]["simulation"];
+    EXPECT_EQ(sim0["pixel_clocks_evaluated"], sim0["pixel_clocks"]) << level;
+    EXPECT_LT(sim1["pixel_clocks_evaluated"].get<int64_t>(), sim1["pixel_clocks"].get<int64_t>()) << level;
+    EXPECT_GT(sim0["host_clocks_evaluated"].get<int64_t>(), 0) << level;
+    EXPECT_EQ(sim1["host_clocks_evaluated"], 0) << level;  // no write-port job: the host clock never ticks
+    EXPECT_GT(rep[1]["underflows"].get<int64_t>(), 0) << level;
+    rep[0].erase("simulation");
+    rep[1].erase("simulation");
+    EXPECT_EQ(rep[0], rep[1]) << level;
+  }
+  nlohmann::json walk[2];
+  for (int culled = 0; culled < 2; ++culled) {
+    const std::string j = d.file("walk" + std::to_string(culled) + ".json");
+    const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 2 --every 0 --error-every 0 --baseline" +
+                               " --set memory.face_size=64 --engine-triangles 1e15 --engine-fill 1e15 --engine-setup 0" +
+                               (culled ? "" : " --no-face-culling") + " --report " + j);
+    ASSERT_EQ(r.status, 0) << r.output;
+    walk[culled] = load(j);
+  }
+  // An engine that never overloads draws every job either way: the same pixels, frame for frame.
+  EXPECT_GT(walk[0]["host"]["triangles_per_s"].get<double>(), 2 * walk[1]["host"]["triangles_per_s"].get<double>());
+  EXPECT_EQ(walk[0]["frames"], walk[1]["frames"]);
+}
+
 // Each module bench writes its waveform on request, and the view committed
 // for it in waveforms/ matches what `arpsim gtkw` makes of that waveform.
 TEST(TimedRunCli, ModuleBenchWaveformsMatchTheirCommittedViews) {

@@ -94,6 +94,9 @@ void add_memory_options(CLI::App& cmd, sim::MemoryContents& m) {
                  "Mesa's llvmpipe without one; docs/performance.md)")
       ->capture_default_str();
   cmd.add_option("--ipd", m.ipd_m, "--scene: distance between the eyes, metres")->capture_default_str();
+  cmd.add_flag("--no-face-culling{false}", m.face_culling,
+               "--scene: draw every object on all six faces, clipped there, instead of only on the faces its bound reaches "
+               "(the same texels, more work: to measure what the culling saves)");
 }
 
 }  // namespace arp::app

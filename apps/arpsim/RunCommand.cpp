@@ -116,6 +116,8 @@ Runner add_run_command(CLI::App& app) {
       ->take_all();
   cmd->add_flag("--no-speculation", a->no_speculation,
                 "cycle level: compute every pixel stage by stage (no frame speculation; same results, slower)");
+  cmd->add_flag("--no-clock-gating{false}", s.clock_gating,
+                "cycle and detailed: tick every pixel and host clock, idle ones too (same results, slower: what gating saves)");
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run(*a); };
 }

@@ -44,6 +44,8 @@ class HostSimulation {
   void use_renderer(BankRenderer r) { bank_renderer_ = std::move(r); }
   // Threads the software renderer draws faces on (0: every core): the run's --threads.
   void set_render_threads(int n) { renderer_.set_threads(n); }
+  // The software renderer's per-face culling (off: every object on every face; the modelled load counts what is drawn).
+  void set_face_culling(bool on) { renderer_.set_face_culling(on); }
 
   // Region priority rendering instead of object-level: each object of the
   // (segmented) scene belongs to `object_region[i]`, whose memory the region

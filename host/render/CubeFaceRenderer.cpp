@@ -169,7 +169,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
                                            const VertexWarp* warp) const {
   RenderStats st;
   faces.resize(6);
-  FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m);
+  FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m, cull_faces_);
   const auto& per_face = lists.per_face;
   const auto& model = lists.model;
   st.objects = lists.objects;
@@ -293,7 +293,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
 
 RenderStats CubeFaceRenderer::count(const Scene& scene, const std::vector<size_t>& objects, double t,
                                     const glm::dvec3& eye) const {
-  const FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m);
+  const FaceLists lists = cull_to_faces(scene, objects, t, eye, depth_.near_m, cull_faces_);
   RenderStats st;
   st.objects = lists.objects;
   for (const auto& on_face : lists.per_face) {

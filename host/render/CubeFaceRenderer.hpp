@@ -78,11 +78,14 @@ class CubeFaceRenderer {
   const DepthCode& depth() const { return depth_; }
   // Threads drawing faces (one face each) and storing them: 0, every hardware thread. Any count gives the same bits.
   void set_threads(int n) { threads_ = n; }
+  // Off: every object is drawn on all six faces and clipped there (the same texels, more work).
+  void set_face_culling(bool on) { cull_faces_ = on; }
 
  private:
   DepthCode depth_;
   LightModel light_;
   int threads_ = 0;
+  bool cull_faces_ = true;
 };
 
 }  // namespace arp::host

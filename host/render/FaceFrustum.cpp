@@ -26,7 +26,7 @@ bool sphere_meets_face(const glm::dvec3& c, double r, int f, double near) {
 }
 
 FaceLists cull_to_faces(const Scene& scene, const std::vector<size_t>& objects, double t, const glm::dvec3& eye,
-                        double near_m) {
+                        double near_m, bool cull) {
   FaceLists c;
   c.model.resize(scene.objects.size());
   c.drawn.assign(scene.objects.size(), 0);
@@ -35,7 +35,7 @@ FaceLists cull_to_faces(const Scene& scene, const std::vector<size_t>& objects, 
     const Sphere b = o.world_bound(t);
     bool any = false;
     for (int f = 0; f < 6; ++f)
-      if (sphere_meets_face(b.center - eye, b.radius, f, near_m)) {
+      if (!cull || sphere_meets_face(b.center - eye, b.radius, f, near_m)) {
         c.per_face[static_cast<size_t>(f)].push_back(i);
         any = true;
       }

@@ -26,7 +26,8 @@ bool sphere_meets_face(const glm::dvec3& center, double r, int face, double near
 
 // What a render at time t from `eye` submits: per face, the objects (indices into scene.objects, `objects`,
 // or all if it is empty) whose bound reaches it, in scene order (deterministic ties); each drawn object's
-// model matrix at t; how many objects reach any face.
+// model matrix at t; how many objects reach any face. `cull` false: every object on every face (what the
+// culling saves is measured against it: bench/culling-gating.sh).
 struct FaceLists {
   std::array<std::vector<size_t>, 6> per_face;
   std::vector<glm::dmat4> model;  // by scene index, set for the objects drawn
@@ -34,6 +35,6 @@ struct FaceLists {
   int64_t objects = 0;
 };
 FaceLists cull_to_faces(const Scene& scene, const std::vector<size_t>& objects, double t_s, const glm::dvec3& eye,
-                        double near_m);
+                        double near_m, bool cull = true);
 
 }  // namespace arp::host

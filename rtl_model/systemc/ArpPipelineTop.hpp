@@ -56,7 +56,8 @@ struct configured_stage<S, std::void_t<decltype(std::declval<const S&>().stats()
 template <class List>
 class DetailedPipeline : public sc_core::sc_module {
  public:
-  DetailedPipeline(sc_core::sc_module_name name, const stage::TimedInputs& in)
+  // `clock_gating` off: both clocks tick every cycle, idle ones too (same results; to measure what gating saves).
+  DetailedPipeline(sc_core::sc_module_name name, const stage::TimedInputs& in, bool clock_gating = true)
       : sc_core::sc_module(name),
         chain_(in),
         w_(run_window(timing().stage(), in.config)),
@@ -64,10 +65,12 @@ class DetailedPipeline : public sc_core::sc_module {
         host_clock("host_clock", in.config.timed.host_clock_hz, w_.base_ps, w_.first_host_cycle, w_.end_host_cycle),
         tracker("tracker_interface", *in.orientation, w_.base_ps, w_.end_ps) {
     DisplayMemoryBanks& banks = chain_.template module<index_of<DisplayMemoryBanks>()>();
-    host_clock.gate([&banks](int64_t n) { return banks.host_port().next_active_cycle(n); });
     // The pixel clock is gated while the pipeline is empty and nothing is due
     // (most of the blanking): those clocks would change nothing.
-    pixel_clock.gate([this](int64_t n) { return tracing_ || !idle() ? n : timing().stage().next_busy_cycle(n, w_.end_cycle); });
+    if (clock_gating) {
+      host_clock.gate([&banks](int64_t n) { return banks.host_port().next_active_cycle(n); });
+      pixel_clock.gate([this](int64_t n) { return tracing_ || !idle() ? n : timing().stage().next_busy_cycle(n, w_.end_cycle); });
+    }
     chain_.bind_clock(pixel_clock);
     banks.host_clk(host_clock);
     chain_.for_each_fifo([this](auto& f) { f.start_statistics(w_.first_cycle); });
@@ -80,6 +83,8 @@ class DetailedPipeline : public sc_core::sc_module {
   const HmdScanOut& scan_out() const { return chain_.template module<List::kSize - 1>(); }
   const DisplayMemoryBanks& memories() const { return chain_.template module<index_of<DisplayMemoryBanks>()>(); }
   const TrackerInterface& tracker_interface() const { return tracker; }
+  int64_t evaluated_cycles() const { return pixel_clock.rising_edges(); }
+  int64_t evaluated_host_cycles() const { return host_clock.rising_edges(); }
   StageChain<List>& chain() { return chain_; }
 
   // Waveforms: clocks, then every module (the tracker after the timing generator), then FIFO occupancy.

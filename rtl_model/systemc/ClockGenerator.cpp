@@ -45,6 +45,7 @@ void ClockGenerator::edge() {
   }
   skipped_ = false;
   ++cycle_;
+  ++edges_;
   posedge_.notify(SC_ZERO_TIME);  // the clocked processes run in the next delta, as after a signal's edge
   if (traced_) {
     level_ = true;

@@ -39,6 +39,7 @@ class ClockGenerator : public sc_core::sc_module, public ClockIf {
   void gate(std::function<int64_t(int64_t)> next_needed) { gate_ = std::move(next_needed); }
 
   int64_t cycle() const override { return cycle_; }
+  int64_t rising_edges() const { return edges_; }  // the cycles clocked (what gating skipped is not among them)
   const sc_core::sc_event& posedge_event() const override { return posedge_; }
   // Waveforms: the clock level (with its falling edge, until stop_trace()), the cycle number.
   void trace(sc_core::sc_trace_file* tf, const std::string& name);
@@ -52,6 +53,7 @@ class ClockGenerator : public sc_core::sc_module, public ClockIf {
   sc_core::sc_event posedge_;
   int64_t hz_, base_ps_, end_;
   int64_t cycle_;
+  int64_t edges_ = 0;
   bool started_ = false, level_ = false, traced_ = false, skipped_ = false;
 };
 

@@ -16,7 +16,7 @@ Stages make_stages(const stage::StageContext& ctx, std::index_sequence<I...>) {
 }
 }  // namespace
 
-FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in, bool speculate)
+FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in, bool speculate, bool clock_gating)
     : sc_module(name),
       ctx_{in, ArpStages::schedule(in.config)},
       stages_(make_stages<Stages>(ctx_, std::make_index_sequence<kN>{})),
@@ -27,7 +27,8 @@ FastCycleModel::FastCycleModel(sc_module_name name, const stage::TimedInputs& in
       host_hz_(in.config.timed.host_clock_hz),
       tracker("tracker_interface", *in.orientation, w_.base_ps, w_.end_ps),
       cycle_(w_.first_cycle),
-      host_cycle_(w_.first_host_cycle) {
+      host_cycle_(w_.first_host_cycle),
+      gating_(clock_gating) {
   std::get<stage::MemoryReadStage>(stages_).connect(&host_);
   std::apply([this](auto&... f) { (f.start_statistics(w_.first_cycle), ...); }, fifos_);
   if (speculate) {
@@ -78,10 +79,10 @@ void FastCycleModel::pixel_domain() {
   int64_t c = cycle_;
   while (c < stop) {
     evaluate(c++);
-    if (!tracing_ && c < stop && idle()) c = std::min(stop, timing().next_busy_cycle(c, w_.end_cycle));
+    if (gating_ && !tracing_ && c < stop && idle()) c = std::min(stop, timing().next_busy_cycle(c, w_.end_cycle));
   }
   cycle_ = c;
-  if (!tracing_ && idle()) cycle_ = timing().next_busy_cycle(cycle_, w_.end_cycle);
+  if (gating_ && !tracing_ && idle()) cycle_ = timing().next_busy_cycle(cycle_, w_.end_cycle);
   if (cycle_ < w_.end_cycle) next_trigger(sim_time(dp::clock_cycle_to_ps(cycle_, pixel_hz_), w_.base_ps) - now);
 }
 
@@ -90,9 +91,10 @@ void FastCycleModel::host_domain() {
   if (host_started_) {
     host_.tick(host_cycle_);
     ++host_cycle_;
+    ++host_evaluated_;
   }
   host_started_ = true;
-  host_cycle_ = host_.next_active_cycle(host_cycle_);  // gated while the port is idle
+  if (gating_) host_cycle_ = host_.next_active_cycle(host_cycle_);  // gated while the port is idle
   if (host_cycle_ < w_.end_host_cycle)
     next_trigger(sim_time(dp::clock_cycle_to_ps(host_cycle_, host_hz_), w_.base_ps) - now);
 }

@@ -29,7 +29,8 @@ namespace arp::scm {
 class FastCycleModel : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(FastCycleModel);
-  FastCycleModel(sc_core::sc_module_name name, const stage::TimedInputs& in, bool speculate);
+  // `clock_gating` off: every pixel and host clock evaluated, idle ones too (same results; to measure what gating saves).
+  FastCycleModel(sc_core::sc_module_name name, const stage::TimedInputs& in, bool speculate, bool clock_gating = true);
 
   const RunWindow& window() const { return w_; }
   void trace(sc_core::sc_trace_file* tf, bool data = true);
@@ -43,6 +44,7 @@ class FastCycleModel : public sc_core::sc_module {
   const stage::HostWritePort& host_port() const { return host_; }
   const FrameSpeculation* speculation() const { return spec_.get(); }
   int64_t evaluated_cycles() const { return evaluated_; }
+  int64_t evaluated_host_cycles() const { return host_evaluated_; }
 
  private:
   template <class... M>
@@ -72,8 +74,9 @@ class FastCycleModel : public sc_core::sc_module {
   TrackerInterface tracker;
   std::unique_ptr<FrameSpeculation> spec_;
   int64_t cycle_, host_cycle_;
-  int64_t evaluated_ = 0;
+  int64_t evaluated_ = 0, host_evaluated_ = 0;
   bool tracing_ = false, started_ = false, host_started_ = false;
+  bool gating_ = true;
 };
 
 }  // namespace arp::scm

@@ -117,6 +117,8 @@ void fill_cycle_statistics(TimedResult& r, const Model& m, const stage::MemoryRe
   r.issue_stalls = timing.issue_stalls();
   r.orientation_writes = m.tracker_interface().writes();
   r.late_discarded = scan_out.late_discarded();
+  r.evaluated_cycles = m.evaluated_cycles();
+  r.evaluated_host_cycles = m.evaluated_host_cycles();
 }
 
 bool g_simulated = false;
@@ -165,13 +167,13 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   RunWindow w{};
   switch (opt.fidelity) {
     case Fidelity::Detailed:
-      rtl = std::make_unique<ArpPipelineTop>("arp", run_in);
+      rtl = std::make_unique<ArpPipelineTop>("arp", run_in, opt.clock_gating);
       w = rtl->window();
       if (windows) untimed = std::make_unique<FunctionalStandIn>("functional_frames", run_in, w.base_ps, opt.threads);
       break;
     case Fidelity::Cycle:
       // Waveforms show every stage's data: no speculation while tracing.
-      fast = std::make_unique<FastCycleModel>("arp", run_in, opt.vcd.path.empty() && opt.speculate);
+      fast = std::make_unique<FastCycleModel>("arp", run_in, opt.vcd.path.empty() && opt.speculate, opt.clock_gating);
       w = fast->window();
       break;
     default:

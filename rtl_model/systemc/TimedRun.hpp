@@ -42,6 +42,7 @@ struct TimedRunOptions {
   std::function<void(double fraction, const std::string& what)> progress;
   int threads = 0;  // functional level only
   bool speculate = true;  // fast cycle-accurate level: FrameSpeculation (off: every stage computes every pixel)
+  bool clock_gating = true;  // cycle-accurate levels: skip the clocks that would change nothing (off: every clock)
   // Polled after each scanned-out frame: true ends the run there (Ctrl-C);
   // the result then covers the frames finished.
   std::function<bool()> stop;
@@ -59,6 +60,8 @@ struct TimedResult {
   int64_t speculated_pixels = 0, fallback_pixels = 0;  // fast level: on/off the nominal schedule
   int64_t swaps = 0, underflows = 0, late_discarded = 0, issue_stalls = 0, orientation_writes = 0;
   int64_t first_cycle = 0, end_cycle = 0;  // pixel clocks simulated: [first, end)
+  int64_t evaluated_cycles = 0;            // of those, the ones the cycle-accurate levels evaluated (clock gating skips the rest)
+  int64_t evaluated_host_cycles = 0;       // host clocks evaluated (gated while the write port is idle)
   int64_t issue_lead = 0, orientation_lead = 0;
   double wall_seconds = 0;
   double cycles_per_second() const {

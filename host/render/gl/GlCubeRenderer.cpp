@@ -234,7 +234,7 @@ RenderStats GlCubeRenderer::draw(const Scene& scene, const std::vector<size_t>& 
   Gl& g = *gl_;
   g.targets(S);
   RenderStats st;
-  const FaceLists lists = cull_to_faces(scene, objects, t, eye, dc.near_m);
+  const FaceLists lists = cull_to_faces(scene, objects, t, eye, dc.near_m, cull_faces_);
   const auto& per_face = lists.per_face;
   const auto& model = lists.model;
   st.objects = lists.objects;

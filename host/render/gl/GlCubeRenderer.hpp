@@ -45,6 +45,7 @@ class GlCubeRenderer {
   // Threads converting the read-back faces into memory words (0: every hardware thread), as
   // CubeFaceRenderer::set_threads; OpenGL's own threads are EglOptions::threads.
   void set_threads(int n) { threads_ = n; }
+  void set_face_culling(bool on) { cull_faces_ = on; }  // as CubeFaceRenderer's
 
   const EglContext& context() const;
   const DepthCode& depth() const { return depth_; }
@@ -56,6 +57,7 @@ class GlCubeRenderer {
   std::unique_ptr<Gl> gl_;
   std::vector<uint64_t> words_;
   int threads_ = 0;  // the six faces' texel words, stored into the bank after the readback
+  bool cull_faces_ = true;
 };
 
 }  // namespace arp::host
