@@ -200,10 +200,10 @@ std::string hardware_cost_source() {
   return s + ")";
 }
 
-int64_t display_memory_bytes(const dp::ArpConfig& c, int faces) {
+int64_t display_memory_bytes(const dp::ArpConfig& c) {
   const int64_t S = c.memory.face_size;
   const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
-  return int64_t{c.timing.eyes} * c.memory.count * 2 * faces * S * S * bits / 8;
+  return int64_t{c.timing.eyes} * c.memory.count * 2 * c.memory.faces_present() * S * S * bits / 8;
 }
 
 }  // namespace arp::sim

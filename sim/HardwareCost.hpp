@@ -43,8 +43,8 @@ HardwareCost hardware_cost(const dp::ArpConfig& c);
 std::string hardware_cost_source();
 
 // The hardware's display memory in bytes for a configuration: eyes x memories x two buffers (front
-// and back) x `faces` x S^2 texels of colour + depth bits.
-int64_t display_memory_bytes(const dp::ArpConfig& c, int faces = 6);
+// and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits.
+int64_t display_memory_bytes(const dp::ArpConfig& c);
 
 // For tests: the RTL modules the cost CSV must cover, and the parsed rows.
 std::vector<std::string> rtl_module_keys();

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ConfigFile.hpp"
+#include "MemoryContents.hpp"
 #include "TradeMeasure.hpp"
 #include "common/InputError.hpp"
 #include "common/Units.hpp"
@@ -91,6 +92,12 @@ class WidthSearch {
   accuracy::Options opt_;
 };
 
+std::string face_list(const std::array<int, 6>& faces) {
+  std::string s = "[";
+  for (size_t f = 0; f < 6; ++f) s += (f ? ", " : "") + std::to_string(faces[f]);
+  return s + "]";
+}
+
 std::string widths_text(const dp::DatapathWidths& w) {
   std::string s;
   for (const WidthKey& k : kWidths) s += (s.empty() ? "" : ", ") + std::string(k.key + 9) + " " + std::to_string(w.*k.field);
@@ -101,6 +108,7 @@ std::string widths_text(const dp::DatapathWidths& w) {
 struct MotionSamples {
   std::vector<double> t;
   double span_s = 0;
+  double step_s = 0;  // between samples
 };
 MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   MotionSamples m;
@@ -109,6 +117,7 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   const int64_t frames = static_cast<int64_t>(std::clamp(std::ceil(m.span_s * hz) + 1, 1.0, 1099511627776.0));
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
   for (int64_t f = 0; f < frames; f += step) m.t.push_back(static_cast<double>(f) / hz);
+  m.step_s = static_cast<double>(step) / hz;
   return m;
 }
 
@@ -345,20 +354,32 @@ Plan make_plan(const PlanRequest& r) {
                          why});
   }
 
-  // 4. Faces any object reaches over the motion (the memory allocates only the tiles written).
+  // 4. Faces any object reaches over the motion, by the renderers' own test (host::sphere_meets_face) with each
+  // bound grown by what the samples do not see: an eye is up to half the distance between the eyes from the
+  // walk's point, and the head moves up to a sample step between samples. (An animated object's own motion
+  // between samples is not covered beyond that: the samples are display frames, or at most kMaxSamples.)
   const double near_m = host::DepthCode{}.near_m;
+  const double margin = 0.5 * MemoryContents{}.ipd_m + walk.speed() * ms.step_s;
   for (const double t : ms.t) {
-    const host::FaceLists fl = host::cull_to_faces(scene, {}, t, walk.position(t), near_m);
-    for (int f = 0; f < 6; ++f) p.faces_reached[static_cast<size_t>(f)] = p.faces_reached[static_cast<size_t>(f)] || !fl.per_face[static_cast<size_t>(f)].empty();
+    const glm::dvec3 head = walk.position(t);
+    for (const host::SceneObject& o : scene.objects) {
+      const host::Sphere b = o.world_bound(t);
+      for (int f = 0; f < 6; ++f)
+        if (host::sphere_meets_face(b.center - head, b.radius + margin, f, near_m)) p.faces_reached[static_cast<size_t>(f)] = true;
+    }
   }
-  static const char* const kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
-  std::string absent;
-  for (int f = 0; f < 6; ++f)
-    if (!p.faces_reached[static_cast<size_t>(f)]) absent += (absent.empty() ? "" : ", ") + std::string(kFaceNames[f]);
-  p.not_decided.push_back(
-      "which faces exist: " + (absent.empty() ? std::string("every face is reached by some object") : "faces " + absent + " are never reached by any object") +
-      "; the memory allocates only the 32 x 32 tiles written (docs/host.md), so an unreached face costs the model nothing, "
-      "but there is no key yet to leave it out of the hardware");
+  for (int f = 0; f < 6; ++f) p.config.memory.faces[static_cast<size_t>(f)] = p.faces_reached[static_cast<size_t>(f)] ? 1 : 0;
+  if (scene.objects.empty()) p.config.memory.faces = {1, 1, 1, 1, 1, 1};  // nothing to place: keep the plain cube (background only)
+  const int present = p.config.memory.faces_present();
+  p.choices.push_back(
+      {"memory.faces", face_list(p.config.memory.faces),
+       scene.objects.empty() ? "the scene is empty: no face is ever written; the cube is kept whole (it shows the background)"
+       : present == 6        ? "every face is reached by some object at some point of the motion"
+                             : "faces " + p.config.memory.absent_face_names() +
+                                   " are never reached by any object's bounding sphere at any point of the motion (the renderers' "
+                                   "own face test, host::cull_to_faces): left out of every memory, " +
+                                   std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
+                                   "loses those texels and says so"});
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");

@@ -741,6 +741,14 @@ RunSummary Session::run() {
       s.notes.push_back(b);
     }
   }
+  if (const int64_t lost = memories_.writes_lost(); lost > 0) {
+    char b[400];
+    std::snprintf(b, sizeof b,
+                  "  warning: %" PRId64 " texels the host drew fell on cube faces memory.faces leaves out (%s) and were lost: the "
+                  "configuration was planned for another scene or motion (arpsim plan; footprint.texels_lost_on_absent_faces)",
+                  lost, spec_.config.memory.absent_face_names().c_str());
+    s.notes.push_back(b);
+  }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
@@ -762,9 +770,12 @@ RunSummary Session::run() {
   r["cube_map"] = memory_source_;
   r["images"] = images_;
   // What was modelled: the display memories' storage (sparse tiles, both buffers) against what the
-  // configuration's hardware holds (every face of every memory, double-buffered).
+  // configuration's hardware holds (the faces present of every memory, double-buffered), and what the host
+  // drew on faces the configuration leaves out.
   r["footprint"] = {{"display_memory_bytes_peak", std::max(memory_peak_bytes_, memories_.bytes_allocated())},
                     {"display_memory_tiles_at_end", memories_.tiles_allocated()},
+                    {"display_memory_faces", spec_.config.memory.faces_present()},
+                    {"texels_lost_on_absent_faces", memories_.writes_lost()},
                     {"display_memory_bytes_hardware", display_memory_bytes(spec_.config)}};
   if (trace_summary_) {
     const tracker::MotionSummary& m = *trace_summary_;

@@ -28,6 +28,28 @@ TEST(DisplayMemoryBank, StorageIsSparse) {
   EXPECT_EQ(set.bytes_allocated(), 0u);  // 8 banks, 2 x 6 faces each, all free
 }
 
+// A face the configuration leaves out (memory.faces) has no storage: what the host writes there is lost
+// and counted, texel by texel or a face at a time, and the face reads empty; the others are untouched.
+TEST(DisplayMemoryBank, AnAbsentFaceStoresNothingAndCountsWhatIsLost) {
+  MemoryConfig m;
+  m.face_size = 64;
+  m.faces = {1, 1, 0, 1, 1, 1};  // no +Y
+  DisplayMemoryBank b{MemoryFormat(m)};
+  b.write(2, 5, 5, 0x123456, 7);
+  std::vector<uint64_t> face(64 * 64, b.format().empty_word());
+  face[100] = face[2000] = (uint64_t{9} << 32) | 0xABCDEF;
+  EXPECT_EQ(b.write_face(2, face.data(), b.format().empty_word()), 0);
+  EXPECT_EQ(b.writes_lost(), 3);
+  EXPECT_EQ(b.tiles_allocated(), 0u);
+  EXPECT_EQ(b.write_face(3, face.data(), b.format().empty_word()), 2);
+  b.commit();
+  b.vblank();
+  EXPECT_EQ(b.read(2, 5, 5), b.format().empty_word());
+  EXPECT_EQ(b.read(2, 100 % 64, 100 / 64), b.format().empty_word());
+  EXPECT_EQ(b.read(3, 100 % 64, 100 / 64), face[100]);
+  EXPECT_EQ(b.writes_lost(), 3);
+}
+
 TEST(DisplayMemoryBank, AFullCubeCostsLittleMoreThanItsTiles) {
   DisplayMemoryBank b{MemoryFormat{}};
   for (int f = 0; f < 6; ++f)

@@ -73,6 +73,7 @@ TEST(Planner, AnEmptySceneGivesOneMemoryAndSaysWhy) {
   for (const auto& c : p.choices) said = said || c.reason.find("the scene is empty") != std::string::npos;
   EXPECT_TRUE(said);
   for (const bool f : p.faces_reached) EXPECT_FALSE(f);
+  EXPECT_EQ(p.config.memory.faces_present(), 6);  // no face is written; the plain cube shows the background
 }
 
 // One object a kilometre ahead, walked toward for ten metres: its image stays within theta_t for
@@ -96,6 +97,24 @@ TEST(Planner, OneFarObjectNeedsOneMemoryAndOneFace) {
   EXPECT_EQ(p.config.memory.update_frames, 1 << static_cast<int>(std::floor(std::log2(need))));  // the largest power of two within it
   const std::array<bool, 6> only_minus_z{false, false, false, false, false, true};
   EXPECT_EQ(p.faces_reached, only_minus_z);
+  // The memory keeps that face only: two eyes x one memory x two buffers x one face x S^2 x (24 + 16) bits.
+  EXPECT_EQ(p.config.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
+  const int64_t S = p.config.memory.face_size;
+  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 40 / 8);
+}
+
+// An object that only an eye reaches a face with: seen from the walk's line the ball's bound is 1 cm
+// clear of the +X face's frustum (its side plane toward -Z, x + z = 0: clear when (x + z) / sqrt 2 < -r);
+// an eye is half the distance between the eyes (3.2 cm) to the side, so the face is kept.
+TEST(Planner, AFaceOnlyAnEyeSeesIsKept) {
+  TempDir d;
+  const double r = 0.5, x = 10.0 - (r + 0.01) * std::sqrt(2.0);  // at z = -10: (x - 10) / sqrt 2 = -(r + 1 cm)
+  char obj[200];
+  std::snprintf(obj, sizeof obj, R"({"name": "side", "objects": [{"name": "ball", "sphere": %.9f, "position": [%.9f, 1.6, -10]}]})", r, x);
+  write(d.file("side.json"), obj);
+  write(d.file("walk.json"), R"({"speed": 0.001, "points": [[0, 1.6, 0], [0, 1.6, -0.001]]})");
+  const Plan p = make_plan(request(d.file("side.json"), d.file("walk.json")));
+  EXPECT_EQ(p.config.memory.faces, (std::array<int, 6>{1, 0, 0, 0, 0, 1}));
 }
 
 // Objects near the walk need every frame, objects far away far less: several memories pay.
@@ -250,6 +269,49 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
     EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another walk"), std::string::npos) << o.output;
   }
+}
+
+// Elaboration follows the plan: the faces it leaves out are not in the memory -- the same frames, the
+// footprint smaller by their share (checked against the closed form and the tiles allocated) -- and a
+// run that draws on them (another scene) loses those texels and says so once.
+TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
+  const std::string small = " --set display.h_active=160 --set display.v_active=120";
+  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
+                             " -o " + d.file("plan.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const dp::ArpConfig c = config::load_file(d.file("plan.json"));
+  ASSERT_EQ(c.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
+  const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
+  nlohmann::json rep[2];
+  for (int whole = 0; whole < 2; ++whole) {
+    const std::string j = d.file("r" + std::to_string(whole) + ".json");
+    const auto o = run_command(run + " --scene " + d.file("far.json") + (whole ? " --set memory.faces=[1,1,1,1,1,1]" : "") + " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    EXPECT_EQ(o.output.find("were lost"), std::string::npos) << o.output;
+    rep[whole] = test::load_json(j);
+  }
+  EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
+  const nlohmann::json& fp = rep[0]["footprint"];
+  const int64_t S = c.memory.face_size, hw = 2 * c.memory.count * 2 * 1 * S * S * 40 / 8;
+  EXPECT_EQ(fp["display_memory_faces"], 1);
+  EXPECT_EQ(fp["display_memory_bytes_hardware"], hw);
+  EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 6 * hw);
+  EXPECT_EQ(fp["texels_lost_on_absent_faces"], 0);
+  // What was allocated: the ball's tiles (33 x 33 words of 8 bytes each, at least one an eye) within the peak.
+  const int64_t tiles = fp["display_memory_tiles_at_end"].get<int64_t>();
+  EXPECT_GE(tiles, 2);
+  EXPECT_GE(fp["display_memory_bytes_peak"].get<int64_t>(), tiles * 33 * 33 * 8);
+  EXPECT_LT(fp["display_memory_bytes_peak"].get<int64_t>(), hw);
+  const auto other = run_command(run + " --scene gallery --report " + d.file("g.json"));
+  ASSERT_EQ(other.status, 0) << other.output;
+  const std::string lost = "fell on cube faces memory.faces leaves out (+X, -X, +Y, -Y, +Z)";
+  const size_t at = other.output.find(lost);
+  ASSERT_NE(at, std::string::npos) << other.output;
+  EXPECT_EQ(other.output.find(lost, at + 1), std::string::npos) << "said more than once: " << other.output;
+  EXPECT_GT(test::load_json(d.file("g.json"))["footprint"]["texels_lost_on_absent_faces"].get<int64_t>(), 0);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "CubeFaceAddressGenerator.hpp"
 #include "PipelineSchedule.hpp"
 
 namespace arp::dp {
@@ -117,6 +118,9 @@ ParameterTable<ArpConfig> make_parameters() {
            "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
   t.number("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
            "colour shown where every memory is empty");
+  t.number("memory.faces", [](auto& c) -> auto& { return c.memory.faces; }, 0, 1, "",
+           "the cube faces each memory has, +X -X +Y -Y +Z -Z: 1 present, 0 absent (no storage, reads empty, the "
+           "host's writes to it lost and counted; arpsim plan leaves out the faces no object reaches)");
   t.number("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
   t.number("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
@@ -172,6 +176,13 @@ struct Checker {
   void fail(const std::string& key, std::string reason) { out.push_back({key, std::move(reason)}); }
 };
 }  // namespace
+
+std::string MemoryConfig::absent_face_names() const {
+  std::string s;
+  for (int f = 0; f < 6; ++f)
+    if (!faces[static_cast<size_t>(f)]) s += (s.empty() ? "" : ", ") + std::string(face_name(f));
+  return s.empty() ? "none" : s;
+}
 
 std::vector<ConfigIssue> validate(const ArpConfig& c) {
   // Every declared range first, then what ties keys together.

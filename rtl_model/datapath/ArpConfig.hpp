@@ -87,11 +87,21 @@ struct MemoryConfig {
   int red_bits = 8, green_bits = 8, blue_bits = 8;
   int depth_bits = 16;                    // code 2^depth_bits-1 is reserved for "empty"
   std::array<int, 3> background{0, 0, 0};  // RGB8 shown where every memory is empty
+  // The cube faces each memory has, +X -X +Y -Y +Z -Z (1: present; 0: absent -- no storage, reads
+  // empty, the host's writes to it are lost and counted). `arpsim plan` leaves out the faces no object
+  // of the scene reaches over the motion.
+  std::array<int, 6> faces{1, 1, 1, 1, 1, 1};
   // Object-level priority rendering (Regan & Pose): memory m is updated every
   // update_frames x update_ratio^m display frames (1, 2, 4, 8 by default).
   int update_frames = 1;
   int update_ratio = 2;
   int color_bits() const { return red_bits + green_bits + blue_bits; }
+  int faces_present() const {
+    int n = 0;
+    for (const int f : faces) n += f;
+    return n;
+  }
+  std::string absent_face_names() const;  // "+Y, -Y" ("none" when every face is present)
   // Frames between host updates of memory m (validate() keeps it within kMaxUpdateFrames).
   int64_t frames_per_update(int m) const { return update_period_frames(update_frames, update_ratio, m); }
   static constexpr int64_t kMaxUpdateFrames = int64_t{1} << 20;

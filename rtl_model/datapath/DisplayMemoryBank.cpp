@@ -64,6 +64,10 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
     throw std::out_of_range("colour code wider than the memory's colour format");
   if (fmt_.depth_bits < 32 && (depth >> fmt_.depth_bits) != 0)
     throw std::out_of_range("depth code wider than the memory's depth format");
+  if (!fmt_.present[static_cast<size_t>(face)]) {
+    ++lost_;
+    return;
+  }
   const uint64_t word = (uint64_t{depth} << 32) | color;
   const int tx = x >> kTileShift, ty = y >> kTileShift, lx = x & (kTile - 1), ly = y & (kTile - 1);
   put(face, tx, ty, lx, ly, word);
@@ -84,6 +88,10 @@ int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t 
     if ((words[k] & color_mask) != 0) throw std::out_of_range("colour code wider than the memory's colour format");
     if (((words[k] >> 32) & depth_mask) != 0) throw std::out_of_range("depth code wider than the memory's depth format");
     ++written;
+  }
+  if (!fmt_.present[static_cast<size_t>(face)]) {
+    lost_ += written;
+    return 0;
   }
   // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
   // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
@@ -145,6 +153,12 @@ size_t DisplayMemorySet::bytes_allocated() const {
   size_t s = 0;
   for (const auto& b : banks_) s += b->bytes_allocated();
   return s;
+}
+
+int64_t DisplayMemorySet::writes_lost() const {
+  int64_t n = 0;
+  for (const auto& b : banks_) n += b->writes_lost();
+  return n;
 }
 
 size_t DisplayMemorySet::tiles_allocated() const {

@@ -24,10 +24,13 @@ namespace arp::dp {
 struct MemoryFormat {
   int face_size = 512;
   int red_bits = 8, green_bits = 8, blue_bits = 8, depth_bits = 16;
+  std::array<bool, 6> present{true, true, true, true, true, true};  // memory.faces
   MemoryFormat() = default;
   explicit MemoryFormat(const MemoryConfig& m)
       : face_size(m.face_size), red_bits(m.red_bits), green_bits(m.green_bits), blue_bits(m.blue_bits),
-        depth_bits(m.depth_bits) {}
+        depth_bits(m.depth_bits) {
+    for (size_t f = 0; f < 6; ++f) present[f] = m.faces[f] != 0;
+  }
   uint32_t empty_depth() const { return static_cast<uint32_t>((uint64_t{1} << depth_bits) - 1); }
   uint64_t empty_word() const { return uint64_t{empty_depth()} << 32; }
   int color_bits_total() const { return red_bits + green_bits + blue_bits; }
@@ -57,12 +60,16 @@ class DisplayMemoryBank {
   const MemoryFormat& format() const { return fmt_; }
 
   // Host port (back buffer). Coordinates and codes are checked: out of range throws std::out_of_range.
+  // A write to a face the format leaves out (memory.faces) is lost, as in hardware without that face,
+  // and counted (writes_lost).
   void write(int face, int x, int y, uint32_t color, uint32_t depth);
   uint64_t read_back(int face, int x, int y) const { return fetch(back_, face, x, y); }
   // A whole face at once (S x S words, row-major): every word but those equal to `skip` written as write()
   // would, texel by texel -- the same tiles allocated, the same aprons -- a tile at a time. Returns the
-  // words written; std::out_of_range as write() for a bad face or a code wider than the format.
+  // words stored (0 on an absent face: its words are lost and counted); std::out_of_range as write() for a
+  // bad face or a code wider than the format.
   int64_t write_face(int face, const uint64_t* words, uint64_t skip);
+  int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -108,6 +115,7 @@ class DisplayMemoryBank {
   int tiles_per_row_;
   std::vector<uint64_t> empty_tile_;   // what tile 0 reads as before a buffer has a pool
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
+  int64_t lost_ = 0;
   std::array<Buffer, 2> buffers_;
   int front_ = 0, back_ = 1;
   bool committed_ = false;
@@ -128,6 +136,7 @@ class DisplayMemorySet {
   void vblank();  // every bank
   size_t bytes_allocated() const;
   size_t tiles_allocated() const;  // written tiles, every bank
+  int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
 
  private:
   MemoryFormat fmt_;
