@@ -21,15 +21,12 @@ const ArpConfig& validated(const ArpConfig& c) {
   return c;
 }
 
-struct Segment {
-  int x0, x1;     // [x0, x1)
-  size_t sample;  // orientation sample in the register for these pixels
-};
+}  // namespace
 
 // Splits one scanline into runs that see the same orientation sample. Only
 // the per-pixel latch can produce more than one run.
-void line_segments(const LatchRule& rule, const OrientationStream& o, int64_t frame, int eye, int y, int width,
-                   std::vector<Segment>& out) {
+void latch_segments(const LatchRule& rule, const OrientationStream& o, int64_t frame, int eye, int y, int width,
+                    std::vector<LatchSegment>& out) {
   out.clear();
   auto sample_at = [&](int x) { return rule.sample(o, frame, eye, x, y); };
   const size_t first = sample_at(0), last = sample_at(width - 1);
@@ -52,7 +49,6 @@ void line_segments(const LatchRule& rule, const OrientationStream& o, int64_t fr
   }
 }
 
-}  // namespace
 
 FunctionalModel::FunctionalModel(const ArpConfig& cfg)
     : cfg_(validated(cfg)),
@@ -145,21 +141,22 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     // that every pass works out of L1.
     constexpr int C = 128;
     const size_t w = C;
-    std::vector<Segment> segs;
+    std::vector<LatchSegment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
     std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
     std::vector<uint32_t> col(4 * w), wx(w), wy(w);
     auto ref = [&](int tap) { return passes::TexelRef{&refs[(2 * tap) * w], &refs[(2 * tap + 1) * w]}; };
     const int taps = A == AaMode::Bilinear ? 4 : 1;
+    ClockTimeCursor clock(timing_.config().pixel_clock_hz);  // a line's slots are consecutive clocks: no division each
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < E * H; ++line) {
       const int eye = line / H, y = line % H;
       const passes::EyeSources& src = sources[static_cast<size_t>(eye)];
-      line_segments(latch_, orientation, frame, eye, y, W, segs);
+      latch_segments(latch_, orientation, frame, eye, y, W, segs);
       uint32_t* dst_line = &out.pixels[out.index(eye, 0, y)];
       for (int c0 = 0; c0 < W; c0 += C) {
         const int n = std::min(C, W - c0);
-        for (const Segment& sg : segs) {
+        for (const LatchSegment& sg : segs) {
           const int a = std::max(sg.x0, c0), b = std::min(sg.x1, c0 + n);
           if (a < b)
             passes::rotate_line(mats[sg.sample - s_lo], lens_.row_x(eye, y) + c0, lens_.row_y(eye, y) + c0,
@@ -192,7 +189,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
       }
       if (opt.photon_times) {
         int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];
-        for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(timing_, pc, frame, eye, x, y);
+        for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(clock, timing_, pc, frame, eye, x, y);
       }
     }
   }

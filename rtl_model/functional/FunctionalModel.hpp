@@ -25,6 +25,16 @@ struct RenderOptions {
   bool photon_times = false;  // fill HmdFrame::photon_ps
 };
 
+// A run of a scanline's pixels that latch the same orientation sample.
+struct LatchSegment {
+  int x0, x1;     // [x0, x1)
+  size_t sample;  // orientation sample in the register for these pixels
+};
+// Splits scanline y of an eye into such runs, by LatchRule::sample (only the per-pixel latch makes more
+// than one); the sample never decreases along a line, so each boundary is found by bisection.
+void latch_segments(const dp::LatchRule& rule, const dp::OrientationStream& o, int64_t frame, int eye, int y, int width,
+                    std::vector<LatchSegment>& out);
+
 class FunctionalModel {
  public:
   // Validates the configuration; InputError("configuration", key, reason) on the first violation.

@@ -16,12 +16,16 @@ stage::FrameReport FunctionalFrames::render(int64_t frame) {
   stage::FrameReport fr;
   fr.frame = frame;
   fr.pixels = static_cast<int64_t>(f_.width) * f_.height;
+  // Each pixel's sample, a run of a line at a time (one lookup a line but with the per-pixel latch).
   for (int e = 0; e < f_.eyes; ++e)
-    for (int y = 0; y < f_.height; ++y)
-      for (int x = 0; x < f_.width; ++x) {
-        const size_t s = model_.latch_rule().sample(*in_.orientation, frame, e, x, y);
-        lat_.add(f_.photon_ps[f_.index(e, x, y)], (*in_.orientation)[s].time_ps);
+    for (int y = 0; y < f_.height; ++y) {
+      latch_segments(model_.latch_rule(), *in_.orientation, frame, e, y, f_.width, segs_);
+      const int64_t* photon = &f_.photon_ps[f_.index(e, 0, y)];
+      for (const LatchSegment& sg : segs_) {
+        const int64_t sample_ps = (*in_.orientation)[sg.sample].time_ps;
+        for (int x = sg.x0; x < sg.x1; ++x) lat_.add(photon[x], sample_ps);
       }
+    }
   lat_.summarise(fr);
   lat_.reset();
   const auto& t = model_.timing();

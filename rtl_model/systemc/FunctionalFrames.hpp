@@ -35,6 +35,7 @@ class FunctionalFrames {
   RenderOptions ro_;
   HmdFrame f_;
   stage::LatencyCollector lat_;
+  std::vector<LatchSegment> segs_;
 };
 
 }  // namespace arp::scm
