@@ -167,7 +167,9 @@ Plan make_plan(const PlanRequest& r) {
   if (r.memories.scene.empty()) throw InputError("--scene", "", "a plan is made for a scene: name one (a file, or gallery)");
   if (!(r.texel_error >= 0) || !std::isfinite(r.texel_error) || r.texel_error > 1000)
     throw InputError("--texel-error", "", "must be 0 .. 1000 texels (0: what the starting configuration measures)");
-  HostSpec::threshold_rad(r.threshold_deg);  // its range
+  // theta_t: --threshold-deg, else the starting configuration's (0: one texel at the planned face size).
+  const double theta_deg = r.threshold_deg.value_or(r.base.memory.threshold_deg);
+  HostSpec::threshold_rad(theta_deg);  // its range
   if (r.walk.empty())
     throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
@@ -275,7 +277,7 @@ Plan make_plan(const PlanRequest& r) {
   // 3. Display memories: the ladder of update periods with the least host load, in as few memories as
   // come within the tolerance of the least.
   progress(0.96, "choosing the display memories");
-  p.threshold_rad = r.threshold_deg > 0 ? deg_to_rad(r.threshold_deg) : dp::texel_angle_rad(S);
+  p.threshold_rad = theta_deg > 0 ? deg_to_rad(theta_deg) : dp::texel_angle_rad(S);
   const size_t n = scene.objects.size();
   std::vector<double> validity_s(ms.t.size() * n, host::kForever);
   p.fastest_need_frames = std::numeric_limits<double>::infinity();
@@ -316,7 +318,7 @@ Plan make_plan(const PlanRequest& r) {
         (L.count < p.planned.count || (L.count == p.planned.count && L.triangles_per_s < p.planned.triangles_per_s)))
       p.planned = L;
   // The starting configuration at its own theta_t (one texel at its own face size unless given).
-  const double base_threshold = r.threshold_deg > 0 ? p.threshold_rad : dp::texel_angle_rad(r.base.memory.face_size);
+  const double base_threshold = theta_deg > 0 ? p.threshold_rad : dp::texel_angle_rad(r.base.memory.face_size);
   std::vector<double> base_validity = validity_s;
   if (base_threshold != p.threshold_rad)
     for (size_t k = 0; k < ms.t.size(); ++k)
@@ -330,6 +332,7 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
   p.config.memory.update_ratio = p.planned.update_ratio;
+  p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
   if (n == 0) {
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio", "1, 1, 2",
                          "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
@@ -353,6 +356,11 @@ Plan make_plan(const PlanRequest& r) {
                              std::to_string(p.planned.update_ratio),
                          why});
   }
+  p.choices.push_back({"memory.threshold_deg", fmt("%g", theta_deg),
+                       theta_deg > 0 ? "the theta_t the memories were sized for (--threshold-deg, or the starting configuration's): "
+                                       "a run with this plan renders by it unless its own --threshold-deg says otherwise"
+                                     : "0: one texel at the planned face size (" + fmt("%.4f", rad_to_deg(p.threshold_rad)) +
+                                           " deg), the theta_t the memories were sized for"});
 
   // 4. Faces any object reaches over the motion, by the renderers' own test (host::sphere_meets_face) with each
   // bound grown by what the samples do not see: an eye is up to half the distance between the eyes from the

@@ -32,7 +32,7 @@ struct PlanRequest {
   std::string walk;                    // "gallery" or a walk file (required; --speed 0: standing at its first point)
   std::optional<double> walk_speed;    // as run --speed
   double texel_error = 0;              // texels, max over the harness's samples (0: what `base` measures)
-  double threshold_deg = 0;            // theta_t (0: one texel at the planned face size)
+  std::optional<double> threshold_deg;  // theta_t (0: one texel at the planned face size; unset: base's memory.threshold_deg)
   std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"
   double load_tolerance = 0.10;        // a memory more must save more than this share of the host's load
   bool size_widths = true;             // false: keep the starting configuration's datapath widths (--keep-widths)

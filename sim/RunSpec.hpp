@@ -22,7 +22,7 @@ struct HostSpec {
   std::string walk;             // "gallery" or a walk file; empty: no host simulation
   std::optional<double> walk_speed;  // --speed, m/s (unset: 1, or the walk file's; 0: standing at the first point)
   bool baseline = false;        // --baseline: everything in memory 0, every frame
-  double threshold_deg = 0;     // --threshold-deg, theta_t (0: one display-memory texel)
+  std::optional<double> threshold_deg;  // --threshold-deg: overrides memory.threshold_deg (theta_t)
   host::RenderEngine engine;    // --engine-triangles, --engine-fill, --engine-setup
   double region_size = 0;       // --regions, m (0: object-level)
   double margin = 0.5;          // --margin, m

@@ -128,6 +128,11 @@ Session::Session(RunSpec spec)
       timing_(spec_.config.timing),
       stream_(dp::OrientationStream::constant(dp::Quat{})),
       memories_(spec_.config.memory, spec_.config.timing.eyes) {
+  // --threshold-deg overrides the configuration's theta_t: the report's configuration says what ran.
+  if (const auto& t = spec_.host.threshold_deg) {
+    HostSpec::threshold_rad(*t);  // its range, named as the option
+    spec_.config.memory.threshold_deg = *t;
+  }
   spec_.memories.expect_plan(spec_.config, spec_.config_source);
   if (!scm::parse(spec_.fidelity, fidelity_))
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
@@ -417,7 +422,6 @@ void Session::build_memories() {
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
   host::PriorityConfig pc = host::PriorityConfig::of(c.memory, timing_.refresh_hz());
   pc.baseline = h.baseline;
-  pc.threshold_rad = HostSpec::threshold_rad(h.threshold_deg);
   for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", h.engine.triangles_per_s},
                          {"--engine-fill", h.engine.pixels_per_s}})
     if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");

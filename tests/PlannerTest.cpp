@@ -314,5 +314,33 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   EXPECT_GT(test::load_json(d.file("g.json"))["footprint"]["texels_lost_on_absent_faces"].get<int64_t>(), 0);
 }
 
+// The plan records the theta_t its memories were sized for (memory.threshold_deg): a run with the plan
+// renders by it, --threshold-deg still overrides, and the report's configuration says what ran.
+TEST(PlanCli, ARunRendersByThePlansThreshold) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
+  const std::string small = " --set display.h_active=160 --set display.v_active=120";
+  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
+                             " --threshold-deg 2.5 -o " + d.file("plan.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(config::load_file(d.file("plan.json")).memory.threshold_deg, 2.5);
+  EXPECT_NE(r.output.find("| memory.threshold_deg | 2.5 |"), std::string::npos) << r.output;
+  const std::string run = kArpsim + " run -q --frames 1 --every 0 --error-every 0 --config " + d.file("plan.json") + " --scene " +
+                          d.file("far.json") + " --walk " + d.file("walk.json");
+  for (const auto& [extra, deg] : std::vector<std::pair<std::string, double>>{{"", 2.5}, {" --threshold-deg 7", 7.0}}) {
+    const auto o = run_command(run + extra + " --report " + d.file("r.json"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    const nlohmann::json rep = test::load_json(d.file("r.json"));
+    EXPECT_DOUBLE_EQ(rep["host"]["threshold_deg"].get<double>(), deg) << extra;
+    EXPECT_DOUBLE_EQ(rep["config"]["memory"]["threshold_deg"].get<double>(), deg) << extra;
+  }
+  // Planned again from the plan, with no --threshold-deg: the same theta_t.
+  const auto again = run_command(kArpsim + " plan -q --config " + d.file("plan.json") + " --scene " + d.file("far.json") + " --walk " +
+                                 d.file("walk.json") + " -o " + d.file("plan2.json"));
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(config::load_file(d.file("plan2.json")).memory.threshold_deg, 2.5);
+}
+
 }  // namespace
 }  // namespace arp::sim

@@ -65,12 +65,13 @@ CLI::App* ConfigOptions::add_command(CLI::App& app, std::string name, std::strin
   return cmd;
 }
 
-void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg) {
+void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, std::optional<double>& threshold_deg) {
   cmd.add_option("--walk", walk, "With --scene: walk through it, 'gallery' (the built-in walk) or a walk file (docs/host.md); "
                  "the host renders by priority between frames");
   cmd.add_option("--speed", speed, "Walking speed, m/s, 0 .. 1000 (default 1, or the walk file's; 0: standing at the walk's first point)");
-  cmd.add_option("--threshold-deg", threshold_deg, "Priority rendering's threshold angle theta_t (0: one display-memory texel)")
-      ->capture_default_str();
+  cmd.add_option("--threshold-deg", threshold_deg,
+                 "Priority rendering's threshold angle theta_t, 0 .. 90 (0: one display-memory texel; default: the "
+                 "configuration's memory.threshold_deg, which a plan sets)");
 }
 
 void add_threads_option(CLI::App& cmd, int& threads) {

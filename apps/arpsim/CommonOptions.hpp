@@ -31,7 +31,7 @@ struct ConfigOptions {
 void strict_numbers(CLI::App& app);
 
 // The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
-void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, double& threshold_deg);
+void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, std::optional<double>& threshold_deg);
 
 // --threads: worker threads of the functional model and the scene renderer.
 void add_threads_option(CLI::App& cmd, int& threads);

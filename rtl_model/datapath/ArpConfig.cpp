@@ -125,6 +125,10 @@ ParameterTable<ArpConfig> make_parameters() {
            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
   t.number("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
            "each next memory is updated this many times less often (Regan & Pose: 2, harmonic rates)");
+  t.number("memory.threshold_deg", [](auto& c) -> auto& { return c.memory.threshold_deg; }, 0.0, 90.0, "deg",
+           "priority rendering's threshold angle theta_t: an object is re-rendered before its image moves this far "
+           "(0: one texel at a face's centre, 90 deg / face_size; arpsim plan records the one it planned for; "
+           "--threshold-deg overrides)");
   // pipeline: latch, filtering and scan-out
   t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
            "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "

@@ -95,6 +95,7 @@ struct MemoryConfig {
   // update_frames x update_ratio^m display frames (1, 2, 4, 8 by default).
   int update_frames = 1;
   int update_ratio = 2;
+  double threshold_deg = 0;  // theta_t: an object is re-rendered before its image moves this far (0: one texel)
   int color_bits() const { return red_bits + green_bits + blue_bits; }
   int faces_present() const {
     int n = 0;
