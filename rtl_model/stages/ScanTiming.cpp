@@ -60,14 +60,12 @@ const ScanPosition& ScanTiming::position(int64_t cycle, Cursor& cur) const {
 
 bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
   const ScanPosition& p = position(slot_cycle, cur);
-  if (!p.active || p.frame < first_ || p.frame >= end_) return false;
-  if (!windows_.every_frame()) {
-    if (cur.windows_frame != p.frame) {
-      cur.windows_frame = p.frame;
-      cur.in_windows = windows_.contains(p.frame);
-    }
-    if (!cur.in_windows) return false;
+  if (!p.active) return false;
+  if (cur.checked_frame != p.frame) {  // once a frame: within the run, and in its windows
+    cur.checked_frame = p.frame;
+    cur.decoded = p.frame >= first_ && p.frame < end_ && (windows_.every_frame() || windows_.contains(p.frame));
   }
+  if (!cur.decoded) return false;
   out.frame = p.frame;
   out.slot_cycle = slot_cycle;
   out.y = p.line * tc_.fields_per_frame + cur.field;

@@ -39,8 +39,8 @@ class ScanTiming {
     int64_t cycle = std::numeric_limits<int64_t>::min();
     int field = 0;
     ScanPosition pos;
-    int64_t windows_frame = std::numeric_limits<int64_t>::min();  // the frame last looked up in the windows
-    bool in_windows = true;
+    int64_t checked_frame = std::numeric_limits<int64_t>::min();  // the frame `decoded` is for
+    bool decoded = false;  // its pixels are decoded: in the run, and in its windows
   };
   const ScanPosition& position(int64_t cycle, Cursor& cur) const;  // a reference: no copy of a just-written struct
   bool decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const;

@@ -7,11 +7,11 @@ namespace arp::scm {
 using namespace sc_core;
 
 ClockGenerator::ClockGenerator(sc_module_name name, int64_t hz, int64_t base_ps, int64_t first_cycle, int64_t end_cycle)
-    : sc_module(name), hz_(hz), base_ps_(base_ps), end_(end_cycle), cycle_(first_cycle - 1) {
+    : sc_module(name), base_ps_(base_ps), end_(end_cycle), clock_(hz), cycle_(first_cycle - 1) {
   SC_METHOD(edge);  // runs once at initialisation to schedule the first edge
 }
 
-int64_t ClockGenerator::edge_ps(int64_t n) const { return dp::clock_cycle_to_ps(n, hz_); }
+int64_t ClockGenerator::edge_ps(int64_t n) const { return clock_.ps(n); }
 
 void ClockGenerator::trace(sc_trace_file* tf, const std::string& name) {
   traced_ = true;

@@ -13,6 +13,8 @@
 #include <functional>
 #include <string>
 
+#include "rtl_model/datapath/ClockTime.hpp"
+
 namespace arp::scm {
 
 // Simulated time of absolute ps (which must not precede the base).
@@ -51,7 +53,8 @@ class ClockGenerator : public sc_core::sc_module, public ClockIf {
   int64_t edge_ps(int64_t n) const;
   std::function<int64_t(int64_t)> gate_;
   sc_core::sc_event posedge_;
-  int64_t hz_, base_ps_, end_;
+  int64_t base_ps_, end_;
+  mutable dp::ClockTimeCursor clock_;  // edges are asked for in order: no 128-bit division each
   int64_t cycle_;
   int64_t edges_ = 0;
   bool started_ = false, level_ = false, traced_ = false, skipped_ = false;
