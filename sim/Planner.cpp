@@ -384,8 +384,9 @@ Plan make_plan(const PlanRequest& r) {
        scene.objects.empty() ? "the scene is empty: no face is ever written; the cube is kept whole (it shows the background)"
        : present == 6        ? "every face is reached by some object at some point of the motion"
                              : "faces " + p.config.memory.absent_face_names() +
-                                   " are never reached by any object's bounding sphere at any point of the motion (the renderers' "
-                                   "own face test, host::cull_to_faces): left out of every memory, " +
+                                   " are never reached by any object's bounding sphere, grown by half the default distance between the eyes "
+                                   "and a sample step, at any point of the motion (the renderers' face test, host::sphere_meets_face): "
+                                   "left out of every memory, " +
                                    std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
                                    "loses those texels and says so"});
   p.not_decided.push_back("a face size per memory (one face size for every memory)");

@@ -141,7 +141,6 @@ Session::Session(RunSpec spec)
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
   build_motion();
-  add_auto_detail();
   build_memories();
 }
 
@@ -162,6 +161,9 @@ void Session::build_detail_windows() {
   if (spec_.detail_warmup < 0 || spec_.detail_warmup > 1000) throw InputError("--detail-warmup", "", "must be 0 .. 1000 frames");
   if (!(spec_.detail_speed_dps >= 0 && spec_.detail_speed_dps <= 1e6))
     throw InputError("--detail-speed-dps", "", "must be 0 .. 1000000 degrees per second");
+  if (std::find(spec_.detail.begin(), spec_.detail.end(), "auto") == spec_.detail.end() &&
+      spec_.detail_speed_dps != RunSpec{}.detail_speed_dps)
+    throw InputError("--detail-speed-dps", "", "needs --detail auto");
   for (const std::string& d : spec_.detail) {
     if (d == "auto") {
       auto_detail_ = true;
@@ -191,7 +193,6 @@ void Session::build_detail_windows() {
 // by hand; with the warm-up frames before each, as absolute frames.
 void Session::add_auto_detail() {
   if (spec_.detail.empty()) return;
-  const int64_t base = timing_.frame_start_cycle(spec_.first_frame), F = timing_.frame_cycles();
   std::vector<stage::FrameWindows::Window> w = detail_windows_;
   if (auto_detail_) {
     const std::vector<double> v = frame_speeds_dps();
@@ -200,11 +201,9 @@ void Session::add_auto_detail() {
         w.push_back({k, k + 1});
         ++auto_fast_frames_;
       }
-    // A stall holds the pipeline from its clock on; what it pushed back drains by the next frame's end.
     std::set<int64_t> stalled;
     for (const stage::StallWindow& st : stall_windows())
-      for (int64_t k = (st.first_cycle - base) / F; k < std::min(spec_.frames, (st.first_cycle + st.cycles - base) / F + 2); ++k)
-        stalled.insert(k);
+      for (auto [k, end] = stall_frames(st); k < end; ++k) stalled.insert(k);
     for (const int64_t k : stalled) w.push_back({k, k + 1});
     auto_stall_frames_ = static_cast<int64_t>(stalled.size());
   }
@@ -213,13 +212,28 @@ void Session::add_auto_detail() {
     b = spec_.first_frame + b;
   }
   timed_frames_ = stage::FrameWindows(std::move(w));
-  // A stall in a functional frame would stall nothing: said, not ignored.
+  if (timed_frames_.windows().empty() && !spec_.out.vcd.empty())
+    throw InputError("--vcd", spec_.out.vcd, "--detail auto found no frame to detail (no head speed over --detail-speed-dps, no --stall): "
+                                             "no detailed clock to trace; name a window (--detail START:END) or leave --vcd out");
+  // A stall reaching a functional frame would stall nothing there, or lose what it pushed into it: said, not ignored.
   const std::vector<stage::StallWindow> stalls = stall_windows();
-  for (size_t i = 0; i < stalls.size(); ++i)
-    if (const int64_t k = (stalls[i].first_cycle - base) / F; !timed_frames_.contains(spec_.first_frame + k))
-      throw InputError("--stall", spec_.stalls[i],
-                       "falls in frame " + std::to_string(k) + ", which --detail leaves at the functional level (no clock to stall there): "
-                       "add --detail " + std::to_string(k) + " or use --detail auto");
+  for (size_t i = 0; i < stalls.size(); ++i) {
+    const auto [k0, k1] = stall_frames(stalls[i]);
+    for (int64_t k = k0; k < k1; ++k)
+      if (!timed_frames_.contains(spec_.first_frame + k))
+        throw InputError("--stall", spec_.stalls[i],
+                         "reaches frames " + std::to_string(k0) + ".." + std::to_string(k1 - 1) + ", and --detail leaves frame " +
+                             std::to_string(k) + " at the functional level, where nothing stalls: add --detail " +
+                             std::to_string(k0) + ":" + std::to_string(k1) + " or use --detail auto");
+  }
+}
+
+// The frames a stall reaches, [first, end) counted from the run's first: it holds the pipeline from its
+// clock on, and what it pushed back drains by the end of the frame after the one it ends in.
+std::pair<int64_t, int64_t> Session::stall_frames(const stage::StallWindow& st) const {
+  const int64_t base = timing_.frame_start_cycle(spec_.first_frame), F = timing_.frame_cycles();
+  const int64_t first = (st.first_cycle - base) / F;
+  return {first, std::min(spec_.frames, (st.first_cycle + st.cycles - base) / F + 2)};
 }
 
 // The head motion: a trace, synthetic motion, a walk (facing where it goes,
@@ -290,6 +304,7 @@ void Session::build_motion() {
                            ": use a trace or a still head");
     motion_source_ = "synthetic " + spec_.motion.motion;
   }
+  add_auto_detail();  // from the motion afresh: before extend_motion hands a trace's poses to the run
   more_poses_ = pose_source(true);
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
   if (!spec_.record_live.empty() && spec_.live.empty())

@@ -58,6 +58,7 @@ class Session {
  private:
   void build_detail_windows();
   void add_auto_detail();
+  std::pair<int64_t, int64_t> stall_frames(const stage::StallWindow& st) const;
   void build_motion();
   using MorePoses = std::function<bool(int64_t, std::vector<tracker::PoseSample>&)>;
   MorePoses pose_source(bool consume) const;

@@ -293,6 +293,14 @@ TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
   EXPECT_GT(over, 10);
   EXPECT_LT(over, checked - 10);
   EXPECT_EQ(a["detail"]["auto"]["frames_over_speed"], a["detail"]["frames_detailed"]);
+  // The same motion recorded as a trace picks the same frames (the trace is read before the run takes it).
+  ASSERT_EQ(run_command(kArpsim + " tracker synth --motion shake --peak 400 --frequency 10 --hz 20000 --seconds 2 -o " + d.file("t.csv")).status, 0);
+  const auto tr = run_command(kArpsim + " run -q --frames 60 --every 0 --trace " + d.file("t.csv") + kSmall +
+                              " --detail auto --detail-speed-dps 200 --detail-warmup 0 --report " + d.file("t.json"));
+  ASSERT_EQ(tr.status, 0) << tr.output;
+  const nlohmann::json t = load(d.file("t.json"));
+  EXPECT_EQ(t["detail"]["auto"]["frames_over_speed"], a["detail"]["auto"]["frames_over_speed"]);
+  for (size_t k = 0; k < a["frames"].size(); ++k) EXPECT_EQ(t["frames"][k]["level"], a["frames"][k]["level"]) << k;
 
   // A stall of 300 clocks in frame 5 (27 904 clocks a frame here): frames 5 and 6 detailed, and a warm-up frame.
   const std::string stall = " --frames 12 --every 0 --motion shake --peak 100 --stall rotate:145000:300" + kSmall;

@@ -30,7 +30,7 @@ struct PriorityConfig {
     pc.memories = m.count;
     pc.update_frames = m.update_frames;
     pc.update_ratio = m.update_ratio;
-    pc.threshold_rad = m.threshold_deg * (3.14159265358979323846 / 180.0);
+    pc.threshold_rad = m.threshold_deg * (3.14159265358979323846 / 180.0);  // (common/Units' kPi would clash in includers)
     pc.display_hz = display_hz;
     return pc;
   }

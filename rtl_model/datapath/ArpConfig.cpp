@@ -202,6 +202,7 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
       ck.fail("display.v_active", "the active lines of one field do not fit in half a frame");
   }
 
+  if (c.memory.faces_present() == 0) ck.fail("memory.faces", "leaves out every face: a memory with no storage (keep one at least)");
   const auto& l = c.lens;
   if (std::abs(l.center_offset_px) >= t.h_active / 2.0)
     ck.fail("lens.center_offset_px", "must be less than half of display.h_active in magnitude");

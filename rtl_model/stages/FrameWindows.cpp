@@ -20,11 +20,4 @@ bool FrameWindows::contains(int64_t frame) const {
   return it != w_.begin() && frame < std::prev(it)->second;
 }
 
-int64_t FrameWindows::count_in(int64_t first, int64_t end) const {
-  if (all_) return std::max<int64_t>(0, end - first);
-  int64_t n = 0;
-  for (const Window& w : w_) n += std::max<int64_t>(0, std::min(end, w.second) - std::max(first, w.first));
-  return n;
-}
-
 }  // namespace arp::stage

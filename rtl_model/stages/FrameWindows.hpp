@@ -20,8 +20,6 @@ class FrameWindows {
   bool every_frame() const { return all_; }
   bool contains(int64_t frame) const;
   const std::vector<Window>& windows() const { return w_; }
-  // Frames of [first, end) inside a window.
-  int64_t count_in(int64_t first, int64_t end) const;
 
  private:
   std::vector<Window> w_;

@@ -63,7 +63,7 @@ bool ScanTiming::decode(int64_t slot_cycle, PixelSlot& out, Cursor& cur) const {
   if (!p.active) return false;
   if (cur.checked_frame != p.frame) {  // once a frame: within the run, and in its windows
     cur.checked_frame = p.frame;
-    cur.decoded = p.frame >= first_ && p.frame < end_ && (windows_.every_frame() || windows_.contains(p.frame));
+    cur.decoded = p.frame >= first_ && p.frame < end_ && windows_.contains(p.frame);
   }
   if (!cur.decoded) return false;
   out.frame = p.frame;
