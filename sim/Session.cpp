@@ -70,8 +70,8 @@ std::string detail_text(const stage::FrameWindows& w, const RunSpec& s, const sc
   std::string t = "  detailed level in frames ";
   for (const auto& [f0, f1] : w.windows()) t += (t.back() == ' ' ? "" : ", ") + std::to_string(f0) + ".." + std::to_string(f1 - 1);
   return t + " (" + std::to_string(res.frames - res.untimed_frames) + " of " + std::to_string(res.frames) + " frames, " +
-         std::to_string(s.detail_warmup) + " warm-up frame" + (s.detail_warmup == 1 ? "" : "s") +
-         " before each window), functional between";
+         "each window opened by up to " + std::to_string(s.detail_warmup) + " warm-up frame" + (s.detail_warmup == 1 ? "" : "s") +
+         ", fewer at the run's start), functional between";
 }
 
 void check_spec(const RunSpec& s, scm::Fidelity fid) {
