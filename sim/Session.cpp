@@ -775,7 +775,12 @@ RunSummary Session::run() {
   if (!timed_frames_.every_frame()) {
     nlohmann::json windows = nlohmann::json::array();
     for (const auto& [f0, f1] : timed_frames_.windows()) windows.push_back({f0, f1});
-    r["detail"] = {{"windows", windows},
+    // The run is the functional level with detailed windows, as the summary says; the pipeline, FIFO and
+    // stage figures are the detailed level's, over its frames.
+    r["fidelity"] = s.fidelity;
+    r["fidelity_description"] = std::string(scm::describe(scm::Fidelity::Functional)) + "; the detailed level in the windows of `detail`";
+    r["detail"] = {{"level", scm::to_string(fidelity_)},
+                   {"windows", windows},
                    {"warmup_frames", spec_.detail_warmup},
                    {"frames_detailed", res.frames - res.untimed_frames},
                    {"frames_functional", res.untimed_frames}};

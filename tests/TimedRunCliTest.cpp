@@ -259,6 +259,9 @@ TEST(TimedRunCli, DetailedWindowsGiveTheDetailedRunsFramesAndWaveform) {
   EXPECT_EQ(win["detail"]["windows"], nlohmann::json::parse("[[1, 4]]"));
   EXPECT_EQ(win["detail"]["frames_detailed"], 3);
   EXPECT_EQ(win["detail"]["frames_functional"], 3);
+  EXPECT_EQ(win["fidelity"], "functional");  // as the summary says; the figures of the windows are the detailed level's
+  EXPECT_EQ(win["detail"]["level"], "detailed");
+  EXPECT_EQ(full["fidelity"], "detailed");
   EXPECT_EQ(full["frames"][0].count("level"), 0u);  // a run at one level says nothing new
   // Half the frames were simulated clock by clock: half the pixels through the stage FIFOs.
   EXPECT_EQ(2 * win["fifos"][0]["writes"].get<int64_t>(), full["fifos"][0]["writes"].get<int64_t>());
