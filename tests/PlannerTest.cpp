@@ -271,16 +271,21 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
   }
 }
 
+// A ball 20 m ahead and a 4 m walk toward it (far.json, walk.json in `d`), planned for a small display
+// into plan.json (`extra`: more plan options).
+test::CommandResult plan_ball_and_walk(TempDir& d, const std::string& extra = "") {
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
+  return run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") +
+                     " --set display.h_active=160 --set display.v_active=120" + extra + " -o " + d.file("plan.json"));
+}
+
 // Elaboration follows the plan: the faces it leaves out are not in the memory -- the same frames, the
 // footprint smaller by their share (checked against the closed form and the tiles allocated) -- and a
 // run that draws on them (another scene) loses those texels and says so once.
 TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   TempDir d;
-  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
-  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
-  const std::string small = " --set display.h_active=160 --set display.v_active=120";
-  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
-                             " -o " + d.file("plan.json"));
+  const auto r = plan_ball_and_walk(d);
   ASSERT_EQ(r.status, 0) << r.output;
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
@@ -318,11 +323,7 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
 // renders by it, --threshold-deg still overrides, and the report's configuration says what ran.
 TEST(PlanCli, ARunRendersByThePlansThreshold) {
   TempDir d;
-  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
-  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
-  const std::string small = " --set display.h_active=160 --set display.v_active=120";
-  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
-                             " --threshold-deg 2.5 -o " + d.file("plan.json"));
+  const auto r = plan_ball_and_walk(d, " --threshold-deg 2.5");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(config::load_file(d.file("plan.json")).memory.threshold_deg, 2.5);
   EXPECT_NE(r.output.find("| memory.threshold_deg | 2.5 |"), std::string::npos) << r.output;
