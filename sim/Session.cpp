@@ -151,9 +151,11 @@ Session::~Session() = default;
 // before it (what the pipeline's registers hold when the window starts).
 // `auto` adds its windows once the motion is known (add_auto_detail).
 void Session::build_detail_windows() {
+  if (std::find(spec_.detail.begin(), spec_.detail.end(), "auto") == spec_.detail.end() &&
+      spec_.detail_speed_dps != RunSpec{}.detail_speed_dps)
+    throw InputError("--detail-speed-dps", "", "needs --detail auto");
   if (spec_.detail.empty()) {
     if (spec_.detail_warmup != 1) throw InputError("--detail-warmup", "", "needs --detail");
-    if (spec_.detail_speed_dps != RunSpec{}.detail_speed_dps) throw InputError("--detail-speed-dps", "", "needs --detail auto");
     return;
   }
   if (fidelity_ != scm::Fidelity::Functional && fidelity_ != scm::Fidelity::Detailed)
@@ -161,9 +163,6 @@ void Session::build_detail_windows() {
   if (spec_.detail_warmup < 0 || spec_.detail_warmup > 1000) throw InputError("--detail-warmup", "", "must be 0 .. 1000 frames");
   if (!(spec_.detail_speed_dps >= 0 && spec_.detail_speed_dps <= 1e6))
     throw InputError("--detail-speed-dps", "", "must be 0 .. 1000000 degrees per second");
-  if (std::find(spec_.detail.begin(), spec_.detail.end(), "auto") == spec_.detail.end() &&
-      spec_.detail_speed_dps != RunSpec{}.detail_speed_dps)
-    throw InputError("--detail-speed-dps", "", "needs --detail auto");
   for (const std::string& d : spec_.detail) {
     if (d == "auto") {
       auto_detail_ = true;
@@ -193,6 +192,7 @@ void Session::build_detail_windows() {
 // by hand; with the warm-up frames before each, as absolute frames.
 void Session::add_auto_detail() {
   if (spec_.detail.empty()) return;
+  const std::vector<stage::StallWindow> stalls = stall_windows();
   std::vector<stage::FrameWindows::Window> w = detail_windows_;
   if (auto_detail_) {
     const std::vector<double> v = frame_speeds_dps();
@@ -202,7 +202,7 @@ void Session::add_auto_detail() {
         ++auto_fast_frames_;
       }
     std::set<int64_t> stalled;
-    for (const stage::StallWindow& st : stall_windows())
+    for (const stage::StallWindow& st : stalls)
       for (auto [k, end] = stall_frames(st); k < end; ++k) stalled.insert(k);
     for (const int64_t k : stalled) w.push_back({k, k + 1});
     auto_stall_frames_ = static_cast<int64_t>(stalled.size());
@@ -216,7 +216,6 @@ void Session::add_auto_detail() {
     throw InputError("--vcd", spec_.out.vcd, "--detail auto found no frame to detail (no head speed over --detail-speed-dps, no --stall): "
                                              "no detailed clock to trace; name a window (--detail START:END) or leave --vcd out");
   // A stall reaching a functional frame would stall nothing there, or lose what it pushed into it: said, not ignored.
-  const std::vector<stage::StallWindow> stalls = stall_windows();
   for (size_t i = 0; i < stalls.size(); ++i) {
     const auto [k0, k1] = stall_frames(stalls[i]);
     for (int64_t k = k0; k < k1; ++k)
