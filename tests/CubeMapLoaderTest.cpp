@@ -138,6 +138,29 @@ TEST(CubeMapLoader, BadInputsNameTheFileAndTheReason) {
   EXPECT_NE(error_of([&] { six_face_paths_in(d.file("nope")); }).find("not a folder"), std::string::npos);
 }
 
+// Only the readers of the documented formats see a file, chosen by its content
+// among them (its extension's first); a format OpenImageIO reads but arpsim does
+// not document (here SGI, which OpenImageIO also writes) is refused, by either name.
+TEST(ImageFiles, ReadsOnlyTheDocumentedFormatsWhateverTheName) {
+  test::TempDir d;
+  RgbImage img(6, 4);
+  img.rgb[0] = 200;
+  write_rgb8(d.file("a.jpg"), img);
+  std::filesystem::copy_file(d.file("a.jpg"), d.file("jpeg-called.png"));
+  std::filesystem::copy_file(d.file("a.jpg"), d.file("no-extension"));
+  EXPECT_EQ(read_rgb8(d.file("jpeg-called.png")).width, 6);
+  EXPECT_EQ(read_rgb8(d.file("no-extension")).height, 4);
+  write_rgb8(d.file("b.sgi"), img);
+  std::filesystem::copy_file(d.file("b.sgi"), d.file("sgi-called.png"));
+  for (const char* name : {"b.sgi", "sgi-called.png"}) {
+    const std::string e = error_of([&] { read_rgb8(d.file(name)); });
+    EXPECT_NE(e.find(name), std::string::npos) << e;
+    EXPECT_NE(e.find("not an image of a format arpsim reads (PNG, JPEG, TIFF, OpenEXR, Radiance HDR, PNM, BMP, Targa)"),
+              std::string::npos)
+        << e;
+  }
+}
+
 TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {
   test::TempDir d;
   const size_t before = d.entries();

@@ -112,6 +112,11 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>&
   char err[kErrorLength] = "";
   ArpOiioSpec spec{};
   void* handle = api.open(path.c_str(), &spec, err, sizeof err);
+  if (!handle && err[0] == '\0') {
+    std::string formats;
+    for (const ArpImageFormat& f : kArpImageFormats) formats += (formats.empty() ? "" : ", ") + std::string(f.title);
+    throw InputError(path, "", "not an image of a format arpsim reads (" + formats + ")");
+  }
   if (!handle) throw InputError(path, "", "cannot read as an image: " + quoted(err));
   const OpenImage in(api, handle);
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)

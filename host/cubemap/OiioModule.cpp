@@ -1,7 +1,9 @@
 // arpsim's image module: OpenImageIO behind the C interface of OiioModule.hpp.
 #include "OiioModule.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 #include <cstdio>
 #include <memory>
@@ -18,12 +20,38 @@ void say(char* err, size_t n, const std::string& what) {
 extern "C" {
 
 void* arp_oiio_open(const char* path, ArpOiioSpec* spec, char* err, size_t err_len) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    say(err, err_len, OIIO::geterror());
+  // Only the readers of the formats arpsim documents ever see a file: the one
+  // its extension names first, then the others, each asked whether the file's
+  // signature is its own. OpenImageIO by itself would go on to try every
+  // reader it has (camera raw, DICOM, HEIF, FITS...) on a file none of these
+  // recognises: decoders arpsim neither needs nor tests, given untrusted bytes.
+  std::unique_ptr<OIIO::ImageInput> in;
+  const std::string ext = OIIO::Filesystem::extension(path, false);
+  auto named = [&ext](const char* exts) {
+    for (const auto& e : OIIO::Strutil::splitsv(exts, ","))
+      if (OIIO::Strutil::iequals(e, ext)) return true;
+    return false;
+  };
+  for (int pass = 0; pass < 2 && !in; ++pass)
+    for (const ArpImageFormat& f : kArpImageFormats) {
+      if (named(f.extensions) != (pass == 0)) continue;  // the extension's own reader first
+      auto candidate = OIIO::ImageInput::create(f.oiio_name);
+      if (candidate && candidate->valid_file(path)) {
+        in = std::move(candidate);
+        break;
+      }
+    }
+  if (!in) {  // (an empty reason: ImageFiles names the formats)
+    say(err, err_len, "");
+    OIIO::geterror();  // clears what the probes left
     return nullptr;
   }
-  const OIIO::ImageSpec& s = in->spec();
+  OIIO::ImageSpec s;
+  if (!in->open(path, s)) {
+    std::string e = in->geterror();
+    say(err, err_len, std::string(in->format_name()) + ": " + (e.empty() ? OIIO::geterror() : e));
+    return nullptr;
+  }
   *spec = ArpOiioSpec{s.width, s.height, s.nchannels, s.format.is_floating_point() ? 1 : 0};
   return in.release();
 }

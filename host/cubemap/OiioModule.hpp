@@ -8,13 +8,33 @@
 #pragma once
 #include <cstddef>
 
+// The image formats arpsim reads (cube maps, panoramas, textures): OpenImageIO's
+// name of the reader, the extensions that name it (comma-separated), what docs and
+// messages call it. No other reader of OpenImageIO's is given a file.
+struct ArpImageFormat {
+  const char* oiio_name;
+  const char* extensions;
+  const char* title;
+};
+inline constexpr ArpImageFormat kArpImageFormats[] = {
+    {"png", "png", "PNG"},
+    {"jpeg", "jpg,jpeg,jpe,jfif", "JPEG"},
+    {"tiff", "tif,tiff", "TIFF"},
+    {"openexr", "exr", "OpenEXR"},
+    {"hdr", "hdr,rgbe", "Radiance HDR"},
+    {"pnm", "ppm,pgm,pbm,pnm", "PNM"},
+    {"bmp", "bmp,dib", "BMP"},
+    {"targa", "tga", "Targa"},
+};
+
 extern "C" {
 
 struct ArpOiioSpec {
   int width, height, nchannels, is_float;
 };
 
-// Opens an image and reads its header; null (with OpenImageIO's reason in err) if it cannot.
+// Opens an image of one of kArpImageFormats and reads its header; null if it cannot, with
+// OpenImageIO's reason in err, or err empty when no reader of those formats recognises the file.
 void* arp_oiio_open(const char* path, ArpOiioSpec* spec, char* err, size_t err_len);
 // Reads every pixel as UINT8 (as_float 0) or FLOAT (1), nchannels values a pixel; 0 and the reason on failure.
 int arp_oiio_read(void* image, int as_float, void* pixels, char* err, size_t err_len);
