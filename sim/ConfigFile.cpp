@@ -1,5 +1,7 @@
 #include "ConfigFile.hpp"
 
+#include <set>
+
 #include "common/InputError.hpp"
 #include "common/ParameterJson.hpp"
 #include "common/StrictJson.hpp"
@@ -44,11 +46,19 @@ dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& s
   return c;
 }
 
-std::string update_reference_doc(const std::string& doc) {
+std::string update_reference_doc(const std::string& doc, const std::string& source) {
   const dp::ArpConfig defaults;
-  return replace_generated_blocks(doc, [&](const std::string& section) {
+  std::set<std::string> generated;
+  const std::string updated = replace_generated_blocks(doc, [&](const std::string& section) {
+    generated.insert(section);
     return parameters_markdown(dp::arp_parameters(), section, defaults);
   });
+  // A section without its table would leave its keys undocumented, and "current" would be a lie.
+  for (const std::string& section : dp::arp_parameters().sections())
+    if (!generated.count(section))
+      throw InputError(source, "", "has no table for the keys of section '" + section + "': add a line '<!-- generated: " +
+                                       section + " -->' and a line '<!-- end generated -->' where it belongs, then run again");
+  return updated;
 }
 
 std::string listing(const dp::ArpConfig& c) { return parameters_listing(dp::arp_parameters(), c); }

@@ -30,8 +30,9 @@ dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& s
 void check(const dp::ArpConfig& c, const std::string& source);
 
 // docs/configuration.md with its generated tables (one per section) made from
-// the parameter table; the prose around them is kept.
-std::string update_reference_doc(const std::string& doc);
+// the parameter table; the prose around them is kept. InputError naming
+// source if a section of the table has no generated block in it.
+std::string update_reference_doc(const std::string& doc, const std::string& source = "configuration reference");
 
 // Every key with its value, range, unit and doc (`arpsim config --list`).
 std::string listing(const dp::ArpConfig& c);

@@ -23,7 +23,8 @@ struct HostSpec {
   std::optional<double> walk_speed;  // --speed, m/s (unset: 1, or the walk file's; 0: standing at the first point)
   bool baseline = false;        // --baseline: everything in memory 0, every frame
   std::optional<double> threshold_deg;  // --threshold-deg: overrides memory.threshold_deg (theta_t)
-  host::RenderEngine engine;    // --engine-triangles, --engine-fill, --engine-setup
+  // --engine-triangles, --engine-fill, --engine-setup: override host.triangles_per_s, texels_per_s, object_setup_s
+  std::optional<double> engine_triangles, engine_fill, engine_setup;
   double region_size = 0;       // --regions, m (0: object-level)
   double margin = 0.5;          // --margin, m
   bool region_cubes = false;    // --region-cubes

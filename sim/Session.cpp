@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <tuple>
 
 #include "FrameImage.hpp"
 #include "HardwareCost.hpp"
@@ -22,6 +23,7 @@
 #include "common/GtkwSaveFile.hpp"
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
+#include "common/ParameterJson.hpp"
 #include "common/Units.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
@@ -128,11 +130,15 @@ Session::Session(RunSpec spec)
       timing_(spec_.config.timing),
       stream_(dp::OrientationStream::constant(dp::Quat{})),
       memories_(spec_.config.memory, spec_.config.timing.eyes) {
-  // --threshold-deg overrides the configuration's theta_t: the report's configuration says what ran.
+  // --threshold-deg and --engine-* override the configuration's keys: the report's configuration says what ran.
   if (const auto& t = spec_.host.threshold_deg) {
     HostSpec::threshold_rad(*t);  // its range, named as the option
     spec_.config.memory.threshold_deg = *t;
   }
+  for (const auto& [option, key, value] : {std::tuple{"--engine-triangles", "host.triangles_per_s", spec_.host.engine_triangles},
+                                           std::tuple{"--engine-fill", "host.texels_per_s", spec_.host.engine_fill},
+                                           std::tuple{"--engine-setup", "host.object_setup_s", spec_.host.engine_setup}})
+    if (value) set_parameter(*dp::arp_parameters().find(key), nlohmann::json(*value), option, spec_.config);  // its declared range
   spec_.memories.expect_plan(spec_.config, spec_.config_source);
   if (!scm::parse(spec_.fidelity, fidelity_))
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
@@ -436,10 +442,6 @@ void Session::build_memories() {
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
   host::PriorityConfig pc = host::PriorityConfig::of(c.memory, timing_.refresh_hz());
   pc.baseline = h.baseline;
-  for (auto [name, v] : {std::pair<const char*, double>{"--engine-triangles", h.engine.triangles_per_s},
-                         {"--engine-fill", h.engine.pixels_per_s}})
-    if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive rate");
-  if (!(h.engine.object_setup_s >= 0) || !std::isfinite(h.engine.object_setup_s)) throw InputError("--engine-setup", "", "must be >= 0");
   auto head = [this](double tt) {
     // The host may render ahead of the frame (a memory queued behind a busy
     // engine): the generated motion is extended to whatever time it asks for.
@@ -461,7 +463,7 @@ void Session::build_memories() {
     regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(seconds_of(start_ps_)),
                                                        "--margin");
   }
-  host_ = std::make_unique<host::HostSimulation>(*scene_, pc, h.engine, *walk_, head, memories_, spec_.memories.ipd_m,
+  host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
                                                  timing_.refresh_hz());
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);

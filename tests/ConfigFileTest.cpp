@@ -49,16 +49,28 @@ TEST(ConfigFile, TheCommittedReferenceDocIsGeneratedFromTheParameterTable) {
     }
 }
 
+// A section of the table with no generated block in the doc is an error naming
+// the doc and the section, not "current" with its keys left out.
+TEST(ConfigFile, TheReferenceDocMustHaveATableForEverySection) {
+  std::string doc = test::read_text(std::string(ARPSIM_SOURCE_DIR) + "/docs/configuration.md");
+  const size_t b = doc.find("<!-- generated: host -->");
+  ASSERT_NE(b, std::string::npos);
+  doc.erase(b, doc.find("<!-- end generated -->", b) + 22 - b);
+  const InputError e = error_of([&] { config::update_reference_doc(doc, "my.md"); });
+  EXPECT_EQ(e.source(), "my.md");
+  EXPECT_NE(e.reason().find("section 'host'"), std::string::npos) << e.what();
+}
+
 TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
   const auto& t = dp::arp_parameters();
-  EXPECT_EQ(t.sections(), (std::vector<std::string>{"display", "lens", "datapath", "memory", "pipeline", "timed", "plan"}));
+  EXPECT_EQ(t.sections(), (std::vector<std::string>{"display", "lens", "datapath", "memory", "pipeline", "timed", "host", "plan"}));
   size_t n = 0;
   for (const auto& p : t.all()) {
     ++n;
     EXPECT_FALSE(p.doc.empty()) << p.key;
     EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
   }
-  EXPECT_EQ(n, 12u + 3 + 12 + 11 + 5 + 2 * dp::kStageCount + 4 + 2);  // display, lens, datapath, memory, pipeline, timed, plan
+  EXPECT_EQ(n, 12u + 3 + 12 + 11 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
   // The table and the JSON writer agree: every key written is declared, and the other way round.
   const json j = config::to_json(dp::ArpConfig{});
   size_t written = 0;

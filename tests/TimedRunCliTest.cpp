@@ -412,6 +412,39 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
   }
 }
 
+// The host's rendering engine is configuration (host.*): the same run from the
+// key and from --engine-triangles, the option winning over the key, the report's
+// configuration saying what ran; a slow engine makes images late.
+TEST(TimedRunCli, TheHostEngineIsConfiguration) {
+  TempDir d;
+  const std::string walk = " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 0 --set memory.face_size=64";
+  std::map<std::string, nlohmann::json> rep;
+  for (const auto& [name, args] : std::vector<std::pair<std::string, std::string>>{
+           {"default", ""},
+           {"key", " --set host.triangles_per_s=2e5"},
+           {"option", " --engine-triangles 2e5"},
+           {"both", " --set host.triangles_per_s=1e15 --engine-triangles 2e5"}}) {
+    const auto r = run_command(kArpsim + walk + args + " --report " + d.file(name + ".json"));
+    ASSERT_EQ(r.status, 0) << name << "\n" << r.output;
+    rep[name] = load(d.file(name + ".json"));
+  }
+  auto skipped = [](const nlohmann::json& j) {
+    int64_t n = 0;
+    for (const auto& m : j["host"]["memories"]) n += m["skipped_overload"].get<int64_t>();
+    return n;
+  };
+  EXPECT_EQ(skipped(rep["default"]), 0);
+  EXPECT_GT(skipped(rep["key"]), 0);  // 2e5 triangles/s: a memory's image takes longer than its period
+  EXPECT_NE(rep["key"]["frames"], rep["default"]["frames"]);
+  EXPECT_EQ(rep["default"]["config"]["host"]["triangles_per_s"], 5e7);
+  for (const char* name : {"key", "option", "both"}) {
+    EXPECT_EQ(rep[name]["config"]["host"]["triangles_per_s"], 2e5) << name;
+    EXPECT_EQ(rep[name]["host"]["engine"]["triangles_per_s"], 2e5) << name;
+    EXPECT_EQ(rep[name]["frames"], rep["key"]["frames"]) << name;
+    EXPECT_EQ(rep[name]["host"]["memories"], rep["key"]["host"]["memories"]) << name;
+  }
+}
+
 // The host model at every level: it updates the memories in the vertical
 // blank before each frame, so all four levels -- and a functional run with a
 // detailed window -- show the same walk bit for bit.

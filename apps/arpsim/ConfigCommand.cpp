@@ -25,7 +25,7 @@ Runner add_config_command(CLI::App& app) {
     const dp::ArpConfig c = a->cfg.resolve();
     if (!a->doc.empty()) {
       const std::string text = read_input_file(a->doc, 1 << 22, "markdown file");
-      const std::string updated = config::update_reference_doc(text);
+      const std::string updated = config::update_reference_doc(text, a->doc);
       if (updated != text) write_text_atomic(a->doc, updated);
       std::printf("arpsim config: %s %s\n", a->doc.c_str(), updated == text ? "is current" : "updated");
       return 0;

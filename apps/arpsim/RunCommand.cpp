@@ -73,9 +73,9 @@ void add_host_options(CLI::App* cmd, RunArgs& a) {
   cmd->add_flag("--warp", h.warp, "--regions: warp the regions' edges toward slower neighbours (hides tearing)");
   cmd->add_option("--warp-falloff", h.warp_falloff, "--warp: distance inside a region over which the warp fades, metres (0: half a region)");
   cmd->add_flag("--baseline", h.baseline, "Host baseline: everything in memory 0, rendered every frame");
-  cmd->add_option("--engine-triangles", h.engine.triangles_per_s, "Simulated renderer: triangles per second")->capture_default_str();
-  cmd->add_option("--engine-fill", h.engine.pixels_per_s, "Simulated renderer: texels filled per second")->capture_default_str();
-  cmd->add_option("--engine-setup", h.engine.object_setup_s, "Simulated renderer: set-up per object, seconds")->capture_default_str();
+  cmd->add_option("--engine-triangles", h.engine_triangles, "Simulated renderer: triangles per second (default: host.triangles_per_s)");
+  cmd->add_option("--engine-fill", h.engine_fill, "Simulated renderer: texels filled per second (default: host.texels_per_s)");
+  cmd->add_option("--engine-setup", h.engine_setup, "Simulated renderer: set-up per object, seconds (default: host.object_setup_s)");
 }
 
 }  // namespace

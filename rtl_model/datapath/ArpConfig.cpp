@@ -158,6 +158,14 @@ ParameterTable<ArpConfig> make_parameters() {
            "clock of the host's write port into display memory");
   t.number("timed.host_texels_per_cycle", [](auto& c) -> auto& { return c.timed.host_texels_per_cycle; }, 1, 1 << 20,
            "texels", "texels the write port stores per host clock (its bandwidth)");
+  // host: the simulated rendering engine of priority rendering (host::RenderEngine)
+  t.number("host.triangles_per_s", [](auto& c) -> auto& { return c.host.triangles_per_s; }, 1.0, 1e15, "triangles/s",
+           "the simulated rendering engine's triangle rate: each triangle counts once per cube face it is sent to, per "
+           "eye (--engine-triangles overrides)");
+  t.number("host.texels_per_s", [](auto& c) -> auto& { return c.host.texels_per_s; }, 1.0, 1e15, "texels/s",
+           "its fill rate: texels passing the depth test (--engine-fill overrides)");
+  t.number("host.object_setup_s", [](auto& c) -> auto& { return c.host.object_setup_s; }, 0.0, 1.0, "s",
+           "its set-up time per object drawn: state changes, transforms (--engine-setup overrides)");
   // plan: what `arpsim plan` records (sim/Planner)
   t.number("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
            "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");

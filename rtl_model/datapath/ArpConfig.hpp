@@ -108,6 +108,17 @@ struct MemoryConfig {
   static constexpr int64_t kMaxUpdateFrames = int64_t{1} << 20;
 };
 
+// The host's simulated rendering engine (host::RenderEngine): how long a render
+// takes, from what it drew -- never the wall-clock time of arpsim's own code, so
+// runs are deterministic. The defaults are a modest engine that renders the
+// whole default gallery, both eyes, at 60 Hz with a little headroom
+// (docs/host.md), so the baseline is not overloaded.
+struct HostEngineConfig {
+  double triangles_per_s = 50e6;  // triangle set-up rate (per face a triangle is sent to)
+  double texels_per_s = 1e9;      // fill rate (texels passing the depth test)
+  double object_setup_s = 5e-6;   // per object drawn (state changes, transforms)
+};
+
 // What `arpsim plan` records of the scene and motion it planned for.
 struct PlanRecord {
   int64_t scene_hash = 0;   // host::scene_hash of the scene (0: not planned)
@@ -160,13 +171,14 @@ struct ArpConfig {
   MemoryConfig memory;
   PipelineConfig pipeline;
   TimedConfig timed;
+  HostEngineConfig host;
   PlanRecord plan;
 };
 
 using arp::ConfigIssue;
 
 // Every parameter of ArpConfig, in sections display, lens, datapath, memory,
-// pipeline, timed: the one declaration of each key's range, unit and doc.
+// pipeline, timed, host, plan: the one declaration of each key's range, unit and doc.
 const ParameterTable<ArpConfig>& arp_parameters();
 
 // Every constraint a configuration must meet so no stage can overflow its
