@@ -392,6 +392,9 @@ Plan make_plan(const PlanRequest& r) {
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");
+  p.not_decided.push_back("whether the rendering engine (host.*, kept from " + r.base_source +
+                          ") carries the planned load: the load above counts each object's triangles once an update, the "
+                          "engine is charged per cube face and eye, plus set-up and fill (a run's report has both)");
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(r.base);
   config::check(p.config, "the plan");
