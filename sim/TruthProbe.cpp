@@ -96,6 +96,7 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
     if (glm::dot(glm::normalize(now_p - eye_now), ahead) < std::cos(c.lens.fov_deg * 0.6 * kPi / 180.0)) continue;  // outside the view
     const double d = host::displacement_rad(hostsim.rendered_from(m, 0), o.world_bound(then).center, eye_now, now_p);
     max_px = std::max(max_px, d / px_rad_);
+    worst_rad_ = std::max(worst_rad_, d);
   }
   // Which object each pixel shows (the nearest texel the pipeline addresses,
   // composited by depth across the memories) against the truth's.
@@ -186,6 +187,7 @@ nlohmann::json TruthProbe::summary() const {
           {"mean_psnr_db", psnrs_.empty() ? 0.0 : mean / static_cast<double>(psnrs_.size())},
           {"worst_psnr_db", psnrs_.empty() ? 0.0 : *std::min_element(psnrs_.begin(), psnrs_.end())},
           {"max_displacement_px", worst_px_},
+          {"max_displacement_deg", rad_to_deg(worst_rad_)},  // against theta_t: priority rendering's bound
           {"worst_share_showing_another_object", worst_object_share_},
           {"mean_tear_pixels", mean_of(tears_)},
           {"max_tear_pixels", tears_.empty() ? 0 : *std::max_element(tears_.begin(), tears_.end())},

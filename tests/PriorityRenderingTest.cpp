@@ -153,3 +153,49 @@ TEST(FrameError, PsnrAndDisplacement) {
   EXPECT_NEAR(displacement_rad({0, 0, 0}, {0, 0, -1}, {0, 0, 0}, {1, 0, -1}), kPi / 4, 1e-12);
   EXPECT_EQ(displacement_rad({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}), 0.0);
 }
+
+// When objects change memory: only at frames where the memories are due
+// anyway. Walking away from a row of balls, objects go to slower memories and
+// every memory renders exactly on its schedule, no more (moves used to force
+// renders). Walking into the row, they go to faster ones in time: at every
+// frame each object's image on screen is within the validity it had when it
+// was rendered (Validity's closed form, evaluated here), give or take the
+// frame its replacement takes to swap in.
+TEST(HostSimulation, ObjectsChangeMemoryOnScheduleAndStayWithinTheirValidity) {
+  Scene s;
+  auto ball = std::make_shared<Mesh>(make_sphere(0.1, 6));
+  for (int i = 0; i < 40; ++i) add_object(s, "ball", ball, {0, 1.6, -1.0 - 0.5 * i}, {});
+  const double th = 2 * kPi / 180, hz = 60;
+  dp::MemoryConfig mc;
+  mc.face_size = 32;
+  auto run = [&](const std::vector<glm::dvec3>& path, double speed, int frames) {
+    dp::DisplayMemorySet mem(mc, 2);
+    PriorityConfig pc;
+    pc.threshold_rad = th;
+    HostSimulation h(s, pc, RenderEngine{}, WalkPath(path, speed, "row"), [](double) { return glm::dquat(1, 0, 0, 0); },
+                     mem, 0.064, hz);
+    h.prime(0);
+    double worst_overrun_s = -1e9;
+    for (int f = 0; f < frames; ++f) {
+      const double t = f / hz;
+      h.before_frame(f, t);
+      for (size_t i = 0; i < s.objects.size(); ++i) {
+        const int m = h.shown_in(i);
+        const double then = h.rendered_at(m);
+        const glm::dvec3 eye_then = WalkPath(path, speed, "row").position(then);
+        const double d = glm::length(s.objects[i].world_bound(then).center - eye_then);
+        const double valid = validity({d, 0.1, speed, 0}, th).period_s();
+        worst_overrun_s = std::max(worst_overrun_s, (t - then) - valid);
+      }
+    }
+    return std::pair{std::vector<MemoryLoad>(h.load()), worst_overrun_s};
+  };
+  // Away from the row at 2 m/s for 96 frames: validity only grows.
+  const auto [away, away_overrun] = run({{0, 1.6, 0}, {0, 1.6, 40}}, 2.0, 96);
+  for (int m = 0; m < 4; ++m) EXPECT_EQ(away[static_cast<size_t>(m)].updates, 96 >> m) << "memory " << m;
+  EXPECT_LE(away_overrun, 1.0 / hz);
+  // Into the row at 4 m/s: validity shrinks; objects leave slow memories in time.
+  const auto [into, into_overrun] = run({{0, 1.6, 0}, {0, 1.6, -40}}, 4.0, 96);
+  EXPECT_LE(into_overrun, 1.0 / hz);
+  EXPECT_GT(into[3].updates, 0);
+}

@@ -122,15 +122,24 @@ void HostSimulation::before_frame(int64_t f, double t) {
     if (due && !free[static_cast<size_t>(m)]) ++load_[static_cast<size_t>(m)].skipped;  // its last image is not even on screen yet
     render[static_cast<size_t>(m)] = due && free[static_cast<size_t>(m)];
   }
-  // An object changes memory only when both memories can render now: the
-  // one it leaves and the one it joins re-render together and swap together,
-  // so it is never on screen twice, nor missing.
+  // An object changes memory only when both memories render now: the one it
+  // leaves and the one it joins re-render in the same frame and swap
+  // together, so it is never on screen twice, nor missing. It waits for a
+  // frame where its memory is due anyway rather than forcing a render (the
+  // ladder's periods nest: a memory due now has every faster one due too),
+  // and goes as far toward where it belongs as the memories due now allow.
+  // Waiting never leaves theta_t: an object was placed, when its memory last
+  // rendered, where its validity from then covers that memory's period, and
+  // validity is direction-free (Validity.hpp), so the image stays within
+  // theta_t until the memory's next scheduled render re-places it (tested).
   for (size_t i = 0; i < scene_.objects.size() && !regions_; ++i) {
-    const int from = sched_.memory_of(i), to = sched_.belongs_in(i);
-    if (from == to || !free[static_cast<size_t>(from)] || !free[static_cast<size_t>(to)]) continue;
-    sched_.move(i);
-    render[static_cast<size_t>(from)] = render[static_cast<size_t>(to)] = 1;
-    moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(to)] = 1;
+    const int from = sched_.memory_of(i);
+    if (!render[static_cast<size_t>(from)]) continue;
+    int target = sched_.belongs_in(i);
+    while (target != from && !render[static_cast<size_t>(target)]) target += target > from ? -1 : 1;
+    if (target == from) continue;
+    sched_.move_to(i, target);
+    moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(target)] = 1;
   }
   int64_t handover_swap = -1;
   for (int m = 0; m < N; ++m) {

@@ -3,10 +3,10 @@
 // object belongs in the slowest memory whose update period is within its
 // validity period (memory 0 if none is), so objects whose image stays right
 // longer are rendered less often. assign() works out where each object
-// belongs; an object actually moves (move()) when the host re-renders both
-// memories together, so it is never shown by two memories, nor by none
-// (HostSimulation; tested). The baseline renders everything into memory 0
-// every frame.
+// belongs; an object actually moves (move(), move_to()) when the host
+// re-renders both memories together, so it is never shown by two memories,
+// nor by none (HostSimulation decides when; tested). The baseline renders
+// everything into memory 0 every frame.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -55,9 +55,10 @@ class PriorityScheduler {
   void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
   int memory_of(size_t object) const { return memory_[object]; }    // where it is
   int belongs_in(size_t object) const { return desired_[object]; }  // where it should go
-  void move(size_t object) {
-    if (memory_[object] != desired_[object]) ++moves_;
-    memory_[object] = desired_[object];
+  void move(size_t object) { move_to(object, desired_[object]); }
+  void move_to(size_t object, int m) {  // (toward where it belongs, as far as the memories rendering now allow)
+    if (memory_[object] != m) ++moves_;
+    memory_[object] = m;
   }
   void settle() {  // every object where it belongs (before a run)
     for (size_t i = 0; i < memory_.size(); ++i) memory_[i] = desired_[i];
