@@ -176,16 +176,26 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
                   {"mse", ie.mse},
                   {"pixels_differing", ie.differing},
                   {"max_displacement_px", max_px}};
-  psnrs_.push_back(std::isfinite(ie.psnr_db) ? ie.psnr_db : 999.0);
+  psnrs_.push_back(ie.psnr_db);  // infinite when identical
   worst_px_ = std::max(worst_px_, max_px);
 }
 
 nlohmann::json TruthProbe::summary() const {
-  double mean = 0;
-  for (double p : psnrs_) mean += p;
+  // Over the frames that differ from the truth: an identical frame's PSNR is
+  // infinite, and averaging in a stand-in for it (999 dB, as a frame's row
+  // says) made the mean meaningless whenever some frames were exact.
+  double mean = 0, worst = 999.0;
+  int64_t differing = 0;
+  for (double p : psnrs_)
+    if (std::isfinite(p)) {
+      mean += p;
+      worst = std::min(worst, p);
+      ++differing;
+    }
   return {{"frames_measured", psnrs_.size()},
-          {"mean_psnr_db", psnrs_.empty() ? 0.0 : mean / static_cast<double>(psnrs_.size())},
-          {"worst_psnr_db", psnrs_.empty() ? 0.0 : *std::min_element(psnrs_.begin(), psnrs_.end())},
+          {"frames_identical_to_truth", static_cast<int64_t>(psnrs_.size()) - differing},
+          {"mean_psnr_db", psnrs_.empty() ? 0.0 : differing ? mean / static_cast<double>(differing) : 999.0},
+          {"worst_psnr_db", psnrs_.empty() ? 0.0 : worst},
           {"max_displacement_px", worst_px_},
           {"max_displacement_deg", rad_to_deg(worst_rad_)},  // against theta_t: priority rendering's bound
           {"worst_share_showing_another_object", worst_object_share_},
