@@ -47,7 +47,7 @@ set ylabel "triangles rendered per second (millions)"
 set y2label "PSNR against the truth (dB)"
 set ytics nomirror
 set y2tics
-set key bottom left
+set key below
 set grid
 plot "$csv" using 2:(\$1 == $first ? \$3/1e6 : 1/0) skip 1 with linespoints lw 2 title "priority rendering load (memory m every $first^m frames)", \
      "$csv" using 2:(\$1 == $first ? \$4/1e6 : 1/0) skip 1 with lines dt 2 lw 2 title "everything every frame", \
