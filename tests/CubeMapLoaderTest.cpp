@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 #include "TestSupport.hpp"
@@ -159,6 +160,35 @@ TEST(ImageFiles, ReadsOnlyTheDocumentedFormatsWhateverTheName) {
               std::string::npos)
         << e;
   }
+}
+
+// An OpenEXR header is checked before OpenEXR reads it: OpenEXR sizes its
+// chunk offset table from the data window before it finds the file's end (a
+// 717-byte file took 2 GB). A window the file cannot hold the table of, one
+// beyond the pixel limit, or a header cut short is refused by name; a real
+// file, scan-line or tiled, reads.
+TEST(ImageFiles, AnOpenExrHeaderMustFitItsFile) {
+  test::TempDir d;
+  write_rgb8(d.file("a.exr"), RgbImage(8, 4));
+  EXPECT_EQ(read_rgb8(d.file("a.exr")).width, 8);
+  const std::string good = test::read_text(d.file("a.exr"));
+  const std::string key = std::string("dataWindow") + '\0' + "box2i" + '\0';
+  const size_t at = good.find(key);
+  ASSERT_NE(at, std::string::npos);
+  auto with_window = [&](const std::string& name, int32_t xmax, int32_t ymax) {
+    std::string f = good;
+    std::memcpy(&f[at + key.size() + 4 + 8], &xmax, 4);
+    std::memcpy(&f[at + key.size() + 4 + 12], &ymax, 4);
+    std::ofstream(d.file(name), std::ios::binary) << f;
+    return test::error_of([&] { read_rgb8(d.file(name)); });
+  };
+  const InputError tall = with_window("tall.exr", 7, 99999);
+  EXPECT_EQ(tall.place(), "dataWindow");
+  EXPECT_NE(tall.reason().find("chunk offsets"), std::string::npos) << tall.what();
+  const InputError huge = with_window("huge.exr", 29999, 29999);
+  EXPECT_NE(huge.reason().find("30000 x 30000"), std::string::npos) << huge.what();
+  std::ofstream(d.file("cut.exr"), std::ios::binary) << good.substr(0, 40);
+  EXPECT_EQ(test::error_of([&] { read_rgb8(d.file("cut.exr")); }).place(), "header");
 }
 
 TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "ImagePrecheck.hpp"
 #include "OiioModule.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/CompanionFile.hpp"
@@ -106,7 +107,7 @@ constexpr size_t kErrorLength = 512;
 }  // namespace
 
 RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>& check_size) {
-  regular_file_size(path, "image");
+  precheck_image(path, regular_file_size(path, "image"), kMaxImagePixels);  // before a decoder allocates from the header
   const Oiio& api = oiio(path);
   const QuietStderr quiet;  // declared before the reader: restored after it is gone (it may print as it closes)
   char err[kErrorLength] = "";

@@ -1,0 +1,98 @@
+#include "ImagePrecheck.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "common/InputError.hpp"
+
+namespace arp::host {
+
+namespace {
+
+uint32_t le32(const uint8_t* p) { return p[0] | (p[1] << 8) | (p[2] << 16) | (static_cast<uint32_t>(p[3]) << 24); }
+
+// Scan lines per chunk for each OpenEXR compression (the file format's table).
+int exr_lines_per_chunk(uint8_t compression) {
+  switch (compression) {
+    case 0: case 1: case 2: return 1;    // none, RLE, ZIPS
+    case 3: case 5: return 16;           // ZIP, PXR24
+    case 4: case 6: case 7: case 8: return 32;  // PIZ, B44, B44A, DWAA
+    case 9: return 256;                  // DWAB
+    default: return 0;                   // unknown
+  }
+}
+
+void precheck_exr(const std::string& path, const std::vector<uint8_t>& h, uint64_t file_size, uint64_t max_pixels) {
+  const uint32_t version = le32(&h[4]);
+  if ((version & 0xff) != 2) throw InputError(path, "header", "OpenEXR version " + std::to_string(version & 0xff) + ", not 2");
+  if (version & 0x1800) throw InputError(path, "header", "multi-part or deep OpenEXR: arpsim reads single-part, flat images");
+  const bool tiled = version & 0x200;
+  // Attributes: name\0 type\0 int32 size, value; an empty name ends the header.
+  size_t p = 8;
+  bool have_window = false;
+  int32_t box[4] = {0, 0, 0, 0};
+  int lines = 1;
+  uint32_t tile_w = 0, tile_h = 0;
+  for (;;) {
+    auto cstr = [&](const char* what) {
+      const auto end = std::find(h.begin() + static_cast<std::ptrdiff_t>(p), h.end(), uint8_t{0});
+      if (end == h.end() || end - h.begin() - static_cast<std::ptrdiff_t>(p) > 255)
+        throw InputError(path, "header", std::string("truncated or malformed OpenEXR header (") + what + ")");
+      std::string s(h.begin() + static_cast<std::ptrdiff_t>(p), end);
+      p = static_cast<size_t>(end - h.begin()) + 1;
+      return s;
+    };
+    const std::string name = cstr("attribute name");
+    if (name.empty()) break;
+    const std::string type = cstr("attribute type");
+    if (p + 4 > h.size()) throw InputError(path, "header", "truncated OpenEXR header (attribute size)");
+    const uint32_t size = le32(&h[p]);
+    p += 4;
+    if (size > h.size() - p) throw InputError(path, "header", "OpenEXR attribute '" + quoted(name) + "' runs past the end of the file");
+    const uint8_t* v = &h[p];
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      for (int k = 0; k < 4; ++k) box[k] = static_cast<int32_t>(le32(v + 4 * k));
+      have_window = true;
+    } else if (name == "compression" && type == "compression" && size == 1) {
+      lines = exr_lines_per_chunk(v[0]);
+      if (lines == 0) throw InputError(path, "header", "unknown OpenEXR compression " + std::to_string(v[0]));
+    } else if (name == "tiles" && type == "tiledesc" && size == 9) {
+      tile_w = le32(v);
+      tile_h = le32(v + 4);
+    }
+    p += size;
+  }
+  if (!have_window) throw InputError(path, "header", "OpenEXR header without a dataWindow");
+  const int64_t w = int64_t{box[2]} - box[0] + 1, hgt = int64_t{box[3]} - box[1] + 1;
+  if (w <= 0 || hgt <= 0) throw InputError(path, "dataWindow", "an empty or inverted data window");
+  if (static_cast<uint64_t>(w) * static_cast<uint64_t>(hgt) > max_pixels)
+    throw InputError(path, "dataWindow", "declares " + std::to_string(w) + " x " + std::to_string(hgt) +
+                                             " pixels; images are limited to 2^28 pixels");
+  // The offset table follows the header: one 8-byte offset a chunk (the first level's, for tiles).
+  if (tiled && (tile_w == 0 || tile_h == 0)) throw InputError(path, "tiles", "a tiled OpenEXR file without a tile size");
+  const uint64_t chunks = tiled ? static_cast<uint64_t>((w + tile_w - 1) / tile_w) * static_cast<uint64_t>((hgt + tile_h - 1) / tile_h)
+                                : static_cast<uint64_t>((hgt + lines - 1) / lines);
+  if (chunks * 8 > file_size - p)
+    throw InputError(path, "dataWindow", std::to_string(w) + " x " + std::to_string(hgt) + " needs " + std::to_string(chunks) +
+                                             " chunk offsets, " + std::to_string(chunks * 8) + " bytes, and the file has " +
+                                             std::to_string(file_size - p) + " after its header: truncated, or not what it declares");
+}
+
+}  // namespace
+
+void precheck_image(const std::string& path, uint64_t file_size, uint64_t max_pixels) {
+  static constexpr uint8_t kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+  std::ifstream in(path, std::ios::binary);
+  uint8_t magic[4] = {0, 0, 0, 0};
+  if (!in.read(reinterpret_cast<char*>(magic), 4) || std::memcmp(magic, kExrMagic, 4) != 0) return;  // not OpenEXR
+  // The header, at most 1 MiB (an OpenEXR header is attributes: a few kB at most in practice).
+  std::vector<uint8_t> h(static_cast<size_t>(std::min<uint64_t>(file_size, uint64_t{1} << 20)));
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(h.data()), static_cast<std::streamsize>(h.size()));
+  if (h.size() < 8) throw InputError(path, "header", "truncated OpenEXR file");
+  precheck_exr(path, h, file_size, max_pixels);
+}
+
+}  // namespace arp::host
