@@ -26,6 +26,13 @@ const std::string kSmall =
 
 using arp::test::read_text;
 nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
+// `arpsim run` over the gallery walk with these options, reporting to `name` in d: its report
+// (null, and a failure naming the options, when it did not run).
+nlohmann::json gallery_walk(const TempDir& d, const std::string& options, const std::string& name = "r.json") {
+  const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery" + options + " --report " + d.file(name));
+  EXPECT_EQ(r.status, 0) << options << "\n" << r.output;
+  return r.status == 0 ? load(d.file(name)) : nlohmann::json();
+}
 }  // namespace
 
 TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics) {
@@ -417,17 +424,13 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
 // configuration saying what ran; a slow engine makes images late.
 TEST(TimedRunCli, TheHostEngineIsConfiguration) {
   TempDir d;
-  const std::string walk = " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 0 --set memory.face_size=64";
   std::map<std::string, nlohmann::json> rep;
   for (const auto& [name, args] : std::vector<std::pair<std::string, std::string>>{
            {"default", ""},
            {"key", " --set host.triangles_per_s=2e5"},
            {"option", " --engine-triangles 2e5"},
-           {"both", " --set host.triangles_per_s=1e15 --engine-triangles 2e5"}}) {
-    const auto r = run_command(kArpsim + walk + args + " --report " + d.file(name + ".json"));
-    ASSERT_EQ(r.status, 0) << name << "\n" << r.output;
-    rep[name] = load(d.file(name + ".json"));
-  }
+           {"both", " --set host.triangles_per_s=1e15 --engine-triangles 2e5"}})
+    rep[name] = gallery_walk(d, " --frames 6 --every 0 --error-every 0 --set memory.face_size=64" + args, name + ".json");
   auto skipped = [](const nlohmann::json& j) {
     int64_t n = 0;
     for (const auto& m : j["host"]["memories"]) n += m["skipped_overload"].get<int64_t>();
@@ -451,10 +454,7 @@ TEST(TimedRunCli, TheHostEngineIsConfiguration) {
 // in 999 dB for the exact ones made the 600-frame walk's mean 110 dB.)
 TEST(TimedRunCli, ErrorSummaryAveragesThePsnrOfFramesThatDiffer) {
   TempDir d;
-  const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --first-frame 185 --frames 16 --every 0 --error-every 5" +
-                             " --set memory.face_size=128 --report " + d.file("r.json"));
-  ASSERT_EQ(r.status, 0) << r.output;
-  const auto j = load(d.file("r.json"));
+  const auto j = gallery_walk(d, " --first-frame 185 --frames 16 --every 0 --error-every 5 --set memory.face_size=128");
   std::vector<double> differ;
   int identical = 0;
   for (const auto& f : j["frames"])
@@ -500,10 +500,7 @@ TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
 // settings are refused before anything runs.
 TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   TempDir d;
-  const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 3" +
-                             " --regions 4 --warp --set memory.face_size=128 --report " + d.file("r.json"));
-  ASSERT_EQ(r.status, 0) << r.output;
-  const auto j = load(d.file("r.json"));
+  const auto j = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --regions 4 --warp --set memory.face_size=128");
   EXPECT_EQ(j["host"]["mode"], "regions");
   EXPECT_GT(j["host"]["regions"]["segments"].get<int>(), j["host"]["regions"]["objects_cut"].get<int>());
   EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
@@ -515,11 +512,8 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_GT(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
   EXPECT_GT(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
   // Cubes for tall worlds, and the magnified tear at a place given by --tear-at.
-  const auto cu = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --error-every 3" +
-                              " --regions 2 --region-cubes --set memory.face_size=128 --tear-image " + d.file("tear.png") +
-                              " --tear-at 3:1:100:200 --report " + d.file("c.json"));
-  ASSERT_EQ(cu.status, 0) << cu.output;
-  const auto jc = load(d.file("c.json"));
+  const auto jc = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --regions 2 --region-cubes --set memory.face_size=128"
+                                 " --tear-image " + d.file("tear.png") + " --tear-at 3:1:100:200", "c.json");
   EXPECT_EQ(jc["host"]["regions"]["shape"], "cubes");
   EXPECT_EQ(jc["host"]["error"]["tear_image"]["frame"], 3);
   EXPECT_EQ(jc["host"]["error"]["tear_image"]["x"], 100);
