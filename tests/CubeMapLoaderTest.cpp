@@ -191,6 +191,30 @@ TEST(ImageFiles, AnOpenExrHeaderMustFitItsFile) {
   EXPECT_EQ(test::error_of([&] { read_rgb8(d.file("cut.exr")); }).place(), "header");
 }
 
+// Every PNG chunk's declared length is checked against the file before libpng
+// reads it: libpng allocates an unknown chunk by its declared length (a
+// 345-byte file took 1.8 GB). A chunk longer than the rest of the file, a file
+// cut before IEND, or an IHDR beyond the pixel limit is refused by name.
+TEST(ImageFiles, EveryPngChunkMustFitItsFile) {
+  test::TempDir d;
+  write_rgb8(d.file("a.png"), RgbImage(8, 4));
+  EXPECT_EQ(read_rgb8(d.file("a.png")).width, 8);
+  const std::string good = test::read_text(d.file("a.png"));
+  ASSERT_EQ(good.substr(12, 4), "IHDR");
+  auto refused = [&](const std::string& name, const std::string& bytes) {
+    std::ofstream(d.file(name), std::ios::binary) << bytes;
+    return test::error_of([&] { read_rgb8(d.file(name)); });
+  };
+  // A private ancillary chunk of 1.6 GB declared, 4 bytes there, after IHDR (8 + 25 bytes).
+  const InputError big = refused("big.png", good.substr(0, 33) + std::string("\x60\0\0\0prIv\0\0\0\0", 12) + good.substr(33));
+  EXPECT_EQ(big.place(), "chunk 1 (prIv)");
+  EXPECT_NE(big.reason().find("declares 1610612736 bytes"), std::string::npos) << big.what();
+  EXPECT_NE(refused("cut.png", good.substr(0, good.size() - 12)).reason().find("no IEND"), std::string::npos);
+  std::string wide = good;
+  wide.replace(16, 8, std::string("\0\0\x75\x30\0\0\x75\x30", 8));  // 30000 x 30000
+  EXPECT_EQ(refused("wide.png", wide).place(), "IHDR");
+}
+
 TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {
   test::TempDir d;
   const size_t before = d.entries();

@@ -1,6 +1,7 @@
 #include "ImagePrecheck.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -80,15 +81,49 @@ void precheck_exr(const std::string& path, const std::vector<uint8_t>& h, uint64
                                              std::to_string(file_size - p) + " after its header: truncated, or not what it declares");
 }
 
+uint32_t be32(const uint8_t* p) { return (static_cast<uint32_t>(p[0]) << 24) | (p[1] << 16) | (p[2] << 8) | p[3]; }
+
+// Every chunk's declared length within the file, up to IEND: libpng allocates
+// a chunk it does not know by its declared length before reading it.
+void precheck_png(const std::string& path, std::ifstream& in, uint64_t file_size, uint64_t max_pixels) {
+  uint64_t at = 8;  // after the signature
+  for (int n = 0;; ++n) {
+    uint8_t head[8];
+    in.seekg(static_cast<std::streamoff>(at));
+    if (at + 8 > file_size || !in.read(reinterpret_cast<char*>(head), 8))
+      throw InputError(path, "chunk " + std::to_string(n), "the file ends before its PNG chunks do (no IEND)");
+    const uint32_t length = be32(head);
+    const std::string type(reinterpret_cast<const char*>(head + 4), 4);
+    const bool letters = std::all_of(type.begin(), type.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+    const std::string name = letters ? type : "not a chunk type";
+    if (length > 0x7fffffffu || uint64_t{length} + 12 > file_size - at)
+      throw InputError(path, "chunk " + std::to_string(n) + " (" + name + ")",
+                       "declares " + std::to_string(length) + " bytes and the file has " + std::to_string(file_size - at - 8) +
+                           " after its header: truncated, or not what it declares");
+    if (n == 0 && type == "IHDR" && length >= 8) {
+      if (!in.read(reinterpret_cast<char*>(head), 8)) throw InputError(path, "IHDR", "truncated");
+      const uint64_t w = be32(head), h = be32(head + 4);
+      if (w * h > max_pixels)
+        throw InputError(path, "IHDR", "declares " + std::to_string(w) + " x " + std::to_string(h) + " pixels; images are limited to 2^28 pixels");
+    }
+    if (type == "IEND") return;
+    at += uint64_t{length} + 12;
+  }
+}
+
 }  // namespace
 
 void precheck_image(const std::string& path, uint64_t file_size, uint64_t max_pixels) {
   static constexpr uint8_t kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+  static constexpr uint8_t kPngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   std::ifstream in(path, std::ios::binary);
-  uint8_t magic[4] = {0, 0, 0, 0};
-  if (!in.read(reinterpret_cast<char*>(magic), 4) || std::memcmp(magic, kExrMagic, 4) != 0) return;  // not OpenEXR
+  uint8_t magic[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  in.read(reinterpret_cast<char*>(magic), 8);
+  if (file_size >= 8 && std::memcmp(magic, kPngMagic, 8) == 0) return precheck_png(path, in, file_size, max_pixels);
+  if (file_size < 4 || std::memcmp(magic, kExrMagic, 4) != 0) return;  // neither: its decoder checks it
   // The header, at most 1 MiB (an OpenEXR header is attributes: a few kB at most in practice).
   std::vector<uint8_t> h(static_cast<size_t>(std::min<uint64_t>(file_size, uint64_t{1} << 20)));
+  in.clear();
   in.seekg(0);
   in.read(reinterpret_cast<char*>(h.data()), static_cast<std::streamsize>(h.size()));
   if (h.size() < 8) throw InputError(path, "header", "truncated OpenEXR file");

@@ -1,10 +1,15 @@
 // What an image file's header promises, checked before any decoder sees it,
-// where a decoder would allocate from the header alone. OpenEXR reads a
-// scan-line or tile offset table sized by the data window before it finds that
-// the file ends: a 717-byte file declaring a tall data window took 2 GB
-// (found by the image fuzzer). An OpenEXR header is parsed here (bounded by the
-// file's size) and refused when its data window exceeds the image limits or its
-// offset table cannot fit in the file; other formats pass through unchanged.
+// where a decoder would allocate from the header alone (both found by the
+// image fuzzer):
+// - OpenEXR reads a scan-line or tile offset table sized by the data window
+//   before it finds that the file ends: a 717-byte file took 2 GB. Its header
+//   is parsed here (bounded by the file's size) and refused when the data
+//   window exceeds the image limits or the offset table cannot fit in the file.
+// - libpng allocates a chunk it does not know by its declared length: a
+//   345-byte PNG declaring a 1.7 GB chunk took 1.8 GB. Every chunk's length
+//   is checked against the rest of the file, up to IEND, and IHDR's size
+//   against the pixel limit.
+// Other formats pass through unchanged.
 #pragma once
 #include <cstdint>
 #include <string>
