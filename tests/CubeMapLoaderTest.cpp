@@ -215,6 +215,21 @@ TEST(ImageFiles, EveryPngChunkMustFitItsFile) {
   EXPECT_EQ(refused("wide.png", wide).place(), "IHDR");
 }
 
+// A BMP's info header is checked before OpenImageIO's reader trusts it: a
+// 24-bit image marked run-length-8 crashed it (SIGSEGV, found by the fuzzer).
+TEST(ImageFiles, ABmpHeaderMustBeACombinationTheFormatHas) {
+  test::TempDir d;
+  write_rgb8(d.file("a.bmp"), RgbImage(8, 4));
+  EXPECT_EQ(read_rgb8(d.file("a.bmp")).width, 8);
+  std::string f = test::read_text(d.file("a.bmp"));
+  ASSERT_EQ(f[28], 24);  // bits a pixel
+  f[30] = 1;             // compression: run-length 8
+  std::ofstream(d.file("rle.bmp"), std::ios::binary) << f;
+  const InputError e = test::error_of([&] { read_rgb8(d.file("rle.bmp")); });
+  EXPECT_EQ(e.place(), "header");
+  EXPECT_NE(e.reason().find("compression 1 with 24 bits"), std::string::npos) << e.what();
+}
+
 TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {
   test::TempDir d;
   const size_t before = d.entries();

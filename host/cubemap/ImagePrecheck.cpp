@@ -111,6 +111,50 @@ void precheck_png(const std::string& path, std::ifstream& in, uint64_t file_size
   }
 }
 
+uint16_t le16(const uint8_t* p) { return static_cast<uint16_t>(p[0] | (p[1] << 8)); }
+
+// The info header's fields against each other: OpenImageIO's BMP reader
+// trusts them (a 24-bit image marked run-length-8 crashed it).
+void precheck_bmp(const std::string& path, std::ifstream& in, uint64_t file_size, uint64_t max_pixels) {
+  uint8_t h[34] = {};
+  in.clear();
+  in.seekg(0);
+  if (file_size < 26 || !in.read(reinterpret_cast<char*>(h), static_cast<std::streamsize>(std::min<uint64_t>(file_size, 34))))
+    throw InputError(path, "header", "truncated BMP file");
+  const uint32_t offset = le32(h + 10), info = le32(h + 14);
+  int64_t w = 0, hgt = 0;
+  uint16_t planes = 0, bpp = 0;
+  uint32_t compression = 0;
+  if (info == 12) {  // OS/2 core header: 16-bit sizes, no compression
+    w = le16(h + 18);
+    hgt = le16(h + 20);
+    planes = le16(h + 22);
+    bpp = le16(h + 24);
+  } else if (info >= 40 && file_size >= 34) {
+    w = static_cast<int32_t>(le32(h + 18));
+    hgt = static_cast<int32_t>(le32(h + 22));  // negative: rows top-down
+    planes = le16(h + 26);
+    bpp = le16(h + 28);
+    compression = le32(h + 30);
+  } else {
+    throw InputError(path, "header", "BMP info header of " + std::to_string(info) + " bytes (12, or 40 and more)");
+  }
+  if (hgt < 0) hgt = -hgt;
+  if (w <= 0 || hgt <= 0) throw InputError(path, "header", "BMP of " + std::to_string(w) + " x " + std::to_string(hgt) + " pixels");
+  if (static_cast<uint64_t>(w) * static_cast<uint64_t>(hgt) > max_pixels)
+    throw InputError(path, "header", "declares " + std::to_string(w) + " x " + std::to_string(hgt) + " pixels; images are limited to 2^28 pixels");
+  if (planes != 1) throw InputError(path, "header", "BMP with " + std::to_string(planes) + " planes (must be 1)");
+  const bool depth_ok = compression == 0   ? (bpp == 1 || bpp == 4 || bpp == 8 || bpp == 16 || bpp == 24 || bpp == 32)
+                        : compression == 1 ? bpp == 8    // RLE8
+                        : compression == 2 ? bpp == 4    // RLE4
+                        : compression == 3 ? (bpp == 16 || bpp == 32)  // bit fields
+                                           : false;
+  if (!depth_ok)
+    throw InputError(path, "header", "BMP compression " + std::to_string(compression) + " with " + std::to_string(bpp) +
+                                         " bits a pixel: not a combination the format has (0: 1-32 bits, 1: 8, 2: 4, 3: 16 or 32)");
+  if (offset >= file_size) throw InputError(path, "header", "BMP pixel data offset " + std::to_string(offset) + " is past the end of the file");
+}
+
 }  // namespace
 
 void precheck_image(const std::string& path, uint64_t file_size, uint64_t max_pixels) {
@@ -120,6 +164,7 @@ void precheck_image(const std::string& path, uint64_t file_size, uint64_t max_pi
   uint8_t magic[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   in.read(reinterpret_cast<char*>(magic), 8);
   if (file_size >= 8 && std::memcmp(magic, kPngMagic, 8) == 0) return precheck_png(path, in, file_size, max_pixels);
+  if (file_size >= 2 && magic[0] == 'B' && magic[1] == 'M') return precheck_bmp(path, in, file_size, max_pixels);
   if (file_size < 4 || std::memcmp(magic, kExrMagic, 4) != 0) return;  // neither: its decoder checks it
   // The header, at most 1 MiB (an OpenEXR header is attributes: a few kB at most in practice).
   std::vector<uint8_t> h(static_cast<size_t>(std::min<uint64_t>(file_size, uint64_t{1} << 20)));

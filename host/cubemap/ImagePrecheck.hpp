@@ -1,6 +1,6 @@
 // What an image file's header promises, checked before any decoder sees it,
-// where a decoder would allocate from the header alone (both found by the
-// image fuzzer):
+// where a decoder would allocate from the header alone or trust it (each
+// found by the image fuzzer):
 // - OpenEXR reads a scan-line or tile offset table sized by the data window
 //   before it finds that the file ends: a 717-byte file took 2 GB. Its header
 //   is parsed here (bounded by the file's size) and refused when the data
@@ -9,6 +9,10 @@
 //   345-byte PNG declaring a 1.7 GB chunk took 1.8 GB. Every chunk's length
 //   is checked against the rest of the file, up to IEND, and IHDR's size
 //   against the pixel limit.
+// - OpenImageIO's BMP reader trusts the info header: a 340-byte 24-bit BMP
+//   marked run-length-8 crashed it (SIGSEGV). Bits a pixel, compression and
+//   planes are checked against the combinations the format has, the size
+//   against the pixel limit, the data offset against the file.
 // Other formats pass through unchanged.
 #pragma once
 #include <cstdint>
