@@ -14,6 +14,15 @@ namespace {
 
 uint32_t le32(const uint8_t* p) { return p[0] | (p[1] << 8) | (p[2] << 16) | (static_cast<uint32_t>(p[3]) << 24); }
 
+// The header's width x height against the pixel limit (a power of two), at `place`.
+void check_pixels(const std::string& path, const std::string& place, uint64_t w, uint64_t h, uint64_t max_pixels) {
+  if (w * h <= max_pixels) return;
+  int bits = 0;
+  while ((uint64_t{1} << bits) < max_pixels) ++bits;
+  throw InputError(path, place, "declares " + std::to_string(w) + " x " + std::to_string(h) + " pixels; images are limited to 2^" +
+                                    std::to_string(bits) + " pixels");
+}
+
 // Scan lines per chunk for each OpenEXR compression (the file format's table).
 int exr_lines_per_chunk(uint8_t compression) {
   switch (compression) {
@@ -68,9 +77,7 @@ void precheck_exr(const std::string& path, const std::vector<uint8_t>& h, uint64
   if (!have_window) throw InputError(path, "header", "OpenEXR header without a dataWindow");
   const int64_t w = int64_t{box[2]} - box[0] + 1, hgt = int64_t{box[3]} - box[1] + 1;
   if (w <= 0 || hgt <= 0) throw InputError(path, "dataWindow", "an empty or inverted data window");
-  if (static_cast<uint64_t>(w) * static_cast<uint64_t>(hgt) > max_pixels)
-    throw InputError(path, "dataWindow", "declares " + std::to_string(w) + " x " + std::to_string(hgt) +
-                                             " pixels; images are limited to 2^28 pixels");
+  check_pixels(path, "dataWindow", static_cast<uint64_t>(w), static_cast<uint64_t>(hgt), max_pixels);
   // The offset table follows the header: one 8-byte offset a chunk (the first level's, for tiles).
   if (tiled && (tile_w == 0 || tile_h == 0)) throw InputError(path, "tiles", "a tiled OpenEXR file without a tile size");
   const uint64_t chunks = tiled ? static_cast<uint64_t>((w + tile_w - 1) / tile_w) * static_cast<uint64_t>((hgt + tile_h - 1) / tile_h)
@@ -103,8 +110,7 @@ void precheck_png(const std::string& path, std::ifstream& in, uint64_t file_size
     if (n == 0 && type == "IHDR" && length >= 8) {
       if (!in.read(reinterpret_cast<char*>(head), 8)) throw InputError(path, "IHDR", "truncated");
       const uint64_t w = be32(head), h = be32(head + 4);
-      if (w * h > max_pixels)
-        throw InputError(path, "IHDR", "declares " + std::to_string(w) + " x " + std::to_string(h) + " pixels; images are limited to 2^28 pixels");
+      check_pixels(path, "IHDR", w, h, max_pixels);
     }
     if (type == "IEND") return;
     at += uint64_t{length} + 12;
@@ -141,8 +147,7 @@ void precheck_bmp(const std::string& path, std::ifstream& in, uint64_t file_size
   }
   if (hgt < 0) hgt = -hgt;
   if (w <= 0 || hgt <= 0) throw InputError(path, "header", "BMP of " + std::to_string(w) + " x " + std::to_string(hgt) + " pixels");
-  if (static_cast<uint64_t>(w) * static_cast<uint64_t>(hgt) > max_pixels)
-    throw InputError(path, "header", "declares " + std::to_string(w) + " x " + std::to_string(hgt) + " pixels; images are limited to 2^28 pixels");
+  check_pixels(path, "header", static_cast<uint64_t>(w), static_cast<uint64_t>(hgt), max_pixels);
   if (planes != 1) throw InputError(path, "header", "BMP with " + std::to_string(planes) + " planes (must be 1)");
   const bool depth_ok = compression == 0   ? (bpp == 1 || bpp == 4 || bpp == 8 || bpp == 16 || bpp == 24 || bpp == 32)
                         : compression == 1 ? bpp == 8    // RLE8
