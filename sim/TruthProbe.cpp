@@ -177,7 +177,6 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
                   {"pixels_differing", ie.differing},
                   {"max_displacement_px", max_px}};
   psnrs_.push_back(ie.psnr_db);  // infinite when identical
-  worst_px_ = std::max(worst_px_, max_px);
 }
 
 nlohmann::json TruthProbe::summary() const {
@@ -196,7 +195,7 @@ nlohmann::json TruthProbe::summary() const {
           {"frames_identical_to_truth", static_cast<int64_t>(psnrs_.size()) - differing},
           {"mean_psnr_db", psnrs_.empty() ? 0.0 : differing ? mean / static_cast<double>(differing) : 999.0},
           {"worst_psnr_db", psnrs_.empty() ? 0.0 : worst},
-          {"max_displacement_px", worst_px_},
+          {"max_displacement_px", worst_rad_ / px_rad_},
           {"max_displacement_deg", rad_to_deg(worst_rad_)},  // against theta_t: priority rendering's bound
           {"worst_share_showing_another_object", worst_object_share_},
           {"mean_tear_pixels", mean_of(tears_)},

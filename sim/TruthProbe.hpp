@@ -72,8 +72,8 @@ class TruthProbe {
   double px_rad_;
   std::vector<std::vector<host::FaceImage>> truth_ids_;
   std::vector<double> psnrs_;
-  double worst_px_ = 0, worst_object_share_ = 0;
-  double worst_rad_ = 0;  // the largest tracked-point displacement as an angle
+  double worst_object_share_ = 0;
+  double worst_rad_ = 0;  // the largest tracked-point displacement, an angle (pixels: / px_rad_)
   std::vector<int64_t> tears_, gaps_, cracks_;
   host::TearWindow tear_best_;
   int64_t tear_frame_ = -1;
