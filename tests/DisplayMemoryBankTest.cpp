@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include <stdexcept>
@@ -175,6 +177,61 @@ TEST(DisplayMemoryBank, AWholeFaceIsWrittenAsTexelByTexel) {
   wide[7] = uint64_t{1} << 24;  // a 25-bit colour
   EXPECT_THROW(b.write_face(0, wide.data(), MemoryFormat{}.empty_word()), std::out_of_range);
   EXPECT_THROW(b.write_face(6, wide.data(), MemoryFormat{}.empty_word()), std::out_of_range);
+}
+
+// Several faces reserved at once and copied from two threads (the host renderer's store) against write()
+// texel by texel: every stored word, aprons included. The pool grows once, exactly: its capacity is the
+// tiles written plus the empty tile. A face left out of the reservation cannot be stored.
+TEST(DisplayMemoryBank, FacesReservedTogetherAndStoredConcurrentlyAreWrittenAsTexelByTexel) {
+  const int S = 100;  // not a multiple of the tile
+  MemoryConfig mc;
+  mc.face_size = S;
+  const MemoryFormat fmt(mc);
+  const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
+  std::mt19937 rng(7);
+  std::array<std::vector<uint64_t>, 6> words;
+  std::array<const uint64_t*, 6> given{};
+  DisplayMemoryBank by_texel(fmt), by_faces(fmt);
+  for (int f : {0, 2, 3, 5}) {  // faces 1 and 4 not drawn
+    auto& w = words[static_cast<size_t>(f)];
+    w.assign(n, fmt.empty_word());
+    const int filled = f == 0 ? static_cast<int>(n) : 400 * f;  // one face full, the others sparse
+    for (int i = 0; i < filled; ++i) {
+      const size_t k = f == 0 ? static_cast<size_t>(i) : rng() % n;
+      w[k] = (uint64_t{rng() % 60000u} << 32) | (rng() & 0xFFFFFFu);
+    }
+    given[static_cast<size_t>(f)] = w.data();
+    for (size_t k = 0; k < n; ++k)
+      if (w[k] != fmt.empty_word())
+        by_texel.write(f, static_cast<int>(k % static_cast<size_t>(S)), static_cast<int>(k / static_cast<size_t>(S)), texel_color(w[k]),
+                       texel_depth(w[k]));
+  }
+  int64_t expected = 0;
+  for (const auto& w : words)
+    for (uint64_t x : w) expected += x != fmt.empty_word();
+  ASSERT_EQ(by_faces.reserve_faces(given, fmt.empty_word()), expected);
+  EXPECT_EQ(by_faces.tiles_allocated(), by_texel.tiles_allocated());
+  const size_t tables = 4 * static_cast<size_t>(by_faces.tiles_per_row() * by_faces.tiles_per_row()) * sizeof(int32_t);
+  EXPECT_EQ(by_faces.bytes_allocated(), (by_texel.tiles_allocated() + 1) * DisplayMemoryBank::kTileWords * sizeof(uint64_t) + tables);
+  std::thread a([&] { for (int f : {0, 3}) by_faces.store_face(f, given[static_cast<size_t>(f)], fmt.empty_word()); });
+  std::thread b([&] { for (int f : {2, 5}) by_faces.store_face(f, given[static_cast<size_t>(f)], fmt.empty_word()); });
+  a.join();
+  b.join();
+  std::vector<uint64_t> stray(n, fmt.empty_word());
+  stray[5] = 1;
+  EXPECT_THROW(by_faces.store_face(1, stray.data(), fmt.empty_word()), std::logic_error);  // face 1 was not reserved
+  for (DisplayMemoryBank* bank : {&by_texel, &by_faces}) {
+    bank->commit();
+    bank->vblank();
+  }
+  for (int f = 0; f < 6; ++f)
+    for (int t = 0; t < by_faces.tiles_per_row() * by_faces.tiles_per_row(); ++t) {
+      const int32_t ta = by_texel.front_tile_index(f)[t], tb = by_faces.front_tile_index(f)[t];
+      ASSERT_EQ(ta == 0, tb == 0) << "face " << f << " tile " << t;
+      const uint64_t* pa = by_texel.front_pool() + static_cast<size_t>(ta) * DisplayMemoryBank::kTileWords;
+      const uint64_t* pb = by_faces.front_pool() + static_cast<size_t>(tb) * DisplayMemoryBank::kTileWords;
+      for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
+    }
 }
 
 TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {

@@ -322,6 +322,7 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   words.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
   const double log_range = dc.log_range();
+  const dp::Rgb8Packer pack(fmt);
   auto convert = [&](int f) {
     const FaceImage& img = faces[static_cast<size_t>(f)];
     uint64_t* out = words.data() + static_cast<size_t>(f) * n;
@@ -331,7 +332,8 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
         continue;
       }
       const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
-      out[k] = (uint64_t{dc.code(img.distance[k], log_range)} << 32) | fmt.pack_rgb8(round_channel(c.r), round_channel(c.g), round_channel(c.b));
+      out[k] = (uint64_t{dc.code(img.distance[k], log_range)} << 32) |
+               pack(static_cast<uint8_t>(round_channel(c.r)), static_cast<uint8_t>(round_channel(c.g)), static_cast<uint8_t>(round_channel(c.b)));
     }
   };
   RenderStats st = render_faces(scene, objects, t, eye, S, faces, warp);
@@ -342,9 +344,13 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   for (int f = 0; f < 6; ++f)
     if (!faces[static_cast<size_t>(f)].distance.empty()) convert(f);
   bank.clear_back();
+  std::array<const uint64_t*, 6> drawn{};
   for (int f = 0; f < 6; ++f)
-    if (!faces[static_cast<size_t>(f)].distance.empty())
-      st.texels_written += bank.write_face(f, words.data() + static_cast<size_t>(f) * n, empty);
+    if (!faces[static_cast<size_t>(f)].distance.empty()) drawn[static_cast<size_t>(f)] = words.data() + static_cast<size_t>(f) * n;
+  st.texels_written += bank.reserve_faces(drawn, empty);  // tiles allocated here; the faces copied in parallel
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int f = 0; f < 6; ++f)
+    if (drawn[static_cast<size_t>(f)]) bank.store_face(f, drawn[static_cast<size_t>(f)], empty);
   bank.commit();
   if (visible) {
     visible->resize(6);

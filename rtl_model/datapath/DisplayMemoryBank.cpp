@@ -78,38 +78,96 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
 }
 
 int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t skip) {
-  const int S = fmt_.face_size;
   if (face < 0 || face >= 6) throw std::out_of_range("display memory write outside the cube: face " + std::to_string(face));
+  std::array<const uint64_t*, 6> one{};
+  one[static_cast<size_t>(face)] = words;
+  const int64_t stored = reserve_faces(one, skip);
+  store_face(face, words, skip);
+  return stored;
+}
+
+// Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
+// tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
+bool DisplayMemoryBank::window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
+  const int w = std::min(kTile + 1, S - x0), h = std::min(kTile + 1, S - y0);
+  for (int ly = 0; ly < h; ++ly) {
+    const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
+    bool any = false;
+    for (int lx = 0; lx < w; ++lx) any |= row[lx] != skip;  // branch-free: vectorises
+    if (any) return true;
+  }
+  return false;
+}
+
+int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& words, uint64_t skip) {
+  const size_t n = static_cast<size_t>(fmt_.face_size) * static_cast<size_t>(fmt_.face_size);
+  // A stored word has no bit above the colour's or the depth's width: one mask over the whole word.
   const uint64_t color_mask = fmt_.color_bits_total() < 32 ? ~((uint64_t{1} << fmt_.color_bits_total()) - 1) & 0xFFFFFFFFu : 0;
   const uint64_t depth_mask = fmt_.depth_bits < 32 ? ~((uint64_t{1} << fmt_.depth_bits) - 1) & 0xFFFFFFFFu : 0;
-  int64_t written = 0;
-  for (size_t k = 0; k < static_cast<size_t>(S) * static_cast<size_t>(S); ++k) {
-    if (words[k] == skip) continue;
-    if ((words[k] & color_mask) != 0) throw std::out_of_range("colour code wider than the memory's colour format");
-    if (((words[k] >> 32) & depth_mask) != 0) throw std::out_of_range("depth code wider than the memory's depth format");
-    ++written;
+  const uint64_t wide = color_mask | (depth_mask << 32);
+  std::array<int64_t, 6> count{};
+  for (size_t f = 0; f < 6; ++f) {
+    const uint64_t* w = words[f];
+    if (!w) continue;
+    uint64_t bad = 0;
+    int64_t c = 0;
+    for (size_t k = 0; k < n; ++k) {  // branch-free: vectorises
+      const bool use = w[k] != skip;
+      c += use;
+      bad |= use ? w[k] & wide : 0;
+    }
+    if (bad & color_mask) throw std::out_of_range("colour code wider than the memory's colour format");
+    if (bad) throw std::out_of_range("depth code wider than the memory's depth format");
+    count[f] = c;
   }
-  if (!fmt_.present[static_cast<size_t>(face)]) {
-    lost_ += written;
-    return 0;
+  int64_t stored = 0;
+  std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
+  for (size_t f = 0; f < 6; ++f) {
+    if (!words[f]) continue;
+    if (!fmt_.present[f]) {
+      lost_ += count[f];
+      continue;
+    }
+    stored += count[f];
+    const int32_t* table = index(back_, static_cast<int>(f));
+    for (int ty = 0; ty < tiles_per_row_; ++ty)
+      for (int tx = 0; tx < tiles_per_row_; ++tx)
+        if (table[ty * tiles_per_row_ + tx] == 0 && window_written(words[f], tx, ty, skip))
+          fresh.push_back({static_cast<int>(f), tx, ty});
   }
-  // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
-  // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
+  if (fresh.empty()) return stored;
+  // One growth, exact: a growth by a quarter per tile would copy the pool about four times over.
+  std::vector<uint64_t>& pool = buffers_[back_].pool;
+  pool.reserve(std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords);
+  for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
+  return stored;
+}
+
+void DisplayMemoryBank::store_face(int face, const uint64_t* words, uint64_t skip) {
+  if (face < 0 || face >= 6) throw std::out_of_range("display memory write outside the cube: face " + std::to_string(face));
+  if (!fmt_.present[static_cast<size_t>(face)]) return;  // lost, and counted by reserve_faces
+  const int S = fmt_.face_size;
+  const int32_t* table = index(back_, face);
+  uint64_t* pool = buffers_[back_].pool.data();
   for (int ty = 0; ty < tiles_per_row_; ++ty)
     for (int tx = 0; tx < tiles_per_row_; ++tx) {
+      const int32_t tile = table[ty * tiles_per_row_ + tx];
+      if (tile == 0) {  // the shared empty tile: never written
+        if (window_written(words, tx, ty, skip))
+          throw std::logic_error("DisplayMemoryBank::store_face: face " + std::to_string(face) + " tile (" + std::to_string(tx) +
+                                 "," + std::to_string(ty) + ") was not reserved");
+        continue;
+      }
       const int x0 = tx * kTile, y0 = ty * kTile;
       const int w = std::min(kTile + 1, S - x0), h = std::min(kTile + 1, S - y0);
-      int32_t tile = -1;
+      uint64_t* out = pool + static_cast<size_t>(tile) * kTileWords;
       for (int ly = 0; ly < h; ++ly) {
         const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
-        for (int lx = 0; lx < w; ++lx) {
-          if (row[lx] == skip) continue;
-          if (tile < 0) tile = back_tile(face, tx, ty);
-          buffers_[back_].pool[static_cast<size_t>(tile) * kTileWords + static_cast<size_t>(tile_word(lx, ly))] = row[lx];
-        }
+        uint64_t* dst = out + tile_word(0, ly);
+        for (int lx = 0; lx < w; ++lx) dst[lx] = row[lx] == skip ? dst[lx] : row[lx];  // a blend: vectorises
       }
     }
-  return written;
 }
 
 void DisplayMemoryBank::clear_back() {

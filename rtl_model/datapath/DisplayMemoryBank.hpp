@@ -41,6 +41,23 @@ struct MemoryFormat {
   uint32_t pack_rgb8(int r8, int g8, int b8) const;
 };
 
+// pack_rgb8 tabulated, for loops over many texels: each channel's code in place for every 8-bit value,
+// a colour word the three ORed (pack_color's fields do not overlap). Values 0 .. 255.
+class Rgb8Packer {
+ public:
+  explicit Rgb8Packer(const MemoryFormat& f) {
+    for (int v = 0; v < 256; ++v) {
+      r_[static_cast<size_t>(v)] = f.pack_rgb8(v, 0, 0);
+      g_[static_cast<size_t>(v)] = f.pack_rgb8(0, v, 0);
+      b_[static_cast<size_t>(v)] = f.pack_rgb8(0, 0, v);
+    }
+  }
+  uint32_t operator()(uint8_t r8, uint8_t g8, uint8_t b8) const { return r_[r8] | g_[g8] | b_[b8]; }
+
+ private:
+  std::array<uint32_t, 256> r_{}, g_{}, b_{};
+};
+
 inline uint32_t texel_color(uint64_t w) { return static_cast<uint32_t>(w); }
 inline uint32_t texel_depth(uint64_t w) { return static_cast<uint32_t>(w >> 32); }
 
@@ -69,6 +86,14 @@ class DisplayMemoryBank {
   // words stored (0 on an absent face: its words are lost and counted); std::out_of_range as write() for a
   // bad face or a code wider than the format.
   int64_t write_face(int face, const uint64_t* words, uint64_t skip);
+  // The same for several faces (null: a face not written), in two steps so that the copying can run on
+  // several threads: reserve_faces() checks every face's words (throwing, as write_face, before anything
+  // changes), counts what is lost to absent faces and allocates every tile the words touch, growing the
+  // pool once by exactly what they need; then store_face() copies one face's words into its tiles, and
+  // calls for distinct faces may run concurrently (each face's tiles are its own). Returns the words stored.
+  int64_t reserve_faces(const std::array<const uint64_t*, 6>& words, uint64_t skip);
+  // Precondition: reserve_faces() was given these words (std::logic_error if a word has no tile).
+  void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
@@ -109,6 +134,8 @@ class DisplayMemoryBank {
   }
   // The pool number of tile (tx, ty) of a face in the back buffer, allocating it (with its apron) if new.
   int32_t back_tile(int face, int tx, int ty);
+  // Whether any word of the S x S face `words` in tile (tx, ty)'s window (its texels and apron) is not `skip`.
+  bool window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
   void put(int face, int tx, int ty, int lx, int ly, uint64_t word);
 
   MemoryFormat fmt_;

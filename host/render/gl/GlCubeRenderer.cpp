@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -335,7 +336,9 @@ RenderStats GlCubeRenderer::render(const Scene& scene, const std::vector<size_t>
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words_.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_ > 0 ? threads_ : omp_get_max_threads())
+  const dp::Rgb8Packer pack(fmt);
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int f = 0; f < 6; ++f) {
     if (!g.drawn[f]) continue;
     uint64_t* out = words_.data() + static_cast<size_t>(f) * n;
@@ -343,22 +346,26 @@ RenderStats GlCubeRenderer::render(const Scene& scene, const std::vector<size_t>
     const uint8_t* color = g.color[f].data();
     for (size_t k = 0; k < n; ++k)
       out[k] = code[2 * k] == kNoCode ? empty
-                                      : (uint64_t{code[2 * k]} << 32) | fmt.pack_rgb8(color[4 * k], color[4 * k + 1], color[4 * k + 2]);
+                                      : (uint64_t{code[2 * k]} << 32) | pack(color[4 * k], color[4 * k + 1], color[4 * k + 2]);
   }
   bank.clear_back();
-  if (visible) visible->assign(6, FaceImage{});
-  for (int f = 0; f < 6; ++f) {
-    if (visible) (*visible)[static_cast<size_t>(f)].size = S;
-    if (!g.drawn[f]) continue;
-    std::vector<uint32_t>* ids = nullptr;
-    if (visible) {
-      ids = &(*visible)[static_cast<size_t>(f)].object;
-      ids->assign(n, 0);
+  std::array<const uint64_t*, 6> drawn{};
+  for (int f = 0; f < 6; ++f)
+    if (g.drawn[f]) drawn[static_cast<size_t>(f)] = words_.data() + static_cast<size_t>(f) * n;
+  st.texels_written += bank.reserve_faces(drawn, empty);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int f = 0; f < 6; ++f)
+    if (drawn[static_cast<size_t>(f)]) bank.store_face(f, drawn[static_cast<size_t>(f)], empty);
+  if (visible) {
+    visible->assign(6, FaceImage{});
+    for (int f = 0; f < 6; ++f) {
+      std::vector<uint32_t>& ids = (*visible)[static_cast<size_t>(f)].object;
+      (*visible)[static_cast<size_t>(f)].size = S;
+      if (!drawn[static_cast<size_t>(f)]) continue;
+      ids.assign(n, 0);
+      const uint64_t* in = drawn[static_cast<size_t>(f)];
+      for (size_t k = 0; k < n; ++k) ids[k] = in[k] == empty ? 0u : g.code[f][2 * k + 1];
     }
-    const uint64_t* in = words_.data() + static_cast<size_t>(f) * n;
-    st.texels_written += bank.write_face(f, in, empty);
-    if (ids)
-      for (size_t k = 0; k < n; ++k) (*ids)[k] = in[k] == empty ? 0u : g.code[f][2 * k + 1];
   }
   bank.commit();
   return st;
