@@ -2,15 +2,12 @@
 
 #include <algorithm>
 
+#include "common/VectorClones.hpp"
+
 namespace arp::passes {
 
 using namespace arp::dp;
 
-#if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
-#define ARP_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
-#else
-#define ARP_VECTOR_CLONES
-#endif
 
 namespace {
 constexpr int TS = DisplayMemoryBank::kTileShift;
