@@ -1,6 +1,7 @@
 #include "CubeFaceRenderer.hpp"
 
 #include "FaceFrustum.hpp"
+#include "FaceWords.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -72,14 +73,6 @@ glm::dvec3 sample(const RgbImage& img, glm::dvec2 uv) {
   };
   const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
   return (at(ix, iy) * (1 - ax) + at(ix + 1, iy) * ax) * (1 - ay) + (at(ix, iy + 1) * (1 - ax) + at(ix + 1, iy + 1) * ax) * ay;
-}
-
-// std::lround of a channel value 0 .. 255 (halves away from zero), without the library call: c - r is
-// exact for 0 <= r <= c < r + 1. A NaN (never produced) reads as 0.
-int round_channel(double c) {
-  if (!(c >= 0.0)) return 0;
-  const int r = static_cast<int>(c);
-  return r + (c - r >= 0.5 ? 1 : 0);
 }
 
 // A centre exactly on edge (dx, dy) belongs to the triangle if the edge is top-left.
@@ -315,26 +308,16 @@ RenderStats CubeFaceRenderer::render(const Scene& scene, const std::vector<size_
   std::vector<uint64_t>& words = words_of_thread;
   DepthCode dc = depth_;
   dc.bits = fmt.depth_bits;
-  // Colour and depth code per texel (a logarithm and three roundings each), faces in parallel; then each
-  // face stored whole (DisplayMemoryBank::write_face).
+  // The faces' words (FaceWords: depth codes and packed colours, vectorised), faces in parallel; then the
+  // tiles they touch reserved at once and the faces copied in, in parallel (DisplayMemoryBank::reserve_faces).
   const int S = fmt.face_size;
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words.resize(6 * n);
   const uint64_t empty = fmt.empty_word();
-  const double log_range = dc.log_range();
   const dp::Rgb8Packer pack(fmt);
   auto convert = [&](int f) {
     const FaceImage& img = faces[static_cast<size_t>(f)];
-    uint64_t* out = words.data() + static_cast<size_t>(f) * n;
-    for (size_t k = 0; k < n; ++k) {
-      if (!std::isfinite(img.distance[k])) {
-        out[k] = empty;
-        continue;
-      }
-      const glm::dvec3 c = glm::clamp(img.color[k], 0.0, 1.0) * 255.0;
-      out[k] = (uint64_t{dc.code(img.distance[k], log_range)} << 32) |
-               pack(static_cast<uint8_t>(round_channel(c.r)), static_cast<uint8_t>(round_channel(c.g)), static_cast<uint8_t>(round_channel(c.b)));
-    }
+    face_words(img.distance.data(), img.color.data(), n, dc, pack, empty, words.data() + static_cast<size_t>(f) * n);
   };
   RenderStats st = render_faces(scene, objects, t, eye, S, faces, warp);
   // (After the drawing, not on the thread that drew each face: conversion costs the same for every face and

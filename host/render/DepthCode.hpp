@@ -7,6 +7,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace arp::host {
@@ -23,6 +24,12 @@ struct DepthCode {
     const double c = std::nearbyint(std::min(t, 1.0) * max_code());
     return static_cast<uint32_t>(c);
   }
+  // code() of n distances at once, the same codes (an infinite distance gives max_code()): a polynomial
+  // logarithm that vectorises, and code() itself wherever the polynomial's value of the code before rounding
+  // lies within kTieMargin of a rounding boundary, or always when the format makes the polynomial's error
+  // (about 1e-15 of the logarithm) reach a thousandth of that margin.
+  void codes(const double* distance_m, uint32_t* out, size_t n) const;
+  static constexpr double kTieMargin = 1e-3;
   double distance(uint32_t c) const {
     return near_m * std::exp(static_cast<double>(c) / max_code() * std::log(far_m / near_m));
   }
