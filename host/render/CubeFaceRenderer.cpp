@@ -189,7 +189,11 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       for (size_t k = 0; k < m.normals.size(); ++k) pl.shade[k] = shade(o.material.color, glm::normalize(nmat * m.normals[k]));
     }
   }
-  const std::vector<double> radial = radial_factors(S);
+  // Kept per calling thread for the last face size (S^2 square roots, otherwise on every render before the
+  // faces are shared out).
+  thread_local std::vector<double> radial_of_thread;
+  std::vector<double>& radial = radial_of_thread;
+  if (radial.size() != static_cast<size_t>(S) * static_cast<size_t>(S)) radial = radial_factors(S);
   // The faces are independent: one thread each, the same bits on any count. Their loads differ, so the
   // heaviest (most triangles) go first and a thread takes the next face when it is free.
   std::array<int, 6> order{0, 1, 2, 3, 4, 5};
