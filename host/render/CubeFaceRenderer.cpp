@@ -126,9 +126,22 @@ void raster(Snapped v0, Snapped v1, Snapped v2, FaceImage& img, const double* ra
       const Snapped& a = *p[(i + 1) % 3];
       e[i] = ex[i] * (py - a.y) - ey[i] * (px0 - a.x);
     }
+    // The row's span: e_i falls by step_i a texel, so e_i >= bias_i holds on an interval of x; their
+    // intersection, in exact integers, is the texels the per-texel test would pass, in the same order.
+    int64_t lo = 0, hi = maxx - minx;
+    for (int i = 0; i < 3; ++i) {
+      const int64_t room = e[i] - bias[i];  // inside at offset dx iff room - step_i dx >= 0
+      if (step[i] > 0)
+        hi = room < 0 ? -1 : std::min(hi, room / step[i]);
+      else if (step[i] < 0)
+        lo = room >= 0 ? lo : std::max(lo, (-room - step[i] - 1) / -step[i]);
+      else if (room < 0)
+        hi = -1;
+    }
+    if (lo > hi) continue;
+    for (int i = 0; i < 3; ++i) e[i] -= step[i] * lo;
     const size_t row = static_cast<size_t>(y) * static_cast<size_t>(S);
-    for (int64_t x = minx; x <= maxx; ++x, e[0] -= step[0], e[1] -= step[1], e[2] -= step[2]) {
-      if (e[0] < bias[0] || e[1] < bias[1] || e[2] < bias[2]) continue;
+    for (int64_t x = minx + lo; x <= minx + hi; ++x, e[0] -= step[0], e[1] -= step[1], e[2] -= step[2]) {
       const size_t k = row + static_cast<size_t>(x);
       if (count_hits) ++img.hits[k];
       const double l0 = static_cast<double>(e[0]) * inv_area, l1 = static_cast<double>(e[1]) * inv_area,
