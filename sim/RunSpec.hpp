@@ -47,6 +47,7 @@ struct OutputSpec {
   std::string vcd, vcd_lines, vcd_time_us;  // --vcd NAME, window in lines or microseconds
   std::string vcd_signals = "all";          // --vcd-signals: all, or control (no register data fields)
   int64_t error_every = 10;      // --error-every (walks)
+  int truth_face_size = 0;       // --truth-face-size: the truth's face size (0: the run's own)
   std::string tear_image, tear_at;
 };
 

@@ -675,6 +675,7 @@ RunSummary Session::run() {
     ps.first_frame = spec_.first_frame;
     ps.frames = spec_.frames;
     ps.every = o.error_every;
+    ps.truth_face_size = o.truth_face_size;
     ps.tear_image = o.tear_image;
     ps.tear_at = o.tear_at;
     probe_ = std::make_unique<TruthProbe>(ps);

@@ -8,6 +8,7 @@
 
 #include "sim/FrameImage.hpp"
 #include "common/InputError.hpp"
+#include "common/ParameterJson.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/error/FrameError.hpp"
 #include "host/error/SeamMetrics.hpp"
@@ -24,8 +25,11 @@ double mean_of(const std::vector<int64_t>& v) {
   return v.empty() ? 0.0 : static_cast<double>(std::accumulate(v.begin(), v.end(), int64_t{0})) / static_cast<double>(v.size());
 }
 
-dp::ArpConfig one_memory(dp::ArpConfig c) {
+// The truth: one memory holding everything, at the run's face size or at the one asked for (its range
+// checked as the key's, the error naming the option).
+dp::ArpConfig truth_config(dp::ArpConfig c, int face_size) {
   c.memory.count = 1;
+  if (face_size != 0) set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(face_size), "--truth-face-size", c);
   return c;
 }
 
@@ -33,10 +37,11 @@ dp::ArpConfig one_memory(dp::ArpConfig c) {
 
 TruthProbe::TruthProbe(const TruthProbeSetup& s)
     : s_(s),
-      truth_cfg_(one_memory(*s.config)),
+      truth_cfg_(truth_config(*s.config, s.truth_face_size)),
       lens_(s.config->lens, s.config->timing, s.config->widths.vec_frac),
       rot_(s.config->widths),
       addr_(s.config->widths, s.config->memory.face_size),
+      truth_addr_(truth_cfg_.widths, truth_cfg_.memory.face_size),
       latch_(*s.config),
       px_rad_(s.config->lens.fov_deg * kPi / 180.0 / s.config->timing.h_active),
       truth_ids_(static_cast<size_t>(s.config->timing.eyes)) {
@@ -116,7 +121,9 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
           M = dp::quantise_rotation(stream[sidx].q, c.widths.mat_frac);
           held = sidx;
         }
-        const dp::CubeAddress ad = dp::generate_address(dp::rotate(M, lens_.at(e, x, y), rot_), addr_);
+        const dp::Vec3q dir = dp::rotate(M, lens_.at(e, x, y), rot_);
+        const dp::CubeAddress ad = dp::generate_address(dir, addr_);
+        const dp::CubeAddress at = truth_addr_.face_size == addr_.face_size ? ad : dp::generate_address(dir, truth_addr_);
         uint32_t best_depth = empty, shown = 0;
         for (int m = 0; m < mem.count(); ++m) {
           const uint32_t dpt = dp::texel_depth(mem.bank(e, m).read(ad.face, ad.x, ad.y));
@@ -125,9 +132,9 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
             shown = hostsim.shown_object(m, e, ad.face, ad.x, ad.y);
           }
         }
-        const auto& tf = truth_ids_[static_cast<size_t>(e)][ad.face];
+        const auto& tf = truth_ids_[static_cast<size_t>(e)][at.face];
         const uint32_t truth_object =
-            tf.object.empty() ? 0u : tf.object[static_cast<size_t>(ad.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(ad.x)];
+            tf.object.empty() ? 0u : tf.object[static_cast<size_t>(at.y) * static_cast<size_t>(tf.size) + static_cast<size_t>(at.x)];
         differ += shown != truth_object;
         ++total;
         shown_map.id[shown_map.index(e, x, y)] = shown;
@@ -192,6 +199,7 @@ nlohmann::json TruthProbe::summary() const {
       ++differing;
     }
   return {{"frames_measured", psnrs_.size()},
+          {"truth_face_size", truth_cfg_.memory.face_size},
           {"frames_identical_to_truth", static_cast<int64_t>(psnrs_.size()) - differing},
           {"mean_psnr_db", psnrs_.empty() ? 0.0 : differing ? mean / static_cast<double>(differing) : 999.0},
           {"worst_psnr_db", psnrs_.empty() ? 0.0 : worst},

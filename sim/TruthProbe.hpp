@@ -37,6 +37,7 @@ struct TruthProbeSetup {
   double ipd_m = 0.064;
   int threads = 0;
   int64_t first_frame = 0, frames = 1, every = 1;  // the frames measured: first + k * every
+  int truth_face_size = 0;                         // the truth's memory.face_size (0: the run's)
   std::string tear_image, tear_at;                 // --tear-image, --tear-at FRAME:EYE:X:Y
 };
 
@@ -67,7 +68,7 @@ class TruthProbe {
   std::unique_ptr<FunctionalModel> truth_model_;
   dp::LensVectorTable lens_;
   dp::RotateParams rot_;
-  dp::AddressGeneratorParams addr_;
+  dp::AddressGeneratorParams addr_, truth_addr_;  // the run's faces, the truth's
   dp::LatchRule latch_;
   double px_rad_;
   std::vector<std::vector<host::FaceImage>> truth_ids_;

@@ -53,6 +53,10 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
   cmd->add_option("--error-every", o.error_every,
                   "With --walk: measure every Nth frame's error against the truth (PSNR, tracked points; 0: never)")
       ->capture_default_str();
+  cmd->add_option("--truth-face-size", o.truth_face_size,
+                  "With --walk: the face size of the truth the error is measured against (0: the run's own memory.face_size). "
+                  "A fixed size compares runs whose faces differ: each against the same truth")
+      ->capture_default_str();
   cmd->add_option("--host-csv", o.host_csv, "With --walk: CSV, one row per display memory (rates, load); needs --report");
   cmd->add_option("--tear-image", o.tear_image,
                   "--regions: write a magnified view (8x) of the 48x32 window with the most crack pixels: displayed | truth | "
