@@ -99,6 +99,9 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (!s.clock_gating && fid != scm::Fidelity::Detailed && fid != scm::Fidelity::Cycle)
     throw InputError("--no-clock-gating", "", "only the cycle-accurate levels (cycle, detailed) have clocks to gate");
   if (o.vcd_signals != "all" && o.vcd.empty()) throw InputError("--vcd-signals", o.vcd_signals, "needs --vcd");
+  if (o.truth_face_size != 0 && (o.error_every <= 0 || h.walk.empty()))
+    throw InputError("--truth-face-size", std::to_string(o.truth_face_size),
+                     "needs --walk and --error-every > 0 (it sizes the truth the error is measured against)");
   if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");

@@ -25,11 +25,22 @@ double mean_of(const std::vector<int64_t>& v) {
   return v.empty() ? 0.0 : static_cast<double>(std::accumulate(v.begin(), v.end(), int64_t{0})) / static_cast<double>(v.size());
 }
 
-// The truth: one memory holding everything, at the run's face size or at the one asked for (its range
-// checked as the key's, the error naming the option).
-dp::ArpConfig truth_config(dp::ArpConfig c, int face_size) {
+// The truth: one memory holding everything. At the run's own face size (0) it reads as the run does; at a
+// face size asked for, it is one reference for runs of any configuration: the built-in datapath widths,
+// texel format and all six faces at that size (its range checked as the key's, the error naming the
+// option), with the run's display, lens and pipeline (they define the pixels and their filter).
+dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
+  dp::ArpConfig c = run;
   c.memory.count = 1;
-  if (face_size != 0) set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(face_size), "--truth-face-size", c);
+  if (face_size == 0) return c;
+  const dp::ArpConfig builtin;
+  c.widths = builtin.widths;
+  c.memory.red_bits = builtin.memory.red_bits;
+  c.memory.green_bits = builtin.memory.green_bits;
+  c.memory.blue_bits = builtin.memory.blue_bits;
+  c.memory.depth_bits = builtin.memory.depth_bits;
+  c.memory.faces = builtin.memory.faces;
+  set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(face_size), "--truth-face-size", c);
   return c;
 }
 
@@ -41,6 +52,8 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       lens_(s.config->lens, s.config->timing, s.config->widths.vec_frac),
       rot_(s.config->widths),
       addr_(s.config->widths, s.config->memory.face_size),
+      own_truth_(s.truth_face_size == 0),
+      truth_rot_(truth_cfg_.widths),
       truth_addr_(truth_cfg_.widths, truth_cfg_.memory.face_size),
       latch_(*s.config),
       px_rad_(s.config->lens.fov_deg * kPi / 180.0 / s.config->timing.h_active),
@@ -59,6 +72,7 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       throw InputError("--tear-at", s.tear_at,
                        "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
   }
+  if (!own_truth_) truth_lens_.emplace(truth_cfg_.lens, truth_cfg_.timing, truth_cfg_.widths.vec_frac);
   truth_mem_ = std::make_unique<dp::DisplayMemorySet>(truth_cfg_.memory, c.timing.eyes);
   truth_model_ = std::make_unique<FunctionalModel>(truth_cfg_);
 }
@@ -114,16 +128,17 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
   for (int e = 0; e < c.timing.eyes; ++e)
     for (int y = 0; y < H; ++y) {
       size_t held = SIZE_MAX;
-      dp::Mat3q M{};
+      dp::Mat3q M{}, Mt{};
       for (int x = 0; x < W; ++x) {
         const size_t sidx = latch_.sample(stream, frame, e, x, y);
         if (sidx != held) {
           M = dp::quantise_rotation(stream[sidx].q, c.widths.mat_frac);
+          Mt = dp::quantise_rotation(stream[sidx].q, truth_cfg_.widths.mat_frac);
           held = sidx;
         }
-        const dp::Vec3q dir = dp::rotate(M, lens_.at(e, x, y), rot_);
-        const dp::CubeAddress ad = dp::generate_address(dir, addr_);
-        const dp::CubeAddress at = truth_addr_.face_size == addr_.face_size ? ad : dp::generate_address(dir, truth_addr_);
+        const dp::CubeAddress ad = dp::generate_address(dp::rotate(M, lens_.at(e, x, y), rot_), addr_);
+        // The truth's texel for this pixel, by the truth's own arithmetic (its widths may differ).
+        const dp::CubeAddress at = own_truth_ ? ad : dp::generate_address(dp::rotate(Mt, truth_lens_->at(e, x, y), truth_rot_), truth_addr_);
         uint32_t best_depth = empty, shown = 0;
         for (int m = 0; m < mem.count(); ++m) {
           const uint32_t dpt = dp::texel_depth(mem.bank(e, m).read(ad.face, ad.x, ad.y));

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,7 @@ struct TruthProbeSetup {
   double ipd_m = 0.064;
   int threads = 0;
   int64_t first_frame = 0, frames = 1, every = 1;  // the frames measured: first + k * every
-  int truth_face_size = 0;                         // the truth's memory.face_size (0: the run's)
+  int truth_face_size = 0;  // 0: the truth reads as the run does; N: one reference at face size N (TruthProbe.cpp)
   std::string tear_image, tear_at;                 // --tear-image, --tear-at FRAME:EYE:X:Y
 };
 
@@ -68,7 +69,11 @@ class TruthProbe {
   std::unique_ptr<FunctionalModel> truth_model_;
   dp::LensVectorTable lens_;
   dp::RotateParams rot_;
-  dp::AddressGeneratorParams addr_, truth_addr_;  // the run's faces, the truth's
+  dp::AddressGeneratorParams addr_;
+  bool own_truth_;  // the truth reads as the run does (its face size, widths and format)
+  std::optional<dp::LensVectorTable> truth_lens_;  // only when the truth's widths are its own
+  dp::RotateParams truth_rot_;
+  dp::AddressGeneratorParams truth_addr_;
   dp::LatchRule latch_;
   double px_rad_;
   std::vector<std::vector<host::FaceImage>> truth_ids_;

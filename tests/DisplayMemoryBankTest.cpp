@@ -217,6 +217,14 @@ TEST(DisplayMemoryBank, FacesReservedTogetherAndStoredConcurrentlyAreWrittenAsTe
   std::thread b([&] { for (int f : {2, 5}) by_faces.store_face(f, given[static_cast<size_t>(f)], fmt.empty_word()); });
   a.join();
   b.join();
+  // A face the format leaves out: its words are checked and counted as lost, nothing stored.
+  MemoryConfig without = mc;
+  without.faces[3] = 0;
+  DisplayMemoryBank partial{MemoryFormat(without)};
+  int64_t on_three = 0;
+  for (uint64_t x : words[3]) on_three += x != fmt.empty_word();
+  EXPECT_EQ(partial.reserve_faces(given, fmt.empty_word()), expected - on_three);
+  EXPECT_EQ(partial.writes_lost(), on_three);
   std::vector<uint64_t> stray(n, fmt.empty_word());
   stray[5] = 1;
   EXPECT_THROW(by_faces.store_face(1, stray.data(), fmt.empty_word()), std::logic_error);  // face 1 was not reserved

@@ -40,8 +40,9 @@ TEST(FaceWords, DepthCodesInBulkAreCodeTexelByTexel) {
     double near_m, far_m;
     int bits;
   };
-  // The default; narrow and wide codes; a short range (the series would be too coarse: code() throughout).
-  for (const Case& k : {Case{0.05, 1000.0, 16}, Case{0.05, 1000.0, 8}, Case{0.01, 50000.0, 24}, Case{0.05, 1000.0, 32},
+  // The default; narrow and wide codes (20 bits: still the series; 24 and 32: code() throughout); a short
+  // range (the series would be too coarse: code() throughout).
+  for (const Case& k : {Case{0.05, 1000.0, 16}, Case{0.05, 1000.0, 8}, Case{0.05, 1000.0, 20}, Case{0.01, 50000.0, 24}, Case{0.05, 1000.0, 32},
                         Case{1.0, 1.0001, 16}}) {
     host::DepthCode dc;
     dc.near_m = k.near_m;

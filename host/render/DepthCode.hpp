@@ -24,10 +24,11 @@ struct DepthCode {
     const double c = std::nearbyint(std::min(t, 1.0) * max_code());
     return static_cast<uint32_t>(c);
   }
-  // code() of n distances at once, the same codes (an infinite distance gives max_code()): a polynomial
-  // logarithm that vectorises, and code() itself wherever the polynomial's value of the code before rounding
-  // lies within kTieMargin of a rounding boundary, or always when the format makes the polynomial's error
-  // (about 1e-15 of the logarithm) reach a thousandth of that margin.
+  // code() of n distances at once, the same codes (+infinity gives max_code(); a distance is never NaN): a
+  // series logarithm that vectorises, and code() itself wherever the series' value of the code before
+  // rounding lies within kTieMargin of a rounding boundary, or always when the format would let the
+  // series' error (bounded by 1e-13 (L + 1) on the logarithm, L = log(far / near); about 3e-16 measured)
+  // reach a thousandth of that margin.
   void codes(const double* distance_m, uint32_t* out, size_t n) const;
   static constexpr double kTieMargin = 1e-3;
   double distance(uint32_t c) const {

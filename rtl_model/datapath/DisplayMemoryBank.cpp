@@ -121,12 +121,12 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
     if (bad) throw std::out_of_range("depth code wider than the memory's depth format");
     count[f] = c;
   }
-  int64_t stored = 0;
+  int64_t stored = 0, lost = 0;
   std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
   for (size_t f = 0; f < 6; ++f) {
     if (!words[f]) continue;
     if (!fmt_.present[f]) {
-      lost_ += count[f];
+      lost += count[f];
       continue;
     }
     stored += count[f];
@@ -136,11 +136,14 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
         if (table[ty * tiles_per_row_ + tx] == 0 && window_written(words[f], tx, ty, skip))
           fresh.push_back({static_cast<int>(f), tx, ty});
   }
-  if (fresh.empty()) return stored;
-  // One growth, exact: a growth by a quarter per tile would copy the pool about four times over.
+  // One growth for all the tiles (growing a quarter a tile copied the pool about four times over): exact
+  // into an empty pool (a render's, after clear_back), by at least a quarter into a used one (repeated calls
+  // stay linear).
   std::vector<uint64_t>& pool = buffers_[back_].pool;
-  pool.reserve(std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords);
+  const size_t need = std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords;
+  if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
+  lost_ += lost;  // last: a failed allocation above leaves the count as it was
   return stored;
 }
 

@@ -92,7 +92,8 @@ class DisplayMemoryBank {
   // pool once by exactly what they need; then store_face() copies one face's words into its tiles, and
   // calls for distinct faces may run concurrently (each face's tiles are its own). Returns the words stored.
   int64_t reserve_faces(const std::array<const uint64_t*, 6>& words, uint64_t skip);
-  // Precondition: reserve_faces() was given these words (std::logic_error if a word has no tile).
+  // Precondition: reserve_faces() was given these words; then it cannot throw (callers run it inside
+  // OpenMP regions). Misuse -- a word with no tile -- is a std::logic_error, after the tiles before it.
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
   void clear_back();  // the back buffer becomes empty and frees its tiles

@@ -331,7 +331,8 @@ RenderStats GlCubeRenderer::render(const Scene& scene, const std::vector<size_t>
   const int S = fmt.face_size;
   RenderStats st = draw(scene, objects, t, eye, S, fmt.depth_bits);
   const Gl& g = *gl_;
-  // As the software renderer stores: words per texel in parallel, then a face at a time into the bank.
+  // As the software renderer stores: words per texel in parallel, the tiles reserved at once, the faces
+  // copied into the bank in parallel.
   // Window row y is memory row y (the face's clip space maps texel rows upward).
   const size_t n = static_cast<size_t>(S) * static_cast<size_t>(S);
   words_.resize(6 * n);
