@@ -4,6 +4,8 @@
 // the extremes, scene files and model imports fail clearly on bad input.
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include <filesystem>
 #include <fstream>
 
@@ -288,6 +290,31 @@ uint64_t gallery_render_hash(int threads) {
 
 TEST(CubeFaceRenderer, TheGalleryRendersToThePinnedBits) {
   for (const int threads : {1, 2}) EXPECT_EQ(gallery_render_hash(threads), 0x96a4d3071e355c73ull) << threads << " threads";
+}
+
+// The renderer keeps per-texel factors of the face sizes it last drew on each thread: drawing at one
+// size, then another, then the first again (a run's memories and a truth at another size alternate so)
+// gives each size's faces exactly as a thread drawing only that size does.
+TEST(CubeFaceRenderer, FaceSizesInTurnOnOneThreadDrawAsEachAlone) {
+  const Scene g = make_gallery();
+  const glm::dvec3 eye = gallery_walk()[3];
+  auto draw = [&](int S) {
+    std::vector<FaceImage> faces;
+    CubeFaceRenderer r;
+    r.set_threads(1);
+    r.render_faces(g, {}, 0.5, eye, S, faces);
+    std::vector<double> d;
+    for (const auto& f : faces) d.insert(d.end(), f.distance.begin(), f.distance.end());
+    return d;
+  };
+  std::vector<double> alone48, alone40, alone32;
+  std::thread([&] { alone48 = draw(48); }).join();  // a fresh thread: nothing kept yet
+  std::thread([&] { alone40 = draw(40); }).join();
+  std::thread([&] { alone32 = draw(32); }).join();
+  std::thread([&] {
+    for (const int S : {48, 40, 48, 40, 32, 48, 32})
+      EXPECT_EQ(draw(S), S == 48 ? alone48 : S == 40 ? alone40 : alone32) << S;
+  }).join();
 }
 
 TEST(Scenes, GalleryHasRoomsPillarsPicturesAndExhibits) {

@@ -202,11 +202,15 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
       for (size_t k = 0; k < m.normals.size(); ++k) pl.shade[k] = shade(o.material.color, glm::normalize(nmat * m.normals[k]));
     }
   }
-  // Kept per calling thread for the last face size (S^2 square roots, otherwise on every render before the
-  // faces are shared out).
-  thread_local std::vector<double> radial_of_thread;
-  std::vector<double>& radial = radial_of_thread;
-  if (radial.size() != static_cast<size_t>(S) * static_cast<size_t>(S)) radial = radial_factors(S);
+  // Kept per calling thread for the last two face sizes (S^2 square roots, otherwise on every render before
+  // the faces are shared out; two: a run's memories and a truth at another size alternate).
+  thread_local std::array<std::vector<double>, 2> radial_of_thread;
+  const size_t texels = static_cast<size_t>(S) * static_cast<size_t>(S);
+  if (radial_of_thread[0].size() != texels) {
+    std::swap(radial_of_thread[0], radial_of_thread[1]);
+    if (radial_of_thread[0].size() != texels) radial_of_thread[0] = radial_factors(S);
+  }
+  const std::vector<double>& radial = radial_of_thread[0];
   // The faces are independent: one thread each, the same bits on any count. Their loads differ, so the
   // heaviest (most triangles) go first and a thread takes the next face when it is free.
   std::array<int, 6> order{0, 1, 2, 3, 4, 5};
