@@ -127,6 +127,25 @@ TEST(DisplayMemoryBank, ApronsMirrorTheNeighbouringTilesWhicheverIsWrittenFirst)
   }
 }
 
+namespace {
+// Commits and swaps both banks, then compares every stored word of these faces, aprons included, tile by
+// tile (which tiles exist, and their words; the tile numbers themselves may differ).
+void expect_same_tiles(DisplayMemoryBank& a, DisplayMemoryBank& b, std::initializer_list<int> faces) {
+  for (DisplayMemoryBank* bank : {&a, &b}) {
+    bank->commit();
+    bank->vblank();
+  }
+  for (int f : faces)
+    for (int t = 0; t < b.tiles_per_row() * b.tiles_per_row(); ++t) {
+      const int32_t ta = a.front_tile_index(f)[t], tb = b.front_tile_index(f)[t];
+      ASSERT_EQ(ta == 0, tb == 0) << "face " << f << " tile " << t;
+      const uint64_t* pa = a.front_pool() + static_cast<size_t>(ta) * DisplayMemoryBank::kTileWords;
+      const uint64_t* pb = b.front_pool() + static_cast<size_t>(tb) * DisplayMemoryBank::kTileWords;
+      for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
+    }
+}
+}  // namespace
+
 // write_face against write(): sparse random faces (isolated texels, tile borders, a patch across a corner)
 // over a buffer already holding texels, at a face size that is and one that is not a multiple of the tile.
 // Every stored word, aprons included, and the tile count must agree.
@@ -159,18 +178,7 @@ TEST(DisplayMemoryBank, AWholeFaceIsWrittenAsTexelByTexel) {
       }
     EXPECT_EQ(by_face.write_face(2, words.data(), fmt.empty_word()), n);
     EXPECT_EQ(by_face.tiles_allocated(), by_texel.tiles_allocated()) << S;
-    for (DisplayMemoryBank* b : {&by_texel, &by_face}) {
-      b->commit();
-      b->vblank();
-    }
-    for (int f : {2, 3})
-      for (int t = 0; t < by_face.tiles_per_row() * by_face.tiles_per_row(); ++t) {
-        const int32_t ta = by_texel.front_tile_index(f)[t], tb = by_face.front_tile_index(f)[t];
-        ASSERT_EQ(ta == 0, tb == 0) << "face " << f << " tile " << t;
-        const uint64_t* pa = by_texel.front_pool() + static_cast<size_t>(ta) * DisplayMemoryBank::kTileWords;
-        const uint64_t* pb = by_face.front_pool() + static_cast<size_t>(tb) * DisplayMemoryBank::kTileWords;
-        for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
-      }
+    expect_same_tiles(by_texel, by_face, {2, 3});
   }
   DisplayMemoryBank b{MemoryFormat{}};
   std::vector<uint64_t> wide(512 * 512, MemoryFormat{}.empty_word());
@@ -228,18 +236,7 @@ TEST(DisplayMemoryBank, FacesReservedTogetherAndStoredConcurrentlyAreWrittenAsTe
   std::vector<uint64_t> stray(n, fmt.empty_word());
   stray[5] = 1;
   EXPECT_THROW(by_faces.store_face(1, stray.data(), fmt.empty_word()), std::logic_error);  // face 1 was not reserved
-  for (DisplayMemoryBank* bank : {&by_texel, &by_faces}) {
-    bank->commit();
-    bank->vblank();
-  }
-  for (int f = 0; f < 6; ++f)
-    for (int t = 0; t < by_faces.tiles_per_row() * by_faces.tiles_per_row(); ++t) {
-      const int32_t ta = by_texel.front_tile_index(f)[t], tb = by_faces.front_tile_index(f)[t];
-      ASSERT_EQ(ta == 0, tb == 0) << "face " << f << " tile " << t;
-      const uint64_t* pa = by_texel.front_pool() + static_cast<size_t>(ta) * DisplayMemoryBank::kTileWords;
-      const uint64_t* pb = by_faces.front_pool() + static_cast<size_t>(tb) * DisplayMemoryBank::kTileWords;
-      for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
-    }
+  expect_same_tiles(by_texel, by_faces, {0, 1, 2, 3, 4, 5});
 }
 
 TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {
