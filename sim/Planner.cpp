@@ -122,8 +122,14 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
 }
 
 // A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
+// Engine seconds per update of object i, at least (see LadderLoad::engine_busy).
+double engine_seconds(const host::SceneObject& o, const dp::HostEngineConfig& engine, int eyes) {
+  return eyes * (engine.object_setup_s + static_cast<double>(o.mesh->triangles()) / engine.triangles_per_s);
+}
+
 LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
-                       double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s) {
+                       double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s,
+                       const dp::HostEngineConfig& engine, int eyes) {
   LadderLoad L;
   L.count = count;
   L.update_frames = first;
@@ -144,11 +150,13 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
       const int m = sched.belongs_in(i);
       L.objects[static_cast<size_t>(m)] += 1.0;
       L.triangles_per_s += static_cast<double>(scene.objects[i].mesh->triangles()) * hz / static_cast<double>(sched.frames_per_update(m));
+      L.engine_busy += engine_seconds(scene.objects[i], engine, eyes) * hz / static_cast<double>(sched.frames_per_update(m));
       late += sched.period_s(m) > validity_s[k * n + i] ? 1 : 0;
     }
   }
   const double samples = static_cast<double>(ms.t.size());
   L.triangles_per_s /= samples;
+  L.engine_busy /= samples;
   for (double& o : L.objects) o /= samples;
   L.late_share = n ? static_cast<double>(late) / (samples * static_cast<double>(n)) : 0.0;
   return L;
@@ -295,8 +303,10 @@ Plan make_plan(const PlanRequest& r) {
   int first = 1;
   while (first * 2 <= std::min(p.fastest_need_frames, cap)) first *= 2;
   std::vector<LadderLoad> candidates;
+  const dp::HostEngineConfig& engine = p.config.host;
+  const int eyes = p.config.timing.eyes;
   if (n == 0) {
-    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s));
+    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine, eyes));
   } else {
     for (int count = 1; count <= dp::kCompositionInputs; ++count)
       for (const int ratio : {2, 3, 4}) {
@@ -306,10 +316,31 @@ Plan make_plan(const PlanRequest& r) {
         t.memory.update_ratio = ratio;
         if (!dp::validate(t).empty()) continue;  // the slowest period beyond the key's range
         if (count > 1 && static_cast<double>(dp::update_period_frames(first, ratio, count - 1)) > cap) break;  // beyond the motion
-        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s));
+        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s, engine, eyes));
         if (count == 1) break;  // the ratio does not matter with one memory
       }
   }
+  // Only the ladders the engine can carry (at least: engine_busy <= 1). None: an error naming the least it
+  // would be busy at this theta_t and at any theta_t (every object in one memory updated once every `cap`
+  // frames, the slowest a ladder goes).
+  const auto least_busy = *std::min_element(candidates.begin(), candidates.end(),
+                                            [](const LadderLoad& a, const LadderLoad& b) { return a.engine_busy < b.engine_busy; });
+  if (least_busy.engine_busy > 1) {
+    double floor_busy = 0;
+    for (const host::SceneObject& o : scene.objects) floor_busy += engine_seconds(o, engine, eyes) * hz / cap;
+    throw InputError(
+        r.base_source, "host.triangles_per_s",
+        "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.object_setup_s) +
+            " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
+            fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg: every ladder keeps it busy more than the whole of each second -- the least " +
+            fmt("%.3g", least_busy.engine_busy) + " s a second (" + ladder_text(least_busy) + "; fill not counted)" +
+            (floor_busy > 1 ? "; no theta_t helps: even rendered once every " + fmt("%.0f", cap) + " frames it needs " + fmt("%.3g", floor_busy) +
+                                  " s a second"
+                            : "; a larger --threshold-deg lowers it (at the slowest, once every " + fmt("%.0f", cap) + " frames: " +
+                                  fmt("%.3g", floor_busy) + " s a second)"));
+  }
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [](const LadderLoad& L) { return L.engine_busy > 1; }),
+                   candidates.end());
   p.best = *std::min_element(candidates.begin(), candidates.end(),
                              [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
   p.planned = p.best;
@@ -327,7 +358,7 @@ Plan make_plan(const PlanRequest& r) {
             host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
-                                       r.base.memory.update_ratio, base_validity);
+                                       r.base.memory.update_ratio, base_validity, engine, eyes);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -392,9 +423,12 @@ Plan make_plan(const PlanRequest& r) {
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");
-  p.not_decided.push_back("whether the rendering engine (host.*, kept from " + r.base_source +
-                          ") carries the planned load: the load above counts each object's triangles once an update, the "
-                          "engine is charged per cube face and eye, plus set-up and fill (a run's report has both)");
+  p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
+                       "it carries the planned ladder: busy at least " + fmt("%.3g", p.planned.engine_busy) +
+                           " s of each second (every object drawn for each eye at each update of its memory, its triangles "
+                           "sent to one face at least, its set-up; ladders it could not carry were not considered)"});
+  p.not_decided.push_back("whether the rendering engine also carries the fill and the triangles sent to more than one face: "
+                          "its check above counts neither (a run's report has the engine's modelled time)");
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(r.base);
   config::check(p.config, "the plan");

@@ -12,6 +12,7 @@
 #include "host/priority/PriorityScheduler.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
 #include "host/scene/Primitives.hpp"
+#include "host/scene/SceneFile.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
 #include "sim/ConfigFile.hpp"
 #include "sim/Planner.hpp"
@@ -186,6 +187,32 @@ TEST(Planner, WhatNeverChangesIsUpdatedOnceASecondAtMost) {
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
   EXPECT_EQ(p.config.memory.update_frames, 1 << static_cast<int>(std::floor(std::log2(hz))));
   EXPECT_EQ(p.config.memory.count, 1);
+}
+
+// The rendering engine (host.*) must carry the ladder. Standing still before one ball of T triangles,
+// the least an engine can be asked is the ball drawn for each of two eyes once a second (the slowest
+// update when the motion spans no time: a second's frames): 2 T / rate of each second. At T triangles a
+// second that is 2 s: refused, naming it and that no theta_t helps. At 4 T the ladder the plan takes,
+// one memory every 2^floor(log2 hz) frames, keeps it busy (2 T / 4 T) hz / 2^floor(log2 hz) of a second.
+TEST(Planner, AnEngineThatCannotCarryTheSceneIsRefusedNamingTheLeastLoad) {
+  TempDir d;
+  write(d.file("ball.json"), R"({"name": "ball", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -10]}]})");
+  const double T = static_cast<double>(host::load_scene_file(d.file("ball.json")).objects.at(0).mesh->triangles());
+  PlanRequest r = request(d.file("ball.json"));
+  r.walk_speed = 0.0;
+  r.size_widths = false;
+  r.base.host.object_setup_s = 0;
+  r.base.host.triangles_per_s = T;
+  const InputError e = test::error_of([&] { make_plan(r); });
+  EXPECT_EQ(e.place(), "host.triangles_per_s") << e.what();
+  EXPECT_NE(e.reason().find("no theta_t helps"), std::string::npos) << e.what();
+  EXPECT_NE(e.reason().find("it needs 2 s a second"), std::string::npos) << e.what();
+  r.base.host.triangles_per_s = 4 * T;
+  const Plan p = make_plan(r);
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const double first = std::exp2(std::floor(std::log2(hz)));
+  EXPECT_EQ(p.config.memory.update_frames, static_cast<int>(first));
+  EXPECT_NEAR(p.planned.engine_busy, 0.5 * hz / first, 1e-12);
 }
 
 TEST(Planner, ABoundNoWidthsMeetNamesTheBestAchievable) {
