@@ -107,6 +107,7 @@ class Session {
   int64_t live_behind_ps_ = 0, live_behind_max_ps_ = 0;  // how far the run's frames lag the tracker's clock
   std::string live_lag_text() const;
   double host_wall_s_ = 0;
+  double probe_wall_s_ = 0;  // measuring the error against the truth (its renders and its pipeline)
   size_t memory_peak_bytes_ = 0;  // the display memories' storage, largest at a frame's end
 };
 
