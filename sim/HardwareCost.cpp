@@ -1,10 +1,13 @@
 #include "HardwareCost.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/InputError.hpp"
+#include "common/ResourceUsage.hpp"
 #include "rtl_model/datapath/DisplayMemoryBank.hpp"
 #include "rtl_model/verilated/HdlConfig.hpp"
 
@@ -198,6 +201,31 @@ std::string hardware_cost_source() {
                   " configurations (";
   for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
   return s + ")";
+}
+
+void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_source, bool draws_scene, int truth_face_size) {
+  const int64_t available = available_memory_bytes();
+  if (available <= 0) return;  // not known: nothing to compare with
+  auto memories = [&](int64_t S, int count, int faces) {
+    const int64_t tiles = (S + dp::DisplayMemoryBank::kTile - 1) / dp::DisplayMemoryBank::kTile;
+    return int64_t{c.timing.eyes} * count * 2 * (faces * tiles * tiles + 1) * dp::DisplayMemoryBank::kTileWords * 8;
+  };
+  auto renderer = [](int64_t S) { return 6 * S * S * (36 + 8) + 2 * S * S * 8; };
+  const int64_t S = c.memory.face_size, T = truth_face_size > 0 ? truth_face_size : S;
+  const int64_t own = memories(S, c.memory.count, c.memory.faces_present()), faces = draws_scene ? renderer(S) : 0;
+  const int64_t truth = truth_face_size >= 0 ? memories(T, 1, 6) + renderer(T) + int64_t{c.timing.eyes} * 6 * T * T * 4 : 0;
+  if (own + faces + truth <= available) return;
+  auto gb = [](int64_t b) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.1f GB", static_cast<double>(b) / 1e9);
+    return std::string(t);
+  };
+  const bool truths = truth_face_size > 0 && truth > own + faces;
+  throw InputError(truths ? "--truth-face-size" : config_source, truths ? std::to_string(T) : "memory.face_size",
+                   "a run at face size " + std::to_string(truths ? T : S) + " may need up to " + gb(own + faces + truth) +
+                       " (display memories with every tile written " + gb(own) + (draws_scene ? ", the renderer's faces " + gb(faces) : "") +
+                       (truth_face_size >= 0 ? ", the truth's memory and faces " + gb(truth) : "") + "), more than the " + gb(available) +
+                       " this machine has available: a smaller face size or fewer memories");
 }
 
 int64_t display_memory_bytes(const dp::ArpConfig& c) {

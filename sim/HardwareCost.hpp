@@ -46,6 +46,15 @@ std::string hardware_cost_source();
 // and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits.
 int64_t display_memory_bytes(const dp::ArpConfig& c);
 
+// The most memory the model can take for a configuration: every display memory's tiles written (eyes x
+// memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces
+// and words when a scene is drawn (six faces x S^2 x 44 bytes and two S^2 tables of doubles), and with
+// truth_face_size >= 0 the truth's memory and render (0: at the run's face size). InputError naming
+// memory.face_size (in config_source) or --truth-face-size when that is more than the machine has
+// available (MemAvailable): a face size within the key's range can ask for hundreds of GB, and the
+// allocations fail inside parallel regions, where nothing can catch them. Nothing when MemAvailable is unknown.
+void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_source, bool draws_scene, int truth_face_size = -1);
+
 // For tests: the RTL modules the cost CSV must cover, and the parsed rows.
 std::vector<std::string> rtl_module_keys();
 std::vector<SynthesizedModule> synthesized_rows();

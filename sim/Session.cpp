@@ -24,7 +24,6 @@
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
 #include "common/ParameterJson.hpp"
-#include "common/ResourceUsage.hpp"
 #include "common/Units.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
@@ -77,42 +76,6 @@ std::string detail_text(const stage::FrameWindows& w, const RunSpec& s, const sc
          ", fewer at the run's start), functional between";
 }
 
-// The most memory a run's model can take, from its configuration: every display memory's tiles written
-// (eyes x memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float
-// faces and words when a scene is drawn (six faces x S^2 x 36 + 8 + 8 bytes, on the host's thread), and
-// the truth's memory and render when the error is measured. Refused, naming the key or option that sets
-// the size, when it is more than the machine has available: a face size within the key's range can ask
-// for far more than that, and the allocations fail inside parallel regions, where nothing can catch them.
-void check_memory_fits(const RunSpec& s) {
-  const int64_t available = available_memory_bytes();
-  if (available <= 0) return;  // not known: nothing to compare with
-  auto memories = [](const dp::ArpConfig& c, int count, int faces) {
-    const int64_t tiles = (int64_t{c.memory.face_size} + dp::DisplayMemoryBank::kTile - 1) / dp::DisplayMemoryBank::kTile;
-    return int64_t{c.timing.eyes} * count * 2 * (faces * tiles * tiles + 1) * dp::DisplayMemoryBank::kTileWords * 8;
-  };
-  auto renderer = [](int64_t S) { return 6 * S * S * (36 + 8) + 2 * S * S * 8; };
-  const bool scene = !s.memories.scene.empty(), probe = scene && !s.host.walk.empty() && s.out.error_every > 0;
-  const dp::ArpConfig& c = s.config;
-  const int64_t run = memories(c, c.memory.count, c.memory.faces_present()) + (scene ? renderer(c.memory.face_size) : 0);
-  const int64_t T = s.out.truth_face_size > 0 ? s.out.truth_face_size : c.memory.face_size;
-  dp::ArpConfig tc = c;
-  tc.memory.face_size = static_cast<int>(T);
-  const int64_t truth = probe ? memories(tc, 1, 6) + renderer(T) + int64_t{c.timing.eyes} * 6 * T * T * 4 : 0;
-  if (run + truth <= available) return;
-  auto gb = [](int64_t b) {
-    char t[32];
-    std::snprintf(t, sizeof t, "%.1f GB", static_cast<double>(b) / 1e9);
-    return std::string(t);
-  };
-  const bool truths = s.out.truth_face_size > 0 && truth > run;
-  throw InputError(truths ? "--truth-face-size" : s.config_source, truths ? std::to_string(T) : "memory.face_size",
-                   "a run at face size " + std::to_string(truths ? T : c.memory.face_size) + " may need up to " + gb(run + truth) +
-                       " (display memories with every tile written " + gb(memories(c, c.memory.count, c.memory.faces_present())) +
-                       (scene ? ", the renderer's faces " + gb(renderer(c.memory.face_size)) : "") +
-                       (probe ? ", the truth's memory and faces " + gb(truth) : "") + "), more than the " + gb(available) +
-                       " this machine has available: a smaller face size or fewer memories");
-}
-
 void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const auto& o = s.out;
   const auto& h = s.host;
@@ -145,7 +108,8 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
   if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
   check_renderer(s.memories, s.config.memory.depth_bits);
-  check_memory_fits(s);
+  check_model_fits_memory(s.config, s.config_source, !s.memories.scene.empty(),
+                          !s.memories.scene.empty() && !h.walk.empty() && o.error_every > 0 ? std::max(o.truth_face_size, 0) : -1);
   if (h.warp && s.memories.renderer != "software")
     throw InputError("--renderer", s.memories.renderer, "region warping (--warp) moves vertices on the CPU: it needs --renderer software");
   if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);

@@ -4,12 +4,14 @@
 #include <chrono>
 
 #include "ConfigFile.hpp"
+#include "HardwareCost.hpp"
 #include "common/InputError.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 
 namespace arp::sim {
 
 StillFrame render_still(const StillSpec& spec) {
+  check_model_fits_memory(spec.config, spec.config_source, !spec.memories.scene.empty());
   const FunctionalModel model(spec.config);
   if (const std::string why = model.timing().frames_out_of_range(spec.frame, 1); !why.empty())
     throw InputError("--frame", "", why);

@@ -480,9 +480,11 @@ TEST(TimedRunCli, ATruthAtAFixedFaceSizeComparesRunsOfDifferentFaces) {
   const std::string walk = " --first-frame 100 --frames 4 --every 0 --error-every 3";
   const auto coarse_own = gallery_walk(d, walk + " --set memory.face_size=128", "a.json")["host"]["error"];
   const auto coarse = gallery_walk(d, walk + " --set memory.face_size=128 --truth-face-size 256", "b.json")["host"]["error"];
-  const auto fine = gallery_walk(d, walk + " --set memory.face_size=256", "c.json")["host"]["error"];
-  const auto fine_named = gallery_walk(d, walk + " --set memory.face_size=256 --truth-face-size 256", "d.json")["host"]["error"];
+  auto fine = gallery_walk(d, walk + " --set memory.face_size=256", "c.json")["host"]["error"];
+  auto fine_named = gallery_walk(d, walk + " --set memory.face_size=256 --truth-face-size 256", "d.json")["host"]["error"];
   ASSERT_FALSE(coarse_own.is_null() || coarse.is_null() || fine.is_null() || fine_named.is_null());
+  fine.erase("wall_seconds");  // the one figure that cannot repeat
+  fine_named.erase("wall_seconds");
   EXPECT_EQ(coarse_own["truth_face_size"], 128);
   EXPECT_EQ(coarse["truth_face_size"], 256);
   EXPECT_EQ(fine, fine_named);
