@@ -102,6 +102,10 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (o.truth_face_size != 0 && (o.error_every <= 0 || h.walk.empty()))
     throw InputError("--truth-face-size", std::to_string(o.truth_face_size),
                      "needs --walk and --error-every > 0 (it sizes the truth the error is measured against)");
+  if (o.truth_face_size != 0) {  // its range (the key's) before what it would cost
+    dp::ArpConfig t = s.config;
+    set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);
+  }
   if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
