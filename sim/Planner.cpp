@@ -121,15 +121,34 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   return m;
 }
 
-// A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
-// Engine seconds per update of object i, at least (see LadderLoad::engine_busy).
-double engine_seconds(const host::SceneObject& o, const dp::HostEngineConfig& engine, int eyes) {
-  return eyes * (engine.object_setup_s + static_cast<double>(o.mesh->triangles()) / engine.triangles_per_s);
+// Engine seconds per update of each object at each sample (k * objects + i), at least: for each eye its
+// set-up and its triangles once for every face its bound reaches, by the renderers' culling test
+// (host::sphere_meets_face, as host::cull_to_faces sends them) with the bound shrunk by half the distance
+// between the eyes -- what the shrunk sphere meets from the walk's point, the whole one meets from either
+// eye -- and one face at least. The fill is not counted. (See LadderLoad::engine_busy.)
+std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
+                                   const dp::HostEngineConfig& engine, int eyes) {
+  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
+  const size_t n = scene.objects.size();
+  std::vector<double> out(ms.t.size() * n);
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    const glm::dvec3 head = walk.position(ms.t[k]);
+    for (size_t i = 0; i < n; ++i) {
+      const host::SceneObject& o = scene.objects[i];
+      const host::Sphere b = o.world_bound(ms.t[k]);
+      int faces = 0;
+      for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
+      out[k * n + i] = eyes * (engine.object_setup_s +
+                               static_cast<double>(o.mesh->triangles()) * std::max(faces, 1) / engine.triangles_per_s);
+    }
+  }
+  return out;
 }
 
+// A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
 LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
                        double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s,
-                       const dp::HostEngineConfig& engine, int eyes) {
+                       const std::vector<double>& engine_s) {
   LadderLoad L;
   L.count = count;
   L.update_frames = first;
@@ -150,7 +169,7 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
       const int m = sched.belongs_in(i);
       L.objects[static_cast<size_t>(m)] += 1.0;
       L.triangles_per_s += static_cast<double>(scene.objects[i].mesh->triangles()) * hz / static_cast<double>(sched.frames_per_update(m));
-      L.engine_busy += engine_seconds(scene.objects[i], engine, eyes) * hz / static_cast<double>(sched.frames_per_update(m));
+      L.engine_busy += engine_s[k * n + i] * hz / static_cast<double>(sched.frames_per_update(m));
       late += sched.period_s(m) > validity_s[k * n + i] ? 1 : 0;
     }
   }
@@ -305,8 +324,9 @@ Plan make_plan(const PlanRequest& r) {
   std::vector<LadderLoad> candidates;
   const dp::HostEngineConfig& engine = p.config.host;
   const int eyes = p.config.timing.eyes;
+  const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes);
   if (n == 0) {
-    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine, eyes));
+    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine_s));
   } else {
     for (int count = 1; count <= dp::kCompositionInputs; ++count)
       for (const int ratio : {2, 3, 4}) {
@@ -316,7 +336,7 @@ Plan make_plan(const PlanRequest& r) {
         t.memory.update_ratio = ratio;
         if (!dp::validate(t).empty()) continue;  // the slowest period beyond the key's range
         if (count > 1 && static_cast<double>(dp::update_period_frames(first, ratio, count - 1)) > cap) break;  // beyond the motion
-        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s, engine, eyes));
+        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s, engine_s));
         if (count == 1) break;  // the ratio does not matter with one memory
       }
   }
@@ -326,8 +346,8 @@ Plan make_plan(const PlanRequest& r) {
   const auto least_busy = *std::min_element(candidates.begin(), candidates.end(),
                                             [](const LadderLoad& a, const LadderLoad& b) { return a.engine_busy < b.engine_busy; });
   if (least_busy.engine_busy > 1) {
-    double floor_busy = 0;
-    for (const host::SceneObject& o : scene.objects) floor_busy += engine_seconds(o, engine, eyes) * hz / cap;
+    double floor_busy = 0;  // every object at every sample once every `cap` frames, mean over the motion
+    for (const double e : engine_s) floor_busy += e * hz / cap / static_cast<double>(ms.t.size());
     throw InputError(
         r.base_source, "host.triangles_per_s",
         "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.object_setup_s) +
@@ -358,7 +378,7 @@ Plan make_plan(const PlanRequest& r) {
             host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
-                                       r.base.memory.update_ratio, base_validity, engine, eyes);
+                                       r.base.memory.update_ratio, base_validity, engine_s);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;

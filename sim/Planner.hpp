@@ -50,8 +50,9 @@ struct LadderLoad {
   int count = 1, update_frames = 1, update_ratio = 2;
   double triangles_per_s = 0;     // host rendering load, mean over the motion
   // The share of each second the rendering engine (host.*) is at least busy, mean over the motion: every
-  // object drawn for each eye at each update of its memory, its triangles sent to one face at least and its
-  // set-up; the fill is not counted (a lower bound: above 1, the engine cannot carry the ladder).
+  // object drawn for each eye at each update of its memory, its set-up and its triangles sent to every face
+  // its bound reaches from both eyes (one at least); the fill is not counted (a lower bound: above 1, the
+  // engine cannot carry the ladder).
   double engine_busy = 0;
   double late_share = 0;          // object-samples whose memory updates slower than their validity needs
   std::vector<double> objects;    // mean objects in each memory

@@ -215,6 +215,30 @@ TEST(Planner, AnEngineThatCannotCarryTheSceneIsRefusedNamingTheLeastLoad) {
   EXPECT_NEAR(p.planned.engine_busy, 0.5 * hz / first, 1e-12);
 }
 
+// The engine's triangles count once for every face an object reaches, as the renderers send them: a ball
+// seen along a cube corner's diagonal reaches three faces (+X, +Y, -Z), and costs three times the ball
+// seen along an axis (one face, the test above).
+TEST(Planner, AnObjectOnACornerDiagonalCostsTheEngineThreeFaces) {
+  TempDir d;
+  write(d.file("walk.json"), R"({"speed": 0, "points": [[0, 1.6, 0], [1, 1.6, 0]]})");
+  write(d.file("corner.json"),
+        R"({"name": "corner", "objects": [{"name": "ball", "sphere": 0.5, "position": [6, 7.6, -6]}]})");
+  const double T = static_cast<double>(host::load_scene_file(d.file("corner.json")).objects.at(0).mesh->triangles());
+  PlanRequest r = request(d.file("corner.json"), d.file("walk.json"));
+  r.size_widths = false;
+  r.base.host.object_setup_s = 0;
+  r.base.host.triangles_per_s = T;
+  const InputError e = test::error_of([&] { make_plan(r); });
+  EXPECT_EQ(e.place(), "host.triangles_per_s") << e.what();
+  EXPECT_NE(e.reason().find("it needs 6 s a second"), std::string::npos) << e.what();  // 2 eyes x 3 faces x T / T
+  r.base.host.triangles_per_s = 16 * T;
+  const Plan p = make_plan(r);
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const double first = std::exp2(std::floor(std::log2(hz)));
+  ASSERT_EQ(p.config.memory.update_frames, static_cast<int>(first));
+  EXPECT_NEAR(p.planned.engine_busy, 2.0 * 3.0 / 16.0 * hz / first, 1e-12);
+}
+
 TEST(Planner, ABoundNoWidthsMeetNamesTheBestAchievable) {
   TempDir d;
   write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
