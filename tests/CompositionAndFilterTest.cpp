@@ -77,6 +77,41 @@ TEST(AntiAliasingFilter, BlendIsTheRoundedExactBilinear) {
   EXPECT_EQ(bilinear_blend(c00, c10, c01, c11, 0, 0, 8, L), c00);
 }
 
+// The 32-bit accumulator gives the 64-bit one's value wherever blend_fits_32 allows it, and the check is
+// exact: its bound is the sum with every channel at its largest and zero weights, m W^2 + W^2 / 2, which
+// for 8-bit channels fits 32 bits up to texel_frac 12 and for 16-bit ones up to 8 -- one bit more and the
+// narrow sum wraps.
+TEST(AntiAliasingFilter, TheNarrowAccumulatorBlendsAlikeWhereItFits) {
+  for (const int red : {8, 16}) {
+    MemoryConfig mc;
+    mc.red_bits = red;
+    mc.green_bits = mc.blue_bits = 8;
+    const ChannelLayout L{MemoryFormat(mc)};
+    const int last_fit = red == 16 ? 8 : 12;
+    for (int T = 1; T <= 16; ++T) {
+      EXPECT_EQ(blend_fits_32(T, L), T <= last_fit) << "red " << red << " T " << T;
+      const uint32_t top = (L.mask[0] << L.shift[0]) | (L.mask[1] << L.shift[1]) | L.mask[2];
+      const uint32_t W = 1u << T;
+      if (!blend_fits_32(T, L)) {
+        if (T == last_fit + 1) {  // the largest sum no longer fits: the narrow one differs
+          EXPECT_NE(bilinear_blend_in<uint32_t>(top, top, top, top, 0, 0, T, L), bilinear_blend(top, top, top, top, 0, 0, T, L));
+        }
+        continue;
+      }
+      uint32_t state = 12345u + static_cast<uint32_t>(T);
+      auto next = [&] { return state = state * 1664525u + 1013904223u; };
+      for (int k = 0; k < 2000; ++k) {
+        const bool extreme = k < 16;  // every corner of colours and weights first
+        const uint32_t c00 = extreme && (k & 1) ? top : next() & top, c10 = extreme && (k & 2) ? top : next() & top;
+        const uint32_t c01 = extreme && (k & 4) ? top : next() & top, c11 = extreme && (k & 8) ? top : next() & top;
+        const uint32_t wx = extreme ? (k & 1 ? W - 1 : 0) : next() % W, wy = extreme ? (k & 2 ? W - 1 : 0) : next() % W;
+        ASSERT_EQ(bilinear_blend_in<uint32_t>(c00, c10, c01, c11, wx, wy, T, L), bilinear_blend(c00, c10, c01, c11, wx, wy, T, L))
+            << "red " << red << " T " << T << " k " << k;
+      }
+    }
+  }
+}
+
 TEST(HmdScanOut, RescalesMemoryColourToTheDisplayAndGivesPhotonTimes) {
   MemoryFormat f;
   f.red_bits = 5;

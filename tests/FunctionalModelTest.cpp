@@ -128,6 +128,24 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   c.memory.count = 16;
   c.memory.face_size = 64;
   cases["16 memories, per-frame latch"] = c;
+  // One memory: its own passes. The blend sums in 32 bits where dp::blend_fits_32 (8-bit channels up to
+  // texel_frac 12), in 64 otherwise.
+  c = small(ArpConfig{});
+  c.memory.count = 1;
+  cases["one memory, bilinear"] = c;
+  c.widths.texel_frac = 13;
+  c.widths.quot_frac = 16;
+  cases["one memory, bilinear, texel_frac 13 (64-bit blend)"] = c;
+  c = small(ArpConfig{});
+  c.memory.count = 1;
+  c.memory.red_bits = 16;
+  c.memory.green_bits = c.memory.blue_bits = 8;
+  c.widths.texel_frac = 9;
+  cases["one memory, 16-bit red, texel_frac 9 (64-bit blend)"] = c;
+  c = small(ArpConfig{});
+  c.memory.count = 1;
+  c.pipeline.aa = AaMode::Off;
+  cases["one memory, nearest"] = c;
   for (const auto& [name, cfg] : cases) expect_bit_identical(cfg, name);
 }
 

@@ -6,6 +6,7 @@
 // filtering keeps object edges between memories correct (a filtered depth
 // would be meaningless).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
 #include "DisplayMemoryBank.hpp"
@@ -37,21 +38,38 @@ struct ChannelLayout {
 };
 
 // Per channel: ((c00(W-wx) + c10 wx)(W-wy) + (c01(W-wx) + c11 wx) wy) / W^2,
-// rounded half up; W = 2^texel_frac. 16-bit channels and 16 weight bits fit in 64 bits.
-inline uint32_t bilinear_blend(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t wx, uint32_t wy,
-                               int texel_frac, const ChannelLayout& L) {
-  const uint64_t W = uint64_t{1} << texel_frac;
+// rounded half up; W = 2^texel_frac. The sum is at most mask W^2 + W^2/2: 16-bit
+// channels and 16 weight bits fit the 64-bit accumulator, so bilinear_blend always
+// holds it. Acc = uint32_t computes the same value where blend_fits_32 says the
+// sum fits 32 bits (8-bit channels up to texel_frac 12); a vector unit then takes
+// twice the pixels at once.
+template <class Acc>
+inline uint32_t bilinear_blend_in(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t wx, uint32_t wy,
+                                  int texel_frac, const ChannelLayout& L) {
+  const Acc W = Acc{1} << texel_frac;
   const int shift = 2 * texel_frac;
-  const uint64_t round = uint64_t{1} << (shift - 1);
+  const Acc round = Acc{1} << (shift - 1);
   uint32_t out = 0;
   for (int c = 0; c < 3; ++c) {
-    const uint64_t a = (c00 >> L.shift[c]) & L.mask[c], b = (c10 >> L.shift[c]) & L.mask[c];
-    const uint64_t d = (c01 >> L.shift[c]) & L.mask[c], e = (c11 >> L.shift[c]) & L.mask[c];
-    const uint64_t top = a * (W - wx) + b * wx, bottom = d * (W - wx) + e * wx;
-    const uint64_t v = (top * (W - wy) + bottom * wy + round) >> shift;
+    const Acc a = (c00 >> L.shift[c]) & L.mask[c], b = (c10 >> L.shift[c]) & L.mask[c];
+    const Acc d = (c01 >> L.shift[c]) & L.mask[c], e = (c11 >> L.shift[c]) & L.mask[c];
+    const Acc top = a * (W - wx) + b * wx, bottom = d * (W - wx) + e * wx;
+    const Acc v = (top * (W - wy) + bottom * wy + round) >> shift;
     out |= static_cast<uint32_t>(v) << L.shift[c];
   }
   return out;
+}
+
+inline uint32_t bilinear_blend(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t wx, uint32_t wy,
+                               int texel_frac, const ChannelLayout& L) {
+  return bilinear_blend_in<uint64_t>(c00, c10, c01, c11, wx, wy, texel_frac, L);
+}
+
+// Whether the largest sum, mask W^2 + W^2/2 over the widest channel, fits 32 bits.
+inline bool blend_fits_32(int texel_frac, const ChannelLayout& L) {
+  const uint64_t m = std::max({L.mask[0], L.mask[1], L.mask[2]});
+  const uint64_t W2 = uint64_t{1} << (2 * texel_frac);
+  return m * W2 + W2 / 2 <= UINT32_MAX;
 }
 
 }  // namespace arp::dp

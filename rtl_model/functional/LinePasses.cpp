@@ -155,23 +155,85 @@ void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, c
 }
 
 namespace {
+// The single-memory bilinear path in three passes over a block of pixels: tap positions (vectors),
+// the texel loads (a scalar loop on purpose), composition and blend (vectors). One fused vector loop
+// was slower: a gather of eight 64-bit words costs about as much as eight plain loads on Zen 4 and
+// stalls the loop around it, while plain loads overlap (bench/FunctionalModelBench: 117-125 against
+// 139-162 M px/s on one thread, runs alternating, 2026-11-26).
+constexpr int kBlock = 128;
+
 ARP_VECTOR_CLONES
-void bilinear_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
-                          const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
-                          int n, int T, int32_t S, int tpr, int tpf, const ChannelLayout& Lref,
-                          const CompositionParams& cpref, uint32_t* __restrict out) {
-  const ChannelLayout L = Lref;
-  const CompositionParams cp = cpref;
+void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
+                        int T, int32_t S, int tpr, int tpf, int32_t* __restrict tile, int32_t* __restrict w0,
+                        int32_t* __restrict dx, int32_t* __restrict dy, uint32_t* __restrict wx,
+                        uint32_t* __restrict wy) {
   for (int i = 0; i < n; ++i) {
     const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
     // All four taps lie in the tile of (x0, y0): x1 - x0 and y1 - y0 are 0 or
     // 1, and a stored tile's apron holds its right and bottom neighbours' edges.
-    const int32_t tile = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
-    const int64_t w0 = static_cast<int64_t>(offset[tile]) + (t.y0 & TM) * TR + (t.x0 & TM);
-    const int32_t dx = t.x1 - t.x0, dy = (t.y1 - t.y0) * TR;
-    const uint64_t w00 = pool[w0], w10 = pool[w0 + dx], w01 = pool[w0 + dy], w11 = pool[w0 + dy + dx];
-    out[i] = bilinear_blend(compose(&w00, 1, cp).color, compose(&w10, 1, cp).color, compose(&w01, 1, cp).color,
-                            compose(&w11, 1, cp).color, t.wx, t.wy, T, L);
+    tile[i] = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
+    w0[i] = (t.y0 & TM) * TR + (t.x0 & TM);
+    dx[i] = t.x1 - t.x0;
+    dy[i] = (t.y1 - t.y0) * TR;
+    wx[i] = t.wx;
+    wy[i] = t.wy;
+  }
+}
+
+// No vector clone: the baseline has no gathers, so the loads stay scalar.
+void bilinear_load_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
+                        const int32_t* __restrict tile, const int32_t* __restrict w0, const int32_t* __restrict dx,
+                        const int32_t* __restrict dy, int n, uint64_t* __restrict a, uint64_t* __restrict b,
+                        uint64_t* __restrict c, uint64_t* __restrict d) {
+  for (int i = 0; i < n; ++i) {
+    const uint64_t* q = pool + static_cast<int64_t>(offset[tile[i]]) + w0[i];
+    a[i] = q[0];
+    b[i] = q[dx[i]];
+    c[i] = q[dy[i]];
+    d[i] = q[dy[i] + dx[i]];
+  }
+}
+
+// Acc: the blend's accumulator (uint32_t where dp::blend_fits_32: the same value, twice the lanes).
+template <class Acc>
+[[gnu::always_inline]] inline void bilinear_blend_body(const uint64_t* __restrict a, const uint64_t* __restrict b,
+                                                       const uint64_t* __restrict c, const uint64_t* __restrict d,
+                                                       const uint32_t* __restrict wx, const uint32_t* __restrict wy,
+                                                       int n, int T, const ChannelLayout& Lref,
+                                                       const CompositionParams& cpref, uint32_t* __restrict out) {
+  const ChannelLayout L = Lref;
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i)
+    out[i] = bilinear_blend_in<Acc>(compose(&a[i], 1, cp).color, compose(&b[i], 1, cp).color,
+                                    compose(&c[i], 1, cp).color, compose(&d[i], 1, cp).color, wx[i], wy[i], T, L);
+}
+
+ARP_VECTOR_CLONES
+void bilinear_blend_32(const uint64_t* a, const uint64_t* b, const uint64_t* c, const uint64_t* d, const uint32_t* wx,
+                       const uint32_t* wy, int n, int T, const ChannelLayout& L, const CompositionParams& cp,
+                       uint32_t* out) {
+  bilinear_blend_body<uint32_t>(a, b, c, d, wx, wy, n, T, L, cp, out);
+}
+
+ARP_VECTOR_CLONES
+void bilinear_blend_64(const uint64_t* a, const uint64_t* b, const uint64_t* c, const uint64_t* d, const uint32_t* wx,
+                       const uint32_t* wy, int n, int T, const ChannelLayout& L, const CompositionParams& cp,
+                       uint32_t* out) {
+  bilinear_blend_body<uint64_t>(a, b, c, d, wx, wy, n, T, L, cp, out);
+}
+
+void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int32_t* face, const int32_t* u,
+                          const int32_t* v, int n, int T, int32_t S, int tpr, int tpf, const ChannelLayout& L,
+                          const CompositionParams& cp, uint32_t* out) {
+  alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
+  alignas(64) uint32_t wx[kBlock], wy[kBlock];
+  alignas(64) uint64_t a[kBlock], b[kBlock], c[kBlock], d[kBlock];
+  const auto blend = blend_fits_32(T, L) ? bilinear_blend_32 : bilinear_blend_64;
+  for (int i0 = 0; i0 < n; i0 += kBlock) {
+    const int m = std::min(kBlock, n - i0);
+    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, tpr, tpf, tile, w0, dx, dy, wx, wy);
+    bilinear_load_impl(pool, offset, tile, w0, dx, dy, m, a, b, c, d);
+    blend(a, b, c, d, wx, wy, m, T, L, cp, out + i0);
   }
 }
 

@@ -5,8 +5,8 @@
 // compiled for x86-64-v4 (AVX-512) and a portable baseline, chosen at run time.
 //
 // Per strip of a line: rotate -> address (face, texel-space u, v) -> then,
-// for an eye whose scene sits in one memory, one fused loop (tap addresses,
-// texel gathers, composition, blend); for several memories, tap addresses ->
+// for an eye whose scene sits in one memory, fused passes (tap addresses,
+// texel loads, composition, blend); for several memories, tap addresses ->
 // fetch and composite per tap -> blend. Scan-out last.
 #pragma once
 #include <cstdint>
@@ -67,10 +67,9 @@ void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v,
                         int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
                         TexelRef t11, uint32_t* wx, uint32_t* wy);
 
-// The whole bilinear path for an eye with a single memory, fused into one
-// vectorised loop: tap addresses, one tile-number gather per quad (the
-// tiles' aprons put all four taps in one tile), four texel gathers,
-// composition, blend. out is the memory-colour code per pixel.
+// The whole bilinear path for an eye with a single memory, per block of
+// pixels: tap positions (the tiles' aprons put all four taps in one tile),
+// the texel loads, composition and blend. out is the memory-colour code per pixel.
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
                                  const dp::CompositionParams& cp, uint32_t* out);
