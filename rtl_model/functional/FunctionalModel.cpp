@@ -137,16 +137,14 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
 #pragma omp parallel num_threads(threads)
   {
-    // Per-thread buffers for one chunk of a line: small enough (about 14 KiB)
+    // Per-thread buffers for one chunk of a line: small enough (with the passes own blocks, under 16 KiB)
     // that every pass works out of L1.
     constexpr int C = 128;
     const size_t w = C;
     std::vector<LatchSegment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
-    std::vector<int32_t> refs(8 * w);  // tile, word for up to four taps
-    std::vector<uint32_t> col(4 * w), wx(w), wy(w);
-    auto ref = [&](int tap) { return passes::TexelRef{&refs[(2 * tap) * w], &refs[(2 * tap + 1) * w]}; };
-    const int taps = A == AaMode::Bilinear ? 4 : 1;
+    std::vector<int32_t> tiles(w), words(w);  // the nearest texels' places, several memories
+    const passes::TexelRef ref{tiles.data(), words.data()};
     ClockTimeCursor clock(timing_.config().pixel_clock_hz);  // a line's slots are consecutive clocks: no division each
 #pragma omp for schedule(dynamic, 16)
     for (int line = 0; line < E * H; ++line) {
@@ -167,22 +165,13 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
         else
           passes::address_line_exact(rx.data(), ry.data(), rz.data(), n, addr_, face.data(), u.data(), v.data());
         uint32_t* dst = dst_line + c0;
-        if (src.count == 1) {  // one memory: the fused single-memory passes
-          if constexpr (A == AaMode::Off)
-            passes::nearest_single_memory_line(src, face.data(), u.data(), v.data(), n, T, comp_, dst);
-          else
-            passes::bilinear_single_memory_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_, dst);
+        if constexpr (A == AaMode::Bilinear) {
+          passes::bilinear_memories_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_, dst);
+        } else if (src.count == 1) {  // one memory: the fused single-memory pass
+          passes::nearest_single_memory_line(src, face.data(), u.data(), v.data(), n, T, comp_, dst);
         } else {
-          if constexpr (A == AaMode::Off)
-            passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref(0));
-          else
-            passes::bilinear_refs_line(face.data(), u.data(), v.data(), n, T, S, src, ref(0), ref(1), ref(2), ref(3),
-                                       wx.data(), wy.data());
-          for (int k = 0; k < taps; ++k) passes::fetch_compose_line(src, ref(k), n, comp_, &col[static_cast<size_t>(k) * w]);
-          if constexpr (A == AaMode::Off)
-            std::copy(col.begin(), col.begin() + n, dst);
-          else
-            passes::blend_line(&col[0], &col[w], &col[2 * w], &col[3 * w], wx.data(), wy.data(), n, T, layout_, dst);
+          passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref);
+          passes::fetch_compose_line(src, ref, n, comp_, dst);
         }
         if (!scan_.identity())
           for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(dst[x]);

@@ -85,38 +85,6 @@ void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, 
 }
 
 namespace {
-// Plain restrict pointer parameters: GCC ignores restrict on local copies, and
-// without it cannot prove the ten output streams independent.
-ARP_VECTOR_CLONES
-void bilinear_refs_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
-                        int T, int32_t S, int tpr, int tpf,
-                        int32_t* __restrict a_t, int32_t* __restrict a_w, int32_t* __restrict b_t,
-                        int32_t* __restrict b_w, int32_t* __restrict c_t, int32_t* __restrict c_w,
-                        int32_t* __restrict d_t, int32_t* __restrict d_w, uint32_t* __restrict wx,
-                        uint32_t* __restrict wy) {
-  for (int i = 0; i < n; ++i) {
-    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
-    const int32_t base = face[i] * tpf;
-    const int32_t r0 = base + (t.y0 >> TS) * tpr, r1 = base + (t.y1 >> TS) * tpr;
-    const int32_t q0 = (t.y0 & TM) * TR, q1 = (t.y1 & TM) * TR;
-    a_t[i] = r0 + (t.x0 >> TS); a_w[i] = q0 + (t.x0 & TM);
-    b_t[i] = r0 + (t.x1 >> TS); b_w[i] = q0 + (t.x1 & TM);
-    c_t[i] = r1 + (t.x0 >> TS); c_w[i] = q1 + (t.x0 & TM);
-    d_t[i] = r1 + (t.x1 >> TS); d_w[i] = q1 + (t.x1 & TM);
-    wx[i] = t.wx;
-    wy[i] = t.wy;
-  }
-}
-}  // namespace
-
-void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int T, int32_t S,
-                        const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01, TexelRef t11, uint32_t* wx,
-                        uint32_t* wy) {
-  bilinear_refs_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, t00.tile, t00.word, t10.tile, t10.word, t01.tile, t01.word, t11.tile, t11.word,
-                     wx, wy);
-}
-
-namespace {
 inline uint64_t texel(const uint64_t* pool, const int32_t* offset, int32_t tile, int32_t word) {
   return pool[static_cast<int64_t>(offset[tile]) + word];
 }
@@ -124,12 +92,21 @@ inline uint64_t texel(const uint64_t* pool, const int32_t* offset, int32_t tile,
 }  // namespace
 
 namespace {
+// How many pixels ahead the multi-memory loops ask for their texels: the loads are latency bound (the
+// memories' texels of a strip span several times the caches' reach), and the core alone does not look
+// that far ahead (one thread, four full memories: 63-66 M px/s without, 89-97 with 16, 32 or 64 ahead;
+// 32 the best; bench/FunctionalModelBench, alternating, 2026-11-26).
+constexpr int kAhead = 32;
+
 // K is the memory count when small enough to unroll; K == 0: src.count at run time.
 template <int K>
 void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   const int count = K > 0 ? K : src.count;
   uint64_t w[16];
   for (int i = 0; i < n; ++i) {
+    if (i + kAhead < n)
+      for (int k = 0; k < count; ++k)
+        __builtin_prefetch(&src.pool[k][static_cast<int64_t>(src.offset[k][ref.tile[i + kAhead]]) + ref.word[i + kAhead]]);
     for (int k = 0; k < count; ++k) w[k] = texel(src.pool[k], src.offset[k], ref.tile[i], ref.word[i]);
     out[i] = compose(w, count, cp).color;
   }
@@ -145,13 +122,6 @@ void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const Compos
     case 4: fetch_compose_k<4>(src, ref, n, cp, out); break;
     default: fetch_compose_k<0>(src, ref, n, cp, out); break;
   }
-}
-
-ARP_VECTOR_CLONES
-void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11, const uint32_t* wx,
-                const uint32_t* wy, int n, int texel_frac, const ChannelLayout& Lref, uint32_t* __restrict out) {
-  const ChannelLayout L = Lref;
-  for (int i = 0; i < n; ++i) out[i] = bilinear_blend(c00[i], c10[i], c01[i], c11[i], wx[i], wy[i], texel_frac, L);
 }
 
 namespace {
@@ -237,6 +207,74 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
   }
 }
 
+// Several memories: per pixel and memory one tile lookup and the four taps (the apron), composited per
+// tap as they arrive -- a scalar loop, its texels asked for kAhead pixels ahead -- then the blend in
+// vectors. K as in fetch_compose_k.
+template <int K>
+void bilinear_fetch_compose_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict w0,
+                              const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
+                              const CompositionParams& cp, uint32_t* __restrict c00, uint32_t* __restrict c10,
+                              uint32_t* __restrict c01, uint32_t* __restrict c11) {
+  const int count = K > 0 ? K : src.count;
+  uint64_t a[16], b[16], c[16], d[16];
+  for (int i = 0; i < n; ++i) {
+    if (i + kAhead < n)
+      for (int k = 0; k < count; ++k) {
+        const uint64_t* q = src.pool[k] + static_cast<int64_t>(src.offset[k][tile[i + kAhead]]) + w0[i + kAhead];
+        __builtin_prefetch(q);
+        __builtin_prefetch(q + dy[i + kAhead]);
+      }
+    for (int k = 0; k < count; ++k) {
+      const uint64_t* q = src.pool[k] + static_cast<int64_t>(src.offset[k][tile[i]]) + w0[i];
+      a[k] = q[0];
+      b[k] = q[dx[i]];
+      c[k] = q[dy[i]];
+      d[k] = q[dy[i] + dx[i]];
+    }
+    c00[i] = compose(a, count, cp).color;
+    c10[i] = compose(b, count, cp).color;
+    c01[i] = compose(c, count, cp).color;
+    c11[i] = compose(d, count, cp).color;
+  }
+}
+
+template <class Acc>
+[[gnu::always_inline]] inline void blend_colours_body(const uint32_t* __restrict c00, const uint32_t* __restrict c10,
+                                                      const uint32_t* __restrict c01, const uint32_t* __restrict c11,
+                                                      const uint32_t* __restrict wx, const uint32_t* __restrict wy,
+                                                      int n, int T, const ChannelLayout& Lref,
+                                                      uint32_t* __restrict out) {
+  const ChannelLayout L = Lref;
+  for (int i = 0; i < n; ++i) out[i] = bilinear_blend_in<Acc>(c00[i], c10[i], c01[i], c11[i], wx[i], wy[i], T, L);
+}
+
+ARP_VECTOR_CLONES
+void blend_colours_32(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
+                      const uint32_t* wx, const uint32_t* wy, int n, int T, const ChannelLayout& L, uint32_t* out) {
+  blend_colours_body<uint32_t>(c00, c10, c01, c11, wx, wy, n, T, L, out);
+}
+
+ARP_VECTOR_CLONES
+void blend_colours_64(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
+                      const uint32_t* wx, const uint32_t* wy, int n, int T, const ChannelLayout& L, uint32_t* out) {
+  blend_colours_body<uint64_t>(c00, c10, c01, c11, wx, wy, n, T, L, out);
+}
+
+template <int K>
+void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                            int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
+  alignas(64) uint32_t wx[kBlock], wy[kBlock], c00[kBlock], c10[kBlock], c01[kBlock], c11[kBlock];
+  const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
+  for (int i0 = 0; i0 < n; i0 += kBlock) {
+    const int m = std::min(kBlock, n - i0);
+    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy,
+                       wx, wy);
+    bilinear_fetch_compose_k<K>(src, tile, w0, dx, dy, m, cp, c00, c10, c01, c11);
+    blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
+  }
+}
+
 ARP_VECTOR_CLONES
 void nearest_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
                          const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
@@ -254,6 +292,18 @@ void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, con
                                  int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
   bilinear_single_impl(src.pool[0], src.offset[0], face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, L, cp,
                        out);
+}
+
+void bilinear_memories_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n, int T,
+                            int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  switch (src.count) {
+    case 0: std::fill(out, out + n, cp.background); break;
+    case 1: bilinear_single_memory_line(src, face, u, v, n, T, S, L, cp, out); break;
+    case 2: bilinear_memories_impl<2>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 3: bilinear_memories_impl<3>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 4: bilinear_memories_impl<4>(src, face, u, v, n, T, S, L, cp, out); break;
+    default: bilinear_memories_impl<0>(src, face, u, v, n, T, S, L, cp, out); break;
+  }
 }
 
 void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,

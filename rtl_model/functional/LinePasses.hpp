@@ -7,7 +7,8 @@
 // Per strip of a line: rotate -> address (face, texel-space u, v) -> then,
 // for an eye whose scene sits in one memory, fused passes (tap addresses,
 // texel loads, composition, blend); for several memories, tap addresses ->
-// fetch and composite per tap -> blend. Scan-out last.
+// fetch and composite (per tap for nearest; the four taps of a pixel at once
+// for bilinear) -> blend. Scan-out last.
 #pragma once
 #include <cstdint>
 
@@ -62,27 +63,23 @@ struct TexelRef {
 // Nearest texel of each pixel.
 void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                        const EyeSources& src, TexelRef out);
-// The four bilinear taps of each pixel (00, 10, 01, 11) and their weights.
-void bilinear_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
-                        int32_t face_size, const EyeSources& src, TexelRef t00, TexelRef t10, TexelRef t01,
-                        TexelRef t11, uint32_t* wx, uint32_t* wy);
-
 // The whole bilinear path for an eye with a single memory, per block of
 // pixels: tap positions (the tiles' aprons put all four taps in one tile),
 // the texel loads, composition and blend. out is the memory-colour code per pixel.
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
                                  const dp::CompositionParams& cp, uint32_t* out);
+// The bilinear path for any number of memories (one: the above): per block,
+// tap positions, per pixel and memory one tile lookup and the four taps,
+// composited per tap, then the blend.
+void bilinear_memories_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                            int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
+                            const dp::CompositionParams& cp, uint32_t* out);
 // The nearest-texel path for an eye with a single memory, fused likewise.
 void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                 int texel_frac, const dp::CompositionParams& cp, uint32_t* out);
 
 // Fetch from every memory of the eye and composite (any src.count).
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const dp::CompositionParams& cp, uint32_t* out);
-
-// Bilinear blend of four composited colours per pixel.
-void blend_line(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
-                const uint32_t* wx, const uint32_t* wy, int n, int texel_frac, const dp::ChannelLayout& L,
-                uint32_t* out);
 
 }  // namespace arp::passes
