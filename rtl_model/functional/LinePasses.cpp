@@ -94,8 +94,9 @@ inline uint64_t texel(const uint64_t* pool, const int32_t* offset, int32_t tile,
 namespace {
 // How many pixels ahead the multi-memory loops ask for their texels: the loads are latency bound (the
 // memories' texels of a strip span several times the caches' reach), and the core alone does not look
-// that far ahead (one thread, four full memories: 63-66 M px/s without, 89-97 with 16, 32 or 64 ahead;
-// 32 the best; bench/FunctionalModelBench, alternating, 2026-11-26).
+// that far ahead (one thread, four full memories: 63-66 M px/s without, 89-97 with 16, 32 or 64 ahead,
+// 32 the best; 115-117 with a strip's first 32 asked for at its start and the memories' pointers held
+// in locals; bench/FunctionalModelBench, alternating, 2026-11-26).
 constexpr int kAhead = 32;
 
 // K is the memory count when small enough to unroll; K == 0: src.count at run time.
@@ -103,11 +104,19 @@ template <int K>
 void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   const int count = K > 0 ? K : src.count;
   uint64_t w[16];
+  const uint64_t* pool[16];
+  const int32_t* offset[16];
+  for (int k = 0; k < count; ++k) {
+    pool[k] = src.pool[k];
+    offset[k] = src.offset[k];
+  }
+  for (int i = 0; i < std::min(n, kAhead); ++i)  // the strip's first texels, all at once
+    for (int k = 0; k < count; ++k) __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][ref.tile[i]]) + ref.word[i]]);
   for (int i = 0; i < n; ++i) {
     if (i + kAhead < n)
       for (int k = 0; k < count; ++k)
-        __builtin_prefetch(&src.pool[k][static_cast<int64_t>(src.offset[k][ref.tile[i + kAhead]]) + ref.word[i + kAhead]]);
-    for (int k = 0; k < count; ++k) w[k] = texel(src.pool[k], src.offset[k], ref.tile[i], ref.word[i]);
+        __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][ref.tile[i + kAhead]]) + ref.word[i + kAhead]]);
+    for (int k = 0; k < count; ++k) w[k] = texel(pool[k], offset[k], ref.tile[i], ref.word[i]);
     out[i] = compose(w, count, cp).color;
   }
 }
@@ -217,15 +226,27 @@ void bilinear_fetch_compose_k(const EyeSources& src, const int32_t* __restrict t
                               uint32_t* __restrict c01, uint32_t* __restrict c11) {
   const int count = K > 0 ? K : src.count;
   uint64_t a[16], b[16], c[16], d[16];
+  const uint64_t* pool[16];
+  const int32_t* offset[16];
+  for (int k = 0; k < count; ++k) {
+    pool[k] = src.pool[k];
+    offset[k] = src.offset[k];
+  }
+  for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once; both rows of a quad
+    for (int k = 0; k < count; ++k) {
+      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
+      __builtin_prefetch(q);
+      __builtin_prefetch(q + dy[i]);
+    }
   for (int i = 0; i < n; ++i) {
     if (i + kAhead < n)
       for (int k = 0; k < count; ++k) {
-        const uint64_t* q = src.pool[k] + static_cast<int64_t>(src.offset[k][tile[i + kAhead]]) + w0[i + kAhead];
+        const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i + kAhead]]) + w0[i + kAhead];
         __builtin_prefetch(q);
         __builtin_prefetch(q + dy[i + kAhead]);
       }
     for (int k = 0; k < count; ++k) {
-      const uint64_t* q = src.pool[k] + static_cast<int64_t>(src.offset[k][tile[i]]) + w0[i];
+      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
       a[k] = q[0];
       b[k] = q[dx[i]];
       c[k] = q[dy[i]];
