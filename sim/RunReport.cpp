@@ -38,6 +38,18 @@ std::string line(const char* fmt, ...) {
 std::string pixel_hash(const HmdFrame& f) { return hash_of(f.pixels); }
 std::string photon_hash(const HmdFrame& f) { return hash_of(f.photon_ps); }
 
+FrameHashes frame_hashes(const HmdFrame& f) {
+  FrameHashes h;
+#pragma omp parallel sections num_threads(2)
+  {
+#pragma omp section
+    h.pixels = pixel_hash(f);
+#pragma omp section
+    h.photons = photon_hash(f);
+  }
+  return h;
+}
+
 std::string frame_csv_header() {
   return "frame,pixels,underflows,late_discarded,reset_pixels,latency_min_ns,latency_median_ns,latency_max_ns,"
          "first_photon_ps,last_photon_ps,pixel_hash,photon_hash\n";

@@ -38,6 +38,12 @@ struct RunSummary {
 // so levels run in different processes can be compared exactly.
 std::string pixel_hash(const HmdFrame& f);
 std::string photon_hash(const HmdFrame& f);
+// Both, computed side by side (each is one chain of dependent multiplies, about a millisecond for a
+// stereo VGA frame; one after the other they held a run's other thread idle).
+struct FrameHashes {
+  std::string pixels, photons;
+};
+FrameHashes frame_hashes(const HmdFrame& f);
 
 std::string frame_csv_header();
 // One frame's row in both forms; `first_sample`/`last_sample`: the samples its latches can take.

@@ -80,8 +80,9 @@ SessionOutcome run_session(RunSpec spec, const std::function<void(double, const 
     if (progress) progress(f, what);
   };
   session.on_frame = [&](const HmdFrame& f, const stage::FrameReport&) {
-    out.pixel_hashes.push_back(pixel_hash(f));
-    out.photon_hashes.push_back(photon_hash(f));
+    FrameHashes h = frame_hashes(f);
+    out.pixel_hashes.push_back(std::move(h.pixels));
+    out.photon_hashes.push_back(std::move(h.photons));
   };
   out.summary = session.run();
   if (!session.spec().out.report.empty()) out.report = parse_strict_json(read_input_file(session.spec().out.report, size_t{1} << 28, "run report"), session.spec().out.report);
