@@ -16,15 +16,12 @@ stage::FrameReport FunctionalFrames::render(int64_t frame) {
   stage::FrameReport fr;
   fr.frame = frame;
   fr.pixels = static_cast<int64_t>(f_.width) * f_.height;
-  // Each pixel's sample, a run of a line at a time (one lookup a line but with the per-pixel latch).
+  // Each pixel's sample, a run of a line at a time (one run a line but with the per-pixel latch).
   for (int e = 0; e < f_.eyes; ++e)
     for (int y = 0; y < f_.height; ++y) {
       latch_segments(model_.latch_rule(), *in_.orientation, frame, e, y, f_.width, segs_);
       const int64_t* photon = &f_.photon_ps[f_.index(e, 0, y)];
-      for (const LatchSegment& sg : segs_) {
-        const int64_t sample_ps = (*in_.orientation)[sg.sample].time_ps;
-        for (int x = sg.x0; x < sg.x1; ++x) lat_.add(photon[x], sample_ps);
-      }
+      for (const LatchSegment& sg : segs_) lat_.add_run(photon + sg.x0, sg.x1 - sg.x0, (*in_.orientation)[sg.sample].time_ps);
     }
   lat_.summarise(fr);
   lat_.reset();

@@ -10,6 +10,7 @@
 
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "rtl_model/stages/FrameReport.hpp"
+#include "rtl_model/stages/LatencyRuns.hpp"
 #include "rtl_model/stages/ScanTiming.hpp"
 #include "rtl_model/stages/StageContext.hpp"
 
@@ -34,7 +35,7 @@ class FunctionalFrames {
   stage::ScanTiming scan_;
   RenderOptions ro_;
   HmdFrame f_;
-  stage::LatencyCollector lat_;
+  stage::LatencyRuns lat_;
   std::vector<LatchSegment> segs_;
 };
 
