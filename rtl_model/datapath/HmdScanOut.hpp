@@ -33,6 +33,13 @@ class HmdScanOut {
                                 int x, int y) {
     return clock.ps(t.pixel_cycle(frame, eye, x, y)) + p.photon_delay_ps;
   }
+  // A whole line, x = 0 .. width - 1: its slots are consecutive clocks (VideoTiming::pixel_cycle is the
+  // line's start plus x), so the start is found once and the cursor steps.
+  static void photon_times_ps(ClockTimeCursor& clock, const VideoTiming& t, const PipelineConfig& p, int64_t frame,
+                              int eye, int y, int width, int64_t* out) {
+    const int64_t c0 = t.pixel_cycle(frame, eye, 0, y);
+    for (int x = 0; x < width; ++x) out[x] = clock.ps(c0 + x) + p.photon_delay_ps;
+  }
 
  private:
   int bits_;

@@ -176,10 +176,8 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
         if (!scan_.identity())
           for (int x = 0; x < n; ++x) dst[x] = scan_.to_display(dst[x]);
       }
-      if (opt.photon_times) {
-        int64_t* ph = &out.photon_ps[out.index(eye, 0, y)];
-        for (int x = 0; x < W; ++x) ph[x] = HmdScanOut::photon_time_ps(clock, timing_, pc, frame, eye, x, y);
-      }
+      if (opt.photon_times)
+        HmdScanOut::photon_times_ps(clock, timing_, pc, frame, eye, y, W, &out.photon_ps[out.index(eye, 0, y)]);
     }
   }
 }
