@@ -66,7 +66,7 @@ void BM_FunctionalFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_FunctionalFrame)
     ->ArgNames({"bilinear", "threads", "memories_filled"})
-    ->ArgsProduct({{0, 1}, {1, 2}, {1, 4}})
+    ->ArgsProduct({{0, 1}, {1, 2}, {1, 2, 4}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(0.5);

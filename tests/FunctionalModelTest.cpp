@@ -57,9 +57,31 @@ OrientationStream fast_turn(const VideoTiming& t, int64_t frame) { return test::
 ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
 void fill(DisplayMemorySet& mem) { test::fill_layered(mem); }
 
-void expect_bit_identical(const ArpConfig& c, const std::string& what) {
-  DisplayMemorySet mem(c.memory, c.timing.eyes);
+// fill() and then every further memory written too, each over its own pattern, with depths that tie
+// across memories: the composition of four memories, and of more than four (a count known only at
+// run time). fill() alone writes at most three.
+void fill_every_memory(DisplayMemorySet& mem) {
   fill(mem);
+  const MemoryFormat& fmt = mem.format();
+  const int S = fmt.face_size;
+  for (int e = 0; e < mem.eyes(); ++e)
+    for (int m = 3; m < mem.count(); ++m) {
+      auto& b = mem.bank(e, m);
+      for (int f = 0; f < 6; ++f)
+        for (int y = 0; y < S; ++y)
+          for (int x = 0; x < S; ++x)
+            if ((x + 2 * y + 3 * m) % (m - 1) != 0)
+              b.write(f, x, y, fmt.pack_rgb8(20 * m, 255 - 30 * f, (x * 255) / S),
+                      fmt.empty_depth() / 3 + static_cast<uint32_t>((x + y + m) % 3) - 1);
+      b.commit();
+      b.vblank();
+    }
+}
+
+void expect_bit_identical(const ArpConfig& c, const std::string& what, bool every_memory = false) {
+  DisplayMemorySet mem(c.memory, c.timing.eyes);
+  if (every_memory) fill_every_memory(mem);
+  else fill(mem);
   const FunctionalModel model(c);
   const OrientationStream o = fast_turn(model.timing(), 1);
   const HmdFrame ref = scalar_reference(c, mem, o, 1);
@@ -146,7 +168,23 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   c.memory.count = 1;
   c.pipeline.aa = AaMode::Off;
   cases["one memory, nearest"] = c;
+  // Two, three (above) and four memories (the defaults): loads, then composition in vectors.
+  c = small(ArpConfig{});
+  c.memory.count = 2;
+  cases["two memories, bilinear"] = c;
+  c.pipeline.aa = AaMode::Off;
+  cases["two memories, nearest"] = c;
+  c.memory.count = 3;
+  cases["three memories, nearest"] = c;
   for (const auto& [name, cfg] : cases) expect_bit_identical(cfg, name);
+  // Every memory holding something: four (the fixed-count passes) and six (the run-time count).
+  for (const int count : {4, 6})
+    for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
+      c = small(ArpConfig{});
+      c.memory.count = count;
+      c.pipeline.aa = aa;
+      expect_bit_identical(c, std::to_string(count) + " memories written, " + (aa == AaMode::Off ? "nearest" : "bilinear"), true);
+    }
 }
 
 namespace {

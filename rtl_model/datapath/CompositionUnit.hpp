@@ -25,6 +25,7 @@ struct Composite {
 inline Composite compose(const uint64_t* words, int n, const CompositionParams& p) {
   uint64_t best = words[0];
   int who = 0;
+#pragma GCC unroll 16  // n known where it is inlined: straight selects, so callers' pixel loops vectorise
   for (int i = 1; i < n; ++i) {
     const bool nearer = texel_depth(words[i]) < texel_depth(best);  // strict: ties keep the lower index
     best = nearer ? words[i] : best;

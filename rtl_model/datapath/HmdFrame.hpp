@@ -18,6 +18,13 @@ struct HmdFrame {
     pixels.assign(static_cast<size_t>(w) * h * e, 0);
     if (photon_times) photon_ps.assign(pixels.size(), 0); else photon_ps.clear();
   }
+  // As resize, for a producer that writes every pixel (and every photon time when asked): the old
+  // values are left for it to overwrite, not cleared first (7 MB a stereo VGA frame).
+  void resize_to_overwrite(int w, int h, int e, bool photon_times) {
+    width = w; height = h; eyes = e;
+    pixels.resize(static_cast<size_t>(w) * h * e);
+    if (photon_times) photon_ps.resize(pixels.size()); else photon_ps.clear();
+  }
   size_t index(int eye, int x, int y) const {
     return (static_cast<size_t>(eye) * height + static_cast<size_t>(y)) * width + static_cast<size_t>(x);
   }

@@ -130,7 +130,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     }
   }
 
-  out.resize(W, H, E, opt.photon_times);
+  out.resize_to_overwrite(W, H, E, opt.photon_times);  // every pixel and photon time is written below
   out.display_bits = scan_.display_bits();
   out.frame_index = frame;
   const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();

@@ -99,6 +99,9 @@ namespace {
 // in locals; bench/FunctionalModelBench, alternating, 2026-11-26).
 constexpr int kAhead = 32;
 
+// Pixels per block of the passes that keep per-pixel arrays (they stay within L1).
+constexpr int kBlock = 128;
+
 // K is the memory count when small enough to unroll; K == 0: src.count at run time.
 template <int K>
 void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
@@ -120,15 +123,72 @@ void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const Compositi
     out[i] = compose(w, count, cp).color;
   }
 }
+
+// Two to four memories: the loads alone in a scalar loop, into per-memory arrays, then the
+// composition in vectors (the count fixed, so it unrolls into selects). Faster than composing in the
+// scalar loop (bilinear, one thread: two memories 104-112 -> 124-137 M px/s, four 71-74 -> 82-86;
+// bench/FunctionalModelBench, alternating, 2026-11-26).
+template <int K>
+void nearest_load_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
+                    uint64_t (*__restrict w)[kBlock]) {
+  const uint64_t* pool[K];
+  const int32_t* offset[K];
+  for (int k = 0; k < K; ++k) {
+    pool[k] = src.pool[k];
+    offset[k] = src.offset[k];
+  }
+  for (int i = 0; i < std::min(n, kAhead); ++i)
+    for (int k = 0; k < K; ++k) __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][tile[i]]) + word[i]]);
+  for (int i = 0; i < n; ++i) {
+    if (i + kAhead < n)
+      for (int k = 0; k < K; ++k)
+        __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][tile[i + kAhead]]) + word[i + kAhead]]);
+    for (int k = 0; k < K; ++k) w[k][i] = texel(pool[k], offset[k], tile[i], word[i]);
+  }
+}
+
+template <int K>
+[[gnu::always_inline]] inline void compose_nearest_body(const uint64_t (*__restrict w)[kBlock], int n,
+                                                        const CompositionParams& cpref, uint32_t* __restrict out) {
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) {
+    uint64_t x[K];
+#pragma GCC unroll 4
+    for (int k = 0; k < K; ++k) x[k] = w[k][i];
+    out[i] = compose(x, K, cp).color;
+  }
+}
+
+#define ARP_COMPOSE_NEAREST(K)                                                                                      \
+  ARP_VECTOR_CLONES void compose_nearest_##K(const uint64_t (*w)[kBlock], int n, const CompositionParams& cp,      \
+                                             uint32_t* out) {                                                      \
+    compose_nearest_body<K>(w, n, cp, out);                                                                        \
+  }
+ARP_COMPOSE_NEAREST(2)
+ARP_COMPOSE_NEAREST(3)
+ARP_COMPOSE_NEAREST(4)
+#undef ARP_COMPOSE_NEAREST
+
+template <int K>
+void nearest_split_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
+  alignas(64) uint64_t w[K][kBlock];
+  for (int i0 = 0; i0 < n; i0 += kBlock) {
+    const int m = std::min(kBlock, n - i0);
+    nearest_load_k<K>(src, ref.tile + i0, ref.word + i0, m, w);
+    if constexpr (K == 2) compose_nearest_2(w, m, cp, out + i0);
+    else if constexpr (K == 3) compose_nearest_3(w, m, cp, out + i0);
+    else compose_nearest_4(w, m, cp, out + i0);
+  }
+}
 }  // namespace
 
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   switch (src.count) {
     case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
     case 1: fetch_compose_k<1>(src, ref, n, cp, out); break;
-    case 2: fetch_compose_k<2>(src, ref, n, cp, out); break;
-    case 3: fetch_compose_k<3>(src, ref, n, cp, out); break;
-    case 4: fetch_compose_k<4>(src, ref, n, cp, out); break;
+    case 2: nearest_split_k<2>(src, ref, n, cp, out); break;
+    case 3: nearest_split_k<3>(src, ref, n, cp, out); break;
+    case 4: nearest_split_k<4>(src, ref, n, cp, out); break;
     default: fetch_compose_k<0>(src, ref, n, cp, out); break;
   }
 }
@@ -139,7 +199,6 @@ namespace {
 // was slower: a gather of eight 64-bit words costs about as much as eight plain loads on Zen 4 and
 // stalls the loop around it, while plain loads overlap (bench/FunctionalModelBench: 117-125 against
 // 139-162 M px/s on one thread, runs alternating, 2026-11-26).
-constexpr int kBlock = 128;
 
 ARP_VECTOR_CLONES
 void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
@@ -259,6 +318,73 @@ void bilinear_fetch_compose_k(const EyeSources& src, const int32_t* __restrict t
   }
 }
 
+// Bilinear over two to four memories likewise: the loads of the four taps into per-memory arrays,
+// then each tap's composition and the blend in vectors.
+template <int K>
+void bilinear_load_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict w0,
+                     const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
+                     uint64_t (*__restrict w)[4][kBlock]) {
+  const uint64_t* pool[K];
+  const int32_t* offset[K];
+  for (int k = 0; k < K; ++k) {
+    pool[k] = src.pool[k];
+    offset[k] = src.offset[k];
+  }
+  for (int i = 0; i < std::min(n, kAhead); ++i)
+    for (int k = 0; k < K; ++k) {
+      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
+      __builtin_prefetch(q);
+      __builtin_prefetch(q + dy[i]);
+    }
+  for (int i = 0; i < n; ++i) {
+    if (i + kAhead < n)
+      for (int k = 0; k < K; ++k) {
+        const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i + kAhead]]) + w0[i + kAhead];
+        __builtin_prefetch(q);
+        __builtin_prefetch(q + dy[i + kAhead]);
+      }
+    for (int k = 0; k < K; ++k) {
+      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
+      w[k][0][i] = q[0];
+      w[k][1][i] = q[dx[i]];
+      w[k][2][i] = q[dy[i]];
+      w[k][3][i] = q[dy[i] + dx[i]];
+    }
+  }
+}
+
+template <int K>
+[[gnu::always_inline]] inline void compose_taps_body(const uint64_t (*__restrict w)[4][kBlock], int n,
+                                                     const CompositionParams& cpref, uint32_t* __restrict c00,
+                                                     uint32_t* __restrict c10, uint32_t* __restrict c01,
+                                                     uint32_t* __restrict c11) {
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) {
+    uint64_t a[K], b[K], c[K], d[K];
+#pragma GCC unroll 4
+    for (int k = 0; k < K; ++k) {
+      a[k] = w[k][0][i];
+      b[k] = w[k][1][i];
+      c[k] = w[k][2][i];
+      d[k] = w[k][3][i];
+    }
+    c00[i] = compose(a, K, cp).color;
+    c10[i] = compose(b, K, cp).color;
+    c01[i] = compose(c, K, cp).color;
+    c11[i] = compose(d, K, cp).color;
+  }
+}
+
+#define ARP_COMPOSE_TAPS(K)                                                                                   \
+  ARP_VECTOR_CLONES void compose_taps_##K(const uint64_t (*w)[4][kBlock], int n, const CompositionParams& cp, \
+                                          uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11) {      \
+    compose_taps_body<K>(w, n, cp, c00, c10, c01, c11);                                                       \
+  }
+ARP_COMPOSE_TAPS(2)
+ARP_COMPOSE_TAPS(3)
+ARP_COMPOSE_TAPS(4)
+#undef ARP_COMPOSE_TAPS
+
 template <class Acc>
 [[gnu::always_inline]] inline void blend_colours_body(const uint32_t* __restrict c00, const uint32_t* __restrict c10,
                                                       const uint32_t* __restrict c01, const uint32_t* __restrict c11,
@@ -286,12 +412,20 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
                             int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
   alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
   alignas(64) uint32_t wx[kBlock], wy[kBlock], c00[kBlock], c10[kBlock], c01[kBlock], c11[kBlock];
+  alignas(64) uint64_t words[K >= 2 && K <= 4 ? K : 1][4][kBlock];
   const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
   for (int i0 = 0; i0 < n; i0 += kBlock) {
     const int m = std::min(kBlock, n - i0);
     bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy,
                        wx, wy);
-    bilinear_fetch_compose_k<K>(src, tile, w0, dx, dy, m, cp, c00, c10, c01, c11);
+    if constexpr (K >= 2 && K <= 4) {
+      bilinear_load_k<K>(src, tile, w0, dx, dy, m, words);
+      if constexpr (K == 2) compose_taps_2(words, m, cp, c00, c10, c01, c11);
+      else if constexpr (K == 3) compose_taps_3(words, m, cp, c00, c10, c01, c11);
+      else compose_taps_4(words, m, cp, c00, c10, c01, c11);
+    } else {
+      bilinear_fetch_compose_k<K>(src, tile, w0, dx, dy, m, cp, c00, c10, c01, c11);
+    }
     blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
   }
 }
