@@ -29,9 +29,23 @@ void LatencyRuns::add_run(const int64_t* photon_ps, int n, int64_t sample_ps) {
   }
 }
 
+namespace {
+// How many of a rising run's values are <= t. A run's photon times rise by about a pixel clock a pixel,
+// so interpolation finds the place to within a pixel or two; the bisection is confined there once the
+// place is confirmed, else it covers the run.
+int64_t at_most(const int64_t* p, int64_t n, int64_t t) {
+  if (t < p[0]) return 0;
+  if (t >= p[n - 1]) return n;  // (also every run whose values are all equal)
+  const int64_t g = (t - p[0]) * (n - 1) / (p[n - 1] - p[0]);
+  const int64_t lo = std::max<int64_t>(0, g - 2), hi = std::min<int64_t>(n, g + 3);
+  if (p[lo] <= t && (hi == n || p[hi] > t)) return std::upper_bound(p + lo, p + hi, t) - p;
+  return std::upper_bound(p, p + n, t) - p;
+}
+}  // namespace
+
 int64_t LatencyRuns::count_at_most(int64_t latency) const {
   int64_t c = 0;
-  for (const Run& r : runs_) c += std::upper_bound(r.photon, r.photon + r.n, r.sample + latency) - r.photon;
+  for (const Run& r : runs_) c += at_most(r.photon, r.n, r.sample + latency);
   return c;
 }
 
