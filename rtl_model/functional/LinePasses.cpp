@@ -102,82 +102,86 @@ constexpr int kAhead = 32;
 // Pixels per block of the passes that keep per-pixel arrays (they stay within L1).
 constexpr int kBlock = 128;
 
-// K is the memory count when small enough to unroll; K == 0: src.count at run time.
+// Several memories: the texel loads alone in a scalar loop, into per-memory arrays, then the
+// composition (and the bilinear blend) in vectors. Faster than composing in the scalar loop (bilinear,
+// one thread: two memories 104-112 -> 124-137 M px/s, four 71-74 -> 82-86; bench/FunctionalModelBench,
+// alternating, 2026-11-26). K: the memory count, fixed up to four so the composition unrolls into
+// selects; K == 0: up to 16, counted at run time, in smaller blocks.
 template <int K>
-void fetch_compose_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
-  const int count = K > 0 ? K : src.count;
-  uint64_t w[16];
-  const uint64_t* pool[16];
-  const int32_t* offset[16];
-  for (int k = 0; k < count; ++k) {
-    pool[k] = src.pool[k];
-    offset[k] = src.offset[k];
-  }
-  for (int i = 0; i < std::min(n, kAhead); ++i)  // the strip's first texels, all at once
-    for (int k = 0; k < count; ++k) __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][ref.tile[i]]) + ref.word[i]]);
-  for (int i = 0; i < n; ++i) {
-    if (i + kAhead < n)
-      for (int k = 0; k < count; ++k)
-        __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][ref.tile[i + kAhead]]) + ref.word[i + kAhead]]);
-    for (int k = 0; k < count; ++k) w[k] = texel(pool[k], offset[k], ref.tile[i], ref.word[i]);
-    out[i] = compose(w, count, cp).color;
-  }
-}
+struct Block {
+  static constexpr int kMemories = K > 0 ? K : 16;
+  static constexpr int kPixels = K > 0 ? kBlock : 32;  // the words of a block stay within L1 either way
+};
 
-// Two to four memories: the loads alone in a scalar loop, into per-memory arrays, then the
-// composition in vectors (the count fixed, so it unrolls into selects). Faster than composing in the
-// scalar loop (bilinear, one thread: two memories 104-112 -> 124-137 M px/s, four 71-74 -> 82-86;
-// bench/FunctionalModelBench, alternating, 2026-11-26).
+// The memories' pools and tile tables as locals: the loops' stores cannot alias them.
 template <int K>
-void nearest_load_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
-                    uint64_t (*__restrict w)[kBlock]) {
-  const uint64_t* pool[K];
-  const int32_t* offset[K];
-  for (int k = 0; k < K; ++k) {
-    pool[k] = src.pool[k];
-    offset[k] = src.offset[k];
+struct Pools {
+  const uint64_t* pool[Block<K>::kMemories];
+  const int32_t* offset[Block<K>::kMemories];
+  int count;
+  explicit Pools(const EyeSources& src) : count(K > 0 ? K : src.count) {
+    for (int k = 0; k < count; ++k) {
+      pool[k] = src.pool[k];
+      offset[k] = src.offset[k];
+    }
   }
-  for (int i = 0; i < std::min(n, kAhead); ++i)
-    for (int k = 0; k < K; ++k) __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][tile[i]]) + word[i]]);
+  const uint64_t* at(int k, int32_t tile, int32_t word) const {
+    return pool[k] + static_cast<int64_t>(offset[k][tile]) + word;
+  }
+};
+
+template <int K>
+void nearest_load(const Pools<K>& p, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
+                  uint64_t (*__restrict w)[Block<K>::kPixels]) {
+  for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once
+    for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i], word[i]));
   for (int i = 0; i < n; ++i) {
     if (i + kAhead < n)
-      for (int k = 0; k < K; ++k)
-        __builtin_prefetch(&pool[k][static_cast<int64_t>(offset[k][tile[i + kAhead]]) + word[i + kAhead]]);
-    for (int k = 0; k < K; ++k) w[k][i] = texel(pool[k], offset[k], tile[i], word[i]);
+      for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i + kAhead], word[i + kAhead]));
+    for (int k = 0; k < p.count; ++k) w[k][i] = *p.at(k, tile[i], word[i]);
   }
 }
 
 template <int K>
-[[gnu::always_inline]] inline void compose_nearest_body(const uint64_t (*__restrict w)[kBlock], int n,
-                                                        const CompositionParams& cpref, uint32_t* __restrict out) {
+[[gnu::always_inline]] inline void compose_nearest_body(const uint64_t (*__restrict w)[Block<K>::kPixels], int count_rt,
+                                                        int n, const CompositionParams& cpref,
+                                                        uint32_t* __restrict out) {
+  const int count = K > 0 ? K : count_rt;  // a constant the loops unroll by
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
-    uint64_t x[K];
+    uint64_t x[Block<K>::kMemories] = {};  // (K == 0: the compiler cannot see count >= 1)
 #pragma GCC unroll 4
-    for (int k = 0; k < K; ++k) x[k] = w[k][i];
-    out[i] = compose(x, K, cp).color;
+    for (int k = 0; k < count; ++k) x[k] = w[k][i];
+    out[i] = compose(x, count, cp).color;
   }
 }
 
-#define ARP_COMPOSE_NEAREST(K)                                                                                      \
-  ARP_VECTOR_CLONES void compose_nearest_##K(const uint64_t (*w)[kBlock], int n, const CompositionParams& cp,      \
-                                             uint32_t* out) {                                                      \
-    compose_nearest_body<K>(w, n, cp, out);                                                                        \
+#define ARP_COMPOSE_NEAREST(K)                                                                                 \
+  ARP_VECTOR_CLONES void compose_nearest_##K(const uint64_t (*w)[Block<K>::kPixels], int count, int n,        \
+                                             const CompositionParams& cp, uint32_t* out) {                    \
+    compose_nearest_body<K>(w, count, n, cp, out);                                                            \
   }
 ARP_COMPOSE_NEAREST(2)
 ARP_COMPOSE_NEAREST(3)
 ARP_COMPOSE_NEAREST(4)
 #undef ARP_COMPOSE_NEAREST
+void compose_nearest_0(const uint64_t (*w)[Block<0>::kPixels], int count, int n, const CompositionParams& cp,
+                       uint32_t* out) {
+  compose_nearest_body<0>(w, count, n, cp, out);
+}
 
 template <int K>
-void nearest_split_k(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
-  alignas(64) uint64_t w[K][kBlock];
-  for (int i0 = 0; i0 < n; i0 += kBlock) {
-    const int m = std::min(kBlock, n - i0);
-    nearest_load_k<K>(src, ref.tile + i0, ref.word + i0, m, w);
-    if constexpr (K == 2) compose_nearest_2(w, m, cp, out + i0);
-    else if constexpr (K == 3) compose_nearest_3(w, m, cp, out + i0);
-    else compose_nearest_4(w, m, cp, out + i0);
+void nearest_memories(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
+  constexpr int B = Block<K>::kPixels;
+  const Pools<K> p(src);
+  alignas(64) uint64_t w[Block<K>::kMemories][B];
+  for (int i0 = 0; i0 < n; i0 += B) {
+    const int m = std::min(B, n - i0);
+    nearest_load<K>(p, ref.tile + i0, ref.word + i0, m, w);
+    if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 3) compose_nearest_3(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 4) compose_nearest_4(w, p.count, m, cp, out + i0);
+    else compose_nearest_0(w, p.count, m, cp, out + i0);
   }
 }
 }  // namespace
@@ -185,11 +189,10 @@ void nearest_split_k(const EyeSources& src, TexelRef ref, int n, const Compositi
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   switch (src.count) {
     case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
-    case 1: fetch_compose_k<1>(src, ref, n, cp, out); break;
-    case 2: nearest_split_k<2>(src, ref, n, cp, out); break;
-    case 3: nearest_split_k<3>(src, ref, n, cp, out); break;
-    case 4: nearest_split_k<4>(src, ref, n, cp, out); break;
-    default: fetch_compose_k<0>(src, ref, n, cp, out); break;
+    case 2: nearest_memories<2>(src, ref, n, cp, out); break;
+    case 3: nearest_memories<3>(src, ref, n, cp, out); break;
+    case 4: nearest_memories<4>(src, ref, n, cp, out); break;
+    default: nearest_memories<0>(src, ref, n, cp, out); break;  // one memory too (its fused pass is faster)
   }
 }
 
@@ -275,76 +278,27 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
   }
 }
 
-// Several memories: per pixel and memory one tile lookup and the four taps (the apron), composited per
-// tap as they arrive -- a scalar loop, its texels asked for kAhead pixels ahead -- then the blend in
-// vectors. K as in fetch_compose_k.
+// Bilinear over several memories likewise: per pixel and memory one tile lookup for the four taps (the
+// apron), their words into per-memory arrays; then each tap's composition and the blend in vectors.
 template <int K>
-void bilinear_fetch_compose_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict w0,
-                              const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
-                              const CompositionParams& cp, uint32_t* __restrict c00, uint32_t* __restrict c10,
-                              uint32_t* __restrict c01, uint32_t* __restrict c11) {
-  const int count = K > 0 ? K : src.count;
-  uint64_t a[16], b[16], c[16], d[16];
-  const uint64_t* pool[16];
-  const int32_t* offset[16];
-  for (int k = 0; k < count; ++k) {
-    pool[k] = src.pool[k];
-    offset[k] = src.offset[k];
-  }
+void bilinear_load(const Pools<K>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
+                   const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
+                   uint64_t (*__restrict w)[4][Block<K>::kPixels]) {
   for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once; both rows of a quad
-    for (int k = 0; k < count; ++k) {
-      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
+    for (int k = 0; k < p.count; ++k) {
+      const uint64_t* q = p.at(k, tile[i], w0[i]);
       __builtin_prefetch(q);
       __builtin_prefetch(q + dy[i]);
     }
   for (int i = 0; i < n; ++i) {
     if (i + kAhead < n)
-      for (int k = 0; k < count; ++k) {
-        const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i + kAhead]]) + w0[i + kAhead];
+      for (int k = 0; k < p.count; ++k) {
+        const uint64_t* q = p.at(k, tile[i + kAhead], w0[i + kAhead]);
         __builtin_prefetch(q);
         __builtin_prefetch(q + dy[i + kAhead]);
       }
-    for (int k = 0; k < count; ++k) {
-      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
-      a[k] = q[0];
-      b[k] = q[dx[i]];
-      c[k] = q[dy[i]];
-      d[k] = q[dy[i] + dx[i]];
-    }
-    c00[i] = compose(a, count, cp).color;
-    c10[i] = compose(b, count, cp).color;
-    c01[i] = compose(c, count, cp).color;
-    c11[i] = compose(d, count, cp).color;
-  }
-}
-
-// Bilinear over two to four memories likewise: the loads of the four taps into per-memory arrays,
-// then each tap's composition and the blend in vectors.
-template <int K>
-void bilinear_load_k(const EyeSources& src, const int32_t* __restrict tile, const int32_t* __restrict w0,
-                     const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
-                     uint64_t (*__restrict w)[4][kBlock]) {
-  const uint64_t* pool[K];
-  const int32_t* offset[K];
-  for (int k = 0; k < K; ++k) {
-    pool[k] = src.pool[k];
-    offset[k] = src.offset[k];
-  }
-  for (int i = 0; i < std::min(n, kAhead); ++i)
-    for (int k = 0; k < K; ++k) {
-      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
-      __builtin_prefetch(q);
-      __builtin_prefetch(q + dy[i]);
-    }
-  for (int i = 0; i < n; ++i) {
-    if (i + kAhead < n)
-      for (int k = 0; k < K; ++k) {
-        const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i + kAhead]]) + w0[i + kAhead];
-        __builtin_prefetch(q);
-        __builtin_prefetch(q + dy[i + kAhead]);
-      }
-    for (int k = 0; k < K; ++k) {
-      const uint64_t* q = pool[k] + static_cast<int64_t>(offset[k][tile[i]]) + w0[i];
+    for (int k = 0; k < p.count; ++k) {
+      const uint64_t* q = p.at(k, tile[i], w0[i]);
       w[k][0][i] = q[0];
       w[k][1][i] = q[dx[i]];
       w[k][2][i] = q[dy[i]];
@@ -354,36 +308,43 @@ void bilinear_load_k(const EyeSources& src, const int32_t* __restrict tile, cons
 }
 
 template <int K>
-[[gnu::always_inline]] inline void compose_taps_body(const uint64_t (*__restrict w)[4][kBlock], int n,
-                                                     const CompositionParams& cpref, uint32_t* __restrict c00,
+[[gnu::always_inline]] inline void compose_taps_body(const uint64_t (*__restrict w)[4][Block<K>::kPixels], int count_rt,
+                                                     int n, const CompositionParams& cpref, uint32_t* __restrict c00,
                                                      uint32_t* __restrict c10, uint32_t* __restrict c01,
                                                      uint32_t* __restrict c11) {
+  const int count = K > 0 ? K : count_rt;
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
-    uint64_t a[K], b[K], c[K], d[K];
+    uint64_t a[Block<K>::kMemories] = {}, b[Block<K>::kMemories] = {}, c[Block<K>::kMemories] = {},
+             d[Block<K>::kMemories] = {};
 #pragma GCC unroll 4
-    for (int k = 0; k < K; ++k) {
+    for (int k = 0; k < count; ++k) {
       a[k] = w[k][0][i];
       b[k] = w[k][1][i];
       c[k] = w[k][2][i];
       d[k] = w[k][3][i];
     }
-    c00[i] = compose(a, K, cp).color;
-    c10[i] = compose(b, K, cp).color;
-    c01[i] = compose(c, K, cp).color;
-    c11[i] = compose(d, K, cp).color;
+    c00[i] = compose(a, count, cp).color;
+    c10[i] = compose(b, count, cp).color;
+    c01[i] = compose(c, count, cp).color;
+    c11[i] = compose(d, count, cp).color;
   }
 }
 
-#define ARP_COMPOSE_TAPS(K)                                                                                   \
-  ARP_VECTOR_CLONES void compose_taps_##K(const uint64_t (*w)[4][kBlock], int n, const CompositionParams& cp, \
-                                          uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11) {      \
-    compose_taps_body<K>(w, n, cp, c00, c10, c01, c11);                                                       \
+#define ARP_COMPOSE_TAPS(K)                                                                                        \
+  ARP_VECTOR_CLONES void compose_taps_##K(const uint64_t (*w)[4][Block<K>::kPixels], int count, int n,            \
+                                          const CompositionParams& cp, uint32_t* c00, uint32_t* c10,             \
+                                          uint32_t* c01, uint32_t* c11) {                                        \
+    compose_taps_body<K>(w, count, n, cp, c00, c10, c01, c11);                                                   \
   }
 ARP_COMPOSE_TAPS(2)
 ARP_COMPOSE_TAPS(3)
 ARP_COMPOSE_TAPS(4)
 #undef ARP_COMPOSE_TAPS
+void compose_taps_0(const uint64_t (*w)[4][Block<0>::kPixels], int count, int n, const CompositionParams& cp,
+                    uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11) {
+  compose_taps_body<0>(w, count, n, cp, c00, c10, c01, c11);
+}
 
 template <class Acc>
 [[gnu::always_inline]] inline void blend_colours_body(const uint32_t* __restrict c00, const uint32_t* __restrict c10,
@@ -410,22 +371,21 @@ void blend_colours_64(const uint32_t* c00, const uint32_t* c10, const uint32_t* 
 template <int K>
 void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                             int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
-  alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
-  alignas(64) uint32_t wx[kBlock], wy[kBlock], c00[kBlock], c10[kBlock], c01[kBlock], c11[kBlock];
-  alignas(64) uint64_t words[K >= 2 && K <= 4 ? K : 1][4][kBlock];
+  constexpr int B = Block<K>::kPixels;
+  const Pools<K> p(src);
+  alignas(64) int32_t tile[B], w0[B], dx[B], dy[B];
+  alignas(64) uint32_t wx[B], wy[B], c00[B], c10[B], c01[B], c11[B];
+  alignas(64) uint64_t words[Block<K>::kMemories][4][B];
   const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
-  for (int i0 = 0; i0 < n; i0 += kBlock) {
-    const int m = std::min(kBlock, n - i0);
+  for (int i0 = 0; i0 < n; i0 += B) {
+    const int m = std::min(B, n - i0);
     bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy,
                        wx, wy);
-    if constexpr (K >= 2 && K <= 4) {
-      bilinear_load_k<K>(src, tile, w0, dx, dy, m, words);
-      if constexpr (K == 2) compose_taps_2(words, m, cp, c00, c10, c01, c11);
-      else if constexpr (K == 3) compose_taps_3(words, m, cp, c00, c10, c01, c11);
-      else compose_taps_4(words, m, cp, c00, c10, c01, c11);
-    } else {
-      bilinear_fetch_compose_k<K>(src, tile, w0, dx, dy, m, cp, c00, c10, c01, c11);
-    }
+    bilinear_load<K>(p, tile, w0, dx, dy, m, words);
+    if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, c00, c10, c01, c11);
+    else compose_taps_0(words, p.count, m, cp, c00, c10, c01, c11);
     blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
   }
 }
