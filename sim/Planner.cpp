@@ -125,7 +125,9 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
 // set-up and its triangles once for every face its bound reaches, by the renderers' culling test
 // (host::sphere_meets_face, as host::cull_to_faces sends them) with the bound shrunk by half the distance
 // between the eyes -- what the shrunk sphere meets from the walk's point, the whole one meets from either
-// eye -- and one face at least. The fill is not counted. (See LadderLoad::engine_busy.)
+// eye -- and one face at least. The fill is not counted. (See LadderLoad::engine_busy.) The eyes are the
+// default distance apart (`plan` has no --ipd, as for the faces below): a run with wider eyes can send an
+// object to a face this count leaves out.
 std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
                                    const dp::HostEngineConfig& engine, int eyes) {
   const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
@@ -445,10 +447,12 @@ Plan make_plan(const PlanRequest& r) {
   p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
                        "it carries the planned ladder: busy at least " + fmt("%.3g", p.planned.engine_busy) +
-                           " s of each second (every object drawn for each eye at each update of its memory, its triangles "
-                           "sent to one face at least, its set-up; ladders it could not carry were not considered)"});
-  p.not_decided.push_back("whether the rendering engine also carries the fill and the triangles sent to more than one face: "
-                          "its check above counts neither (a run's report has the engine's modelled time)");
+                           " s of each second (every object drawn for each eye at each update of its memory, its set-up "
+                           "and its triangles sent to every face its bound reaches from both eyes, the default " +
+                           fmt("%.0f", 1000 * MemoryContents{}.ipd_m) +
+                           " mm apart; ladders it could not carry were not considered)"});
+  p.not_decided.push_back("whether the rendering engine also carries the fill: the check above does not count it (a run's "
+                          "report has the engine's modelled time)");
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(r.base);
   config::check(p.config, "the plan");

@@ -48,9 +48,9 @@ std::string line(const char* fmt, ...) {
 std::string pixel_hash(const HmdFrame& f) { return hash_of(f.pixels); }
 std::string photon_hash(const HmdFrame& f) { return hash_of(f.photon_ps); }
 
-FrameHashes frame_hashes(const HmdFrame& f) {
+FrameHashes frame_hashes(const HmdFrame& f, int threads) {
   FrameHashes h;
-#pragma omp parallel sections num_threads(2)
+#pragma omp parallel sections num_threads(threads == 1 ? 1 : 2)
   {
 #pragma omp section
     h.pixels = pixel_hash(f);

@@ -38,12 +38,11 @@ struct RunSummary {
 // so levels run in different processes can be compared exactly.
 std::string pixel_hash(const HmdFrame& f);
 std::string photon_hash(const HmdFrame& f);
-// Both, computed side by side (each is one chain of dependent multiplies, about a millisecond for a
-// stereo VGA frame; one after the other they held a run's other thread idle).
+// Both, side by side on two threads unless `threads` is 1 (as --threads: 0 is every core).
 struct FrameHashes {
   std::string pixels, photons;
 };
-FrameHashes frame_hashes(const HmdFrame& f);
+FrameHashes frame_hashes(const HmdFrame& f, int threads);
 
 std::string frame_csv_header();
 // One frame's row in both forms; `first_sample`/`last_sample`: the samples its latches can take.

@@ -609,7 +609,7 @@ std::vector<stage::StallWindow> Session::stall_windows() const {
 void Session::on_scanned_out(const HmdFrame& f, const stage::FrameReport& r) {
   const OutputSpec& o = spec_.out;
   memory_peak_bytes_ = std::max(memory_peak_bytes_, memories_.bytes_allocated());
-  const FrameHashes hashes = frame_hashes(f);
+  const FrameHashes hashes = frame_hashes(f, spec_.threads);
   const std::string& ph = hashes.pixels;
   const std::string& th = hashes.photons;
   const int64_t k = r.frame - spec_.first_frame;

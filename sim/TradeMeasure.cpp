@@ -79,8 +79,9 @@ SessionOutcome run_session(RunSpec spec, const std::function<void(double, const 
   session.on_progress = [&](double f, const std::string& what) {
     if (progress) progress(f, what);
   };
+  const int threads = session.spec().threads;
   session.on_frame = [&](const HmdFrame& f, const stage::FrameReport&) {
-    FrameHashes h = frame_hashes(f);
+    FrameHashes h = frame_hashes(f, threads);
     out.pixel_hashes.push_back(std::move(h.pixels));
     out.photon_hashes.push_back(std::move(h.photons));
   };

@@ -137,8 +137,8 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
 #pragma omp parallel num_threads(threads)
   {
-    // Per-thread buffers for one chunk of a line: small enough (with the passes own blocks, under 16 KiB)
-    // that every pass works out of L1.
+    // Per-thread buffers for one chunk of a line (4 KiB): with the passes' own blocks (at most about
+    // 21 KiB, four memories bilinear) every pass works out of a 32 KiB L1.
     constexpr int C = 128;
     const size_t w = C;
     std::vector<LatchSegment> segs;

@@ -94,9 +94,10 @@ inline uint64_t texel(const uint64_t* pool, const int32_t* offset, int32_t tile,
 namespace {
 // How many pixels ahead the multi-memory loops ask for their texels: the loads are latency bound (the
 // memories' texels of a strip span several times the caches' reach), and the core alone does not look
-// that far ahead (one thread, four full memories: 63-66 M px/s without, 89-97 with 16, 32 or 64 ahead,
-// 32 the best; 115-117 with a strip's first 32 asked for at its start and the memories' pointers held
-// in locals; bench/FunctionalModelBench, alternating, 2026-11-26).
+// that far ahead (nearest, one thread, four full memories, composed in the loop as it then was: 63-66
+// M px/s without, 89-97 with 16, 32 or 64 ahead, 32 the best; 115-117 with a block's first 32 asked for
+// at its start and the memories' pointers held in locals; arp_bench_functional, runs alternating,
+// 2026-11-26).
 constexpr int kAhead = 32;
 
 // Pixels per block of the passes that keep per-pixel arrays (they stay within L1).
