@@ -1,11 +1,17 @@
 // Renders N default stereo frames with the functional model and nothing else,
 // for counting cycles with perf (bench/cycles-per-pixel.sh): on a shared
 // machine whose clock and neighbours vary, cycles per pixel are steadier
-// than wall-clock rates. Usage: arp_frame_loop BILINEAR(0|1) THREADS MEMORIES_FILLED FRAMES
+// than wall-clock rates. Where perf has no cycle counter, the loop's wall time
+// and the core's clock measured just before and after it (bench/CoreClock.hpp)
+// give the cycles instead; both are printed.
+// Usage: arp_frame_loop BILINEAR(0|1) THREADS MEMORIES_FILLED FRAMES
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include "CoreClock.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
@@ -36,7 +42,16 @@ int main(int argc, char** argv) {
   HmdFrame f;
   RenderOptions ro;
   ro.threads = threads;
+  const auto before = bench::measure_core_clock();
+  const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) model.render(mem, o, 0, f, ro);
-  std::printf("%d frames of %zu pixels\n", frames, f.pixels.size());
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto after = bench::measure_core_clock();
+  std::printf("%d frames of %zu pixels in %.6f s\n", frames, f.pixels.size(), secs);
+  std::printf("core clock before: %s; after: %s\n", bench::describe(before).c_str(), bench::describe(after).c_str());
+  // The faster of the two clocks: the larger cycle count, an upper bound (bench/CoreClock.hpp).
+  if (frames > 0 && before && after && before->consistent() && after->consistent())
+    std::printf("cycles per pixel, %d thread(s) together, from the clock: %.2f\n", threads,
+                secs * threads * std::max(before->hz(), after->hz()) / (static_cast<double>(frames) * f.pixels.size()));
   return 0;
 }

@@ -15,7 +15,9 @@
 //
 // Each row also says how far the two agree (the same visible object per texel;
 // the same display colour per pixel), and the per-pixel rows their share of
-// the STREAM copy bound measured in the same run.
+// the STREAM copy bound measured in the same run; the one-thread rows also
+// arpsim's cycles per pixel at the core's clock measured in the same run
+// (bench/CoreClock.hpp: this VM has no cycle counter).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "BenchInputs.hpp"
+#include "CoreClock.hpp"
 #include "GlPerPixel.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/ProgressLine.hpp"
@@ -154,6 +157,8 @@ int main(int argc, char** argv) {
       }
     };
     Best stream[3], arp_cube[3], arp_faces[3];  // by arpsim threads
+    Best core_hz;  // the fastest the clock was seen: cycles from it are an upper bound
+    bool clock_consistent = true;
     std::map<int, Best> gl_cube, gl_faces;       // by LP_NUM_THREADS
     std::map<PerPixelKey, Best> arp_px, gl_px8, gl_px16;
     std::map<PerPixelKey, double> agree_px;      // GL RGBA16 against arpsim
@@ -175,6 +180,12 @@ int main(int argc, char** argv) {
         int64_t bytes = 0;
         const double calls = rate([&] { bytes = bench::stream_copy(sa, sb, th); }, min_s);
         stream[th].add(calls * static_cast<double>(bytes));
+      }
+      if (const auto c = bench::measure_core_clock()) {
+        core_hz.add(c->hz());
+        clock_consistent = clock_consistent && c->consistent();
+      } else {
+        clock_consistent = false;
       }
       host::RenderStats st;
       for (int th : {1, 2}) {
@@ -239,8 +250,16 @@ int main(int argc, char** argv) {
        << renderer << ". Best of " << reps << " interleaved repetitions of at least " << min_s << " s each.\n"
        << "STREAM copy: " << stream[1].value * 1e-9 << " GB/s on 1 thread, " << stream[2].value * 1e-9
        << " GB/s on 2; the per-pixel bound at " << bench::kCompulsoryBytesPerPixel << " B/pixel: " << bound * 1e-6
-       << " M pixels/s.\n\n";
-    csv << "work,lp_num_threads_or_threads,arpsim,llvmpipe_rgba8,llvmpipe_rgba16,unit,agreement,arpsim_of_stream_bound\n";
+       << " M pixels/s.\n";
+    const bool cycles = clock_consistent && core_hz.value > 0;
+    if (cycles)
+      md << "Core clock (chains of dependent adds and multiplies, the fastest of the repetitions): "
+         << core_hz.value * 1e-9 << " GHz.\n";
+    else
+      md << "Core clock: not measured or its two chains disagreed; no cycle figures.\n";
+    md << "\n";
+    csv << "work,lp_num_threads_or_threads,arpsim,llvmpipe_rgba8,llvmpipe_rgba16,unit,agreement,arpsim_of_stream_bound,"
+           "arpsim_cycles_per_pixel\n";
     md << "| work | threads | arpsim | llvmpipe | arpsim / llvmpipe | llvmpipe, 64-bit texel | arpsim / it | agreement | "
           "arpsim of STREAM bound |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     // One core: arpsim on 1 thread, llvmpipe with no rasteriser thread; two cores: arpsim on 2, llvmpipe with
@@ -259,7 +278,7 @@ int main(int argc, char** argv) {
                       into_memory ? "into the display memory" : "into face images, no memory write", lp_label[th], a, g,
                       a / g, into_memory && th == 0 ? (std::to_string(100.0 * agree_cube).substr(0, 5) + " % same object").c_str() : "");
         md << line;
-        std::snprintf(line, sizeof line, "gallery_cube_%s,%d,%.4g,%.4g,,cubes/s,%s,\n", into_memory ? "memory" : "faces",
+        std::snprintf(line, sizeof line, "gallery_cube_%s,%d,%.4g,%.4g,,cubes/s,%s,,\n", into_memory ? "memory" : "faces",
                       th, a, g, into_memory && th == 0 ? std::to_string(agree_cube).c_str() : "");
         csv << line;
       }
@@ -269,16 +288,20 @@ int main(int argc, char** argv) {
           if (!pixel) continue;
           const PerPixelKey k{bilinear, filled, th};
           const double a = arp_px[k].value, g8 = gl_px8[k].value, g16 = gl_px16[k].value;
+          const double cyc = cycles && th == 1 ? core_hz.value / a : 0;  // one thread: its cycles alone
+          char cyc_md[48] = "";
+          if (cyc > 0) std::snprintf(cyc_md, sizeof cyc_md, " (%.1f cycles/px)", cyc);
           std::snprintf(line, sizeof line,
-                        "| per-pixel, %s, %s | %d (LP_NUM_THREADS=%d) | %.0f M px/s | %.0f M | **%.2f** | %.0f M | %.2f | %.1f %% same colour%s | "
+                        "| per-pixel, %s, %s | %d (LP_NUM_THREADS=%d) | %.0f M px/s%s | %.0f M | **%.2f** | %.0f M | %.2f | %.1f %% same colour%s | "
                         "%.0f %% |\n",
                         bilinear ? "bilinear" : "nearest", filled == 1 ? "1 memory" : "4 memories full", th,
-                        th == 1 ? 0 : 2, a * 1e-6,
+                        th == 1 ? 0 : 2, a * 1e-6, cyc_md,
                         g8 * 1e-6, a / g8, g16 * 1e-6, a / g16, 100.0 * agree_px[k], bilinear ? " (within 2)" : "",
                         100.0 * a / bound);
           md << line;
-          std::snprintf(line, sizeof line, "per_pixel_%s_%dmem,%d,%.4g,%.4g,%.4g,pixels/s,%.4f,%.4f\n",
-                        bilinear ? "bilinear" : "nearest", filled, th, a, g8, g16, agree_px[k], a / bound);
+          std::snprintf(line, sizeof line, "per_pixel_%s_%dmem,%d,%.4g,%.4g,%.4g,pixels/s,%.4f,%.4f,%s\n",
+                        bilinear ? "bilinear" : "nearest", filled, th, a, g8, g16, agree_px[k], a / bound,
+                        cyc > 0 ? std::to_string(cyc).c_str() : "");
           csv << line;
         }
     std::fputs(md.str().c_str(), stdout);

@@ -6,7 +6,10 @@
 # excluded), best of RUNS tries -- on a shared machine a neighbour only ever
 # slows a run down. With VCD on, the whole run is traced: every signal
 # (--vcd-signals all), or the control signals only (control).
-# Also checks that every level produced the same frames and photon times.
+# Also checks that every level produced the same frames and photon times, and
+# gives each level's host cycles per simulated pixel clock: the core's clock
+# (bench/CoreClock.hpp, measured before and after the level's runs, the faster
+# kept: an upper bound on the cycles) over the rate. Needs arp_core_clock.
 # The verilated level needs a build with Verilator (scripts/setup.sh).
 # Usage: bench/timed-speed.sh [CSV]   (env: FRAMES, VCD_FRAMES, RUNS, ARPSIM)
 set -euo pipefail
@@ -30,16 +33,22 @@ speed() {  # level frames extra-args... -> best pixel clocks/s; leaves the repor
   echo "$best"
 }
 fingerprint() { grep -o '"p[a-z]*_hash": *"[0-9a-f]*"' "$tmp/last.json" | tr '\n' ' '; }
-echo "level,vcd,frames,pixel_clocks_per_s" > "$tmp/out.csv"
-printf "%-11s %-8s %-7s %s\n" level vcd frames "M pixel clocks/s"
+CLOCK=${CLOCK:-$(dirname "$ARPSIM")/../../bench/arp_core_clock}
+hz() { "$CLOCK" --hz; }
+echo "level,vcd,frames,pixel_clocks_per_s,core_hz,host_cycles_per_pixel_clock" > "$tmp/out.csv"
+printf "%-11s %-8s %-7s %-17s %s\n" level vcd frames "M pixel clocks/s" "host cycles / pixel clock"
 ref=""
 for level in functional lt cycle detailed verilated; do
+  h0=$(hz)
   s=$(speed "$level" "$FRAMES")
+  h=$(awk -v a="$h0" -v b="$(hz)" 'BEGIN { print (a > b ? a : b) }')
+  cyc=$(awk -v h="$h" -v s="$s" 'BEGIN { printf "%.0f", h / s }')
   fp=$(fingerprint)
   [ -z "$ref" ] && ref=$fp
   same=$([ "$fp" = "$ref" ] && echo "frames and photon times identical to functional" || echo "DIFFERENT FROM FUNCTIONAL")
-  printf "%-11s %-8s %-7s %8.2f   %s\n" "$level" off "$FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" "$same"
-  echo "$level,off,$FRAMES,$s" >> "$tmp/out.csv"
+  printf "%-11s %-8s %-7s %8.2f          %6s at %.2f GHz   %s\n" "$level" off "$FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" \
+    "$cyc" "$(awk -v h="$h" 'BEGIN { print h / 1e9 }')" "$same"
+  echo "$level,off,$FRAMES,$s,$h,$cyc" >> "$tmp/out.csv"
   [ "$fp" = "$ref" ] || exit 1
 done
 for level in lt cycle detailed; do
@@ -48,7 +57,7 @@ for level in lt cycle detailed; do
     s=$(speed "$level" "$VCD_FRAMES" --vcd "$tmp/w.vcd" --vcd-signals "$signals")
     printf "%-11s %-8s %-7s %8.2f   (VCD %s MB)\n" "$level" "$signals" "$VCD_FRAMES" "$(awk -v s="$s" 'BEGIN { print s / 1e6 }')" \
       "$(( $(stat -c %s "$tmp/w.vcd") / 1000000 ))"
-    echo "$level,$signals,$VCD_FRAMES,$s" >> "$tmp/out.csv"
+    echo "$level,$signals,$VCD_FRAMES,$s,," >> "$tmp/out.csv"
   done
 done
 [ -n "$CSV" ] && cp "$tmp/out.csv" "$CSV" && echo "written $CSV"
