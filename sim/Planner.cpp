@@ -11,6 +11,7 @@
 #include "common/InputError.hpp"
 #include "common/Units.hpp"
 #include "host/priority/PriorityScheduler.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
 #include "host/render/DepthCode.hpp"
 #include "host/render/FaceFrustum.hpp"
 #include "host/scene/Gallery.hpp"
@@ -24,6 +25,7 @@ namespace arp::sim {
 namespace {
 
 constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spread over it)
+constexpr int kFillPoints = 16;    // of them, where the fill is measured by rendering the scene
 
 std::string fmt(const char* f, double v) {
   char b[64];
@@ -121,15 +123,49 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   return m;
 }
 
-// Engine seconds per update of each object at each sample (k * objects + i), at least: for each eye its
-// set-up and its triangles once for every face its bound reaches, by the renderers' culling test
-// (host::sphere_meets_face, as host::cull_to_faces sends them) with the bound shrunk by half the distance
-// between the eyes -- what the shrunk sphere meets from the walk's point, the whole one meets from either
-// eye -- and one face at least. The fill is not counted. (See LadderLoad::engine_busy.) The eyes are the
-// default distance apart (`plan` has no --ipd, as for the faces below): a run with wider eyes can send an
-// object to a face this count leaves out.
+// Texels each object fills (passing the depth test) per update at each sample (k * objects + i), for one
+// eye: the whole scene rendered from the walk's point at face size S, by the run's own renderer, at
+// kFillPoints samples evenly spread over the motion; every other sample takes the nearest's figures.
+// Within one render an object's fill is at most what it fills in a memory holding only some of the objects
+// (fewer occluders drawn before it: host::CubeFaceRenderer draws in scene order), so for any ladder each
+// measured figure is a lower bound; the samples between are not rendered.
+struct FillSamples {
+  std::vector<double> texels;  // k * objects + i
+  int points = 0;              // samples rendered
+};
+FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, int S,
+                         const std::function<void(double)>& progress) {
+  const size_t n = scene.objects.size(), samples = ms.t.size();
+  FillSamples out;
+  out.texels.assign(samples * n, 0.0);
+  if (n == 0 || samples == 0) return out;
+  const size_t points = std::min<size_t>(samples, kFillPoints);
+  host::CubeFaceRenderer renderer;
+  renderer.set_fill_by_object(true);
+  std::vector<host::FaceImage> faces;
+  std::vector<std::vector<int64_t>> at(points);
+  for (size_t j = 0; j < points; ++j) {
+    const size_t k = points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
+    at[j] = renderer.render_faces(scene, {}, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
+    progress(static_cast<double>(j + 1) / static_cast<double>(points));
+  }
+  for (size_t k = 0; k < samples; ++k) {
+    const size_t j = samples == 1 ? 0 : (k * (points - 1) + (samples - 1) / 2) / (samples - 1);  // the nearest rendered
+    for (size_t i = 0; i < n; ++i) out.texels[k * n + i] = static_cast<double>(at[j][i]);
+  }
+  out.points = static_cast<int>(points);
+  return out;
+}
+
+// Engine seconds per update of each object at each sample (k * objects + i): for each eye its set-up, its
+// triangles once for every face its bound reaches, by the renderers' culling test (host::sphere_meets_face,
+// as host::cull_to_faces sends them) with the bound shrunk by half the distance between the eyes -- what
+// the shrunk sphere meets from the walk's point, the whole one meets from either eye -- and one face at
+// least, and its fill (measure_fill, the walk's point standing in for each eye). (See
+// LadderLoad::engine_busy.) The eyes are the default distance apart (`plan` has no --ipd, as for the faces
+// below): a run with wider eyes can send an object to a face this count leaves out.
 std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
-                                   const dp::HostEngineConfig& engine, int eyes) {
+                                   const dp::HostEngineConfig& engine, int eyes, const FillSamples& fill) {
   const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
   const size_t n = scene.objects.size();
   std::vector<double> out(ms.t.size() * n);
@@ -141,7 +177,8 @@ std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPat
       int faces = 0;
       for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
       out[k * n + i] = eyes * (engine.object_setup_s +
-                               static_cast<double>(o.mesh->triangles()) * std::max(faces, 1) / engine.triangles_per_s);
+                               static_cast<double>(o.mesh->triangles()) * std::max(faces, 1) / engine.triangles_per_s +
+                               fill.texels[k * n + i] / engine.texels_per_s);
     }
   }
   return out;
@@ -150,7 +187,7 @@ std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPat
 // A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
 LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
                        double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s,
-                       const std::vector<double>& engine_s) {
+                       const std::vector<double>& engine_s, const FillSamples& fill, int eyes) {
   LadderLoad L;
   L.count = count;
   L.update_frames = first;
@@ -172,12 +209,14 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
       L.objects[static_cast<size_t>(m)] += 1.0;
       L.triangles_per_s += static_cast<double>(scene.objects[i].mesh->triangles()) * hz / static_cast<double>(sched.frames_per_update(m));
       L.engine_busy += engine_s[k * n + i] * hz / static_cast<double>(sched.frames_per_update(m));
+      L.texels_per_s += fill.texels[k * n + i] * eyes * hz / static_cast<double>(sched.frames_per_update(m));
       late += sched.period_s(m) > validity_s[k * n + i] ? 1 : 0;
     }
   }
   const double samples = static_cast<double>(ms.t.size());
   L.triangles_per_s /= samples;
   L.engine_busy /= samples;
+  L.texels_per_s /= samples;
   for (double& o : L.objects) o /= samples;
   L.late_share = n ? static_cast<double>(late) / (samples * static_cast<double>(n)) : 0.0;
   return L;
@@ -326,9 +365,11 @@ Plan make_plan(const PlanRequest& r) {
   std::vector<LadderLoad> candidates;
   const dp::HostEngineConfig& engine = p.config.host;
   const int eyes = p.config.timing.eyes;
-  const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes);
+  const FillSamples fill = measure_fill(scene, walk, ms, S, [&](double f) { progress(0.96 + 0.03 * f, "measuring the fill"); });
+  p.fill_points = fill.points;
+  const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, fill);
   if (n == 0) {
-    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine_s));
+    candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine_s, fill, eyes));
   } else {
     for (int count = 1; count <= dp::kCompositionInputs; ++count)
       for (const int ratio : {2, 3, 4}) {
@@ -338,11 +379,11 @@ Plan make_plan(const PlanRequest& r) {
         t.memory.update_ratio = ratio;
         if (!dp::validate(t).empty()) continue;  // the slowest period beyond the key's range
         if (count > 1 && static_cast<double>(dp::update_period_frames(first, ratio, count - 1)) > cap) break;  // beyond the motion
-        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s, engine_s));
+        candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, count, first, ratio, validity_s, engine_s, fill, eyes));
         if (count == 1) break;  // the ratio does not matter with one memory
       }
   }
-  // Only the ladders the engine can carry (at least: engine_busy <= 1). None: an error naming the least it
+  // Only the ladders the engine can carry (engine_busy <= 1). None: an error naming the least it
   // would be busy at this theta_t and at any theta_t (every object in one memory updated once every `cap`
   // frames, the slowest a ladder goes).
   const auto least_busy = *std::min_element(candidates.begin(), candidates.end(),
@@ -352,10 +393,10 @@ Plan make_plan(const PlanRequest& r) {
     for (const double e : engine_s) floor_busy += e * hz / cap / static_cast<double>(ms.t.size());
     throw InputError(
         r.base_source, "host.triangles_per_s",
-        "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.object_setup_s) +
-            " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
+        "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.texels_per_s) +
+            " texels/s, " + fmt("%.3g", engine.object_setup_s) + " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
             fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg: every ladder keeps it busy more than the whole of each second -- the least " +
-            fmt("%.3g", least_busy.engine_busy) + " s a second (" + ladder_text(least_busy) + "; fill not counted)" +
+            fmt("%.3g", least_busy.engine_busy) + " s a second (" + ladder_text(least_busy) + ")" +
             (floor_busy > 1 ? "; no theta_t helps: even rendered once every " + fmt("%.0f", cap) + " frames it needs " + fmt("%.3g", floor_busy) +
                                   " s a second"
                             : "; a larger --threshold-deg lowers it (at the slowest, once every " + fmt("%.0f", cap) + " frames: " +
@@ -380,7 +421,7 @@ Plan make_plan(const PlanRequest& r) {
             host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
-                                       r.base.memory.update_ratio, base_validity, engine_s);
+                                       r.base.memory.update_ratio, base_validity, engine_s, fill, eyes);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -444,15 +485,27 @@ Plan make_plan(const PlanRequest& r) {
                                    "loses those texels and says so"});
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
-  p.not_decided.push_back("the region size (--regions), the host clock, the write port's bandwidth and the FIFO depths");
+  // 5. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
+  // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
+  // port -- so at any host load each inter-stage FIFO holds one token and the scan-out FIFO the issue slack
+  // plus one (a run's report: fifos[].max_occupancy).
+  p.config.timed.fifo_depth = p.config.timed.issue_slack_cycles + 2;
+  p.choices.push_back({"timed.fifo_depth", std::to_string(p.config.timed.fifo_depth),
+                       "the smallest allowed (timed.issue_slack_cycles + 2): the host writes the display memories through "
+                       "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
+                       "each inter-stage FIFO holds one token and the scan-out FIFO the issue slack and one (a cycle-level "
+                       "run's report: fifos[].max_occupancy)"});
+  p.not_decided.push_back("the region size (--regions), and the host clock and the write port's bandwidth (timed.host_*): "
+                          "a run renders through the modelled engine (host.*), which the check above sizes, and uses the "
+                          "write port only for host write jobs");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
-                       "it carries the planned ladder: busy at least " + fmt("%.3g", p.planned.engine_busy) +
-                           " s of each second (every object drawn for each eye at each update of its memory, its set-up "
-                           "and its triangles sent to every face its bound reaches from both eyes, the default " +
-                           fmt("%.0f", 1000 * MemoryContents{}.ipd_m) +
-                           " mm apart; ladders it could not carry were not considered)"});
-  p.not_decided.push_back("whether the rendering engine also carries the fill: the check above does not count it (a run's "
-                          "report has the engine's modelled time)");
+                       "it carries the planned ladder: busy " + fmt("%.3g", p.planned.engine_busy) +
+                           " s of each second (every object drawn for each eye at each update of its memory: its set-up, "
+                           "its triangles sent to every face its bound reaches from both eyes, the default " +
+                           fmt("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
+                           fmt("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + fmt("%.3g", engine.texels_per_s) +
+                           ", measured by rendering the scene at " + std::to_string(fill.points) +
+                           " points of the motion, each other point taking the nearest's; ladders it could not carry were not considered)"});
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(r.base);
   config::check(p.config, "the plan");
@@ -477,6 +530,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
          ") | " + fmt("%.4f", p.texel_error_planned) + " (bound " + fmt("%.4f", p.texel_error_bound) + ") |\n";
   s += "| display memories | " + ladder_text(p.base_ladder) + " | " + ladder_text(p.planned) + " |\n";
   s += "| host load, triangles/s | " + fmt("%.4g", p.base_ladder.triangles_per_s) + " | " + fmt("%.4g", p.planned.triangles_per_s) + " |\n";
+  s += "| host fill, texels/s | " + fmt("%.4g", p.base_ladder.texels_per_s) + " | " + fmt("%.4g", p.planned.texels_per_s) + " |\n";
+  s += "| rendering engine busy, s a second | " + fmt("%.3g", p.base_ladder.engine_busy) + " | " + fmt("%.3g", p.planned.engine_busy) + " |\n";
   s += "| object-samples updated slower than they need | " + fmt("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
        fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
   s += "| display memory (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
@@ -485,15 +540,15 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
        "(host::PriorityScheduler), hardware display memory at the planned face size.\n\n"
-       "| memories | update periods, frames | triangles/s | updated slower than needed | display memory, MiB |\n"
-       "| --- | --- | --- | --- | --- |\n";
+       "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | display memory, MiB |\n"
+       "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const LadderLoad& L : p.ladders) {
     dp::ArpConfig c = p.config;
     c.memory.count = L.count;
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
-         fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(display_memory_bytes(c)) / 1048576.0) +
+         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(display_memory_bytes(c)) / 1048576.0) +
          (L.count == p.planned.count && L.update_ratio == p.planned.update_ratio ? " (planned)" : "") + " |\n";
   }
   s += "\n## Not decided by this plan\n\n";

@@ -49,10 +49,11 @@ struct PlanChoice {
 struct LadderLoad {
   int count = 1, update_frames = 1, update_ratio = 2;
   double triangles_per_s = 0;     // host rendering load, mean over the motion
-  // The share of each second the rendering engine (host.*) is at least busy, mean over the motion: every
-  // object drawn for each eye at each update of its memory, its set-up and its triangles sent to every face
-  // its bound reaches from both eyes (one at least); the fill is not counted (a lower bound: above 1, the
-  // engine cannot carry the ladder).
+  double texels_per_s = 0;        // texels the host fills (passing the depth test), both eyes, mean over the motion
+  // The share of each second the rendering engine (host.*) is busy, mean over the motion: every object drawn
+  // for each eye at each update of its memory, its set-up, its triangles sent to every face its bound
+  // reaches from both eyes (one at least), and its fill as measured at the nearest point rendered (above 1,
+  // the engine cannot carry the ladder).
   double engine_busy = 0;
   double late_share = 0;          // object-samples whose memory updates slower than their validity needs
   std::vector<double> objects;    // mean objects in each memory
@@ -67,6 +68,7 @@ struct Plan {
   size_t objects = 0, triangles = 0;
   double motion_s = 0;                    // the motion's span planned over
   int samples = 0;                        // points of the motion evaluated
+  int fill_points = 0;                    // of them, rendered to measure each object's fill
   // Face size
   double pixel_angle_min_rad = 0, pixel_angle_centre_rad = 0;
   // Widths

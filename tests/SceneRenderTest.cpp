@@ -256,6 +256,37 @@ TEST(CubeFaceRenderer, FaceCullingSavesWorkAndChangesNoTexel) {
   EXPECT_EQ(r.count(g, {}, 2.5, gallery_walk()[3]).triangles, b.triangles);
 }
 
+// The fill by object (what the planner charges the engine for): each object's share of the texels that
+// passed the depth test, adding up to them; an object rendered alone fills at least its share (fewer
+// occluders drawn before it), and the first object in scene order, drawn first on every face it reaches,
+// exactly its share. The same on one thread and on two.
+TEST(CubeFaceRenderer, TheFillByObjectIsEachObjectsShare) {
+  const Scene g = make_gallery();
+  const glm::dvec3 eye = gallery_walk()[3];
+  std::vector<FaceImage> faces;
+  CubeFaceRenderer r;
+  EXPECT_TRUE(r.render_faces(g, {}, 2.5, eye, 64, faces).filled_by_object.empty());  // only when asked for
+  r.set_fill_by_object(true);
+  r.set_threads(1);
+  const RenderStats all = r.render_faces(g, {}, 2.5, eye, 64, faces);
+  ASSERT_EQ(all.filled_by_object.size(), g.objects.size());
+  int64_t sum = 0;
+  for (const int64_t v : all.filled_by_object) sum += v;
+  EXPECT_EQ(sum, all.texels_filled);
+  int64_t hidden = 0;
+  for (size_t i = 0; i < g.objects.size(); ++i) {
+    const int64_t alone = r.render_faces(g, {i}, 2.5, eye, 64, faces).texels_filled;
+    EXPECT_GE(alone, all.filled_by_object[i]) << g.objects[i].name;
+    if (i == 0) {
+      EXPECT_EQ(alone, all.filled_by_object[i]) << g.objects[i].name;
+    }
+    hidden += alone - all.filled_by_object[i];
+  }
+  EXPECT_GT(hidden, 0);  // some object is behind another drawn before it
+  r.set_threads(2);
+  EXPECT_EQ(r.render_faces(g, {}, 2.5, eye, 64, faces).filled_by_object, all.filled_by_object);
+}
+
 // The renderer's output pinned: the gallery from four points of its walk (0, 2, 4, 6) at 96^2, every memory word,
 // every texel's object and the counts, hashed (FNV-1a). The expected value is what the renderer of
 // commit 4107c2e computed -- before it was made parallel and incremental -- built on its own from

@@ -219,6 +219,10 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     for (size_t i : per_face[static_cast<size_t>(f)]) load[static_cast<size_t>(f)] += static_cast<int64_t>(scene.objects[i].mesh->triangles());
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return load[static_cast<size_t>(a)] > load[static_cast<size_t>(b)]; });
   int64_t triangles = 0, filled = 0, rendered = 0;
+  // Each face's fill by object, kept apart (the faces run on several threads), summed after.
+  std::array<std::vector<int64_t>, 6> fill_of_face;
+  if (fill_by_object_)
+    for (auto& v : fill_of_face) v.assign(scene.objects.size(), 0);
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : triangles, filled, rendered)
   for (int slot = 0; slot < 6; ++slot) {
@@ -250,6 +254,7 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
     for (size_t i : per_face[static_cast<size_t>(f)]) {
       const SceneObject& o = scene.objects[i];
       const Mesh& m = *o.mesh;
+      const int64_t filled_before = filled;  // this thread's own sum (the reduction's private copy)
       triangles += static_cast<int64_t>(m.triangles());  // submitted to this face
       const std::vector<glm::dvec3>& world = placed[i].world;
       const std::vector<glm::dvec3>& vshade = placed[i].shade;
@@ -297,7 +302,13 @@ RenderStats CubeFaceRenderer::render_faces(const Scene& scene, const std::vector
         for (size_t k = 1; k + 1 < sn.size(); ++k)
           raster(sn[0], sn[k], sn[k + 1], img, radial.data(), filled, static_cast<uint32_t>(i + 1), texture);
       }
+      if (fill_by_object_) fill_of_face[static_cast<size_t>(f)][i] += filled - filled_before;
     }
+  }
+  if (fill_by_object_) {
+    st.filled_by_object.assign(scene.objects.size(), 0);
+    for (const auto& v : fill_of_face)
+      for (size_t i = 0; i < v.size(); ++i) st.filled_by_object[i] += v[i];
   }
   st.triangles = triangles;
   st.texels_filled = filled;

@@ -36,6 +36,9 @@ struct RenderStats {
   int64_t texels_filled = 0;      // texels that passed the depth test, summed over triangles
   int64_t texels_written = 0;     // texels stored in the memory
   int faces_rendered = 0;
+  // Only with CubeFaceRenderer::set_fill_by_object(true): texels_filled by object (scene index), summed over
+  // the faces; the entries add up to texels_filled.
+  std::vector<int64_t> filled_by_object;
 };
 
 struct LightModel {
@@ -80,12 +83,15 @@ class CubeFaceRenderer {
   void set_threads(int n) { threads_ = n; }
   // Off: every object is drawn on all six faces and clipped there (the same texels, more work).
   void set_face_culling(bool on) { cull_faces_ = on; }
+  // On: render_faces() and render() also count the fill by object (RenderStats::filled_by_object).
+  void set_fill_by_object(bool on) { fill_by_object_ = on; }
 
  private:
   DepthCode depth_;
   LightModel light_;
   int threads_ = 0;
   bool cull_faces_ = true;
+  bool fill_by_object_ = false;
 };
 
 }  // namespace arp::host
