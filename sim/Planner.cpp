@@ -222,6 +222,14 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
+// The depth code's width for `count` memories: with one there is nothing for the composition unit to
+// compare, and the code only marks a texel empty (its reserved value, at any width), so the narrowest
+// the parameter table allows; with more, the starting configuration's (what composition needs is not
+// measured).
+int depth_bits_for(int count, const dp::ArpConfig& base) {
+  return count == 1 ? static_cast<int>(dp::arp_parameters().find("memory.depth_bits")->int_min) : base.memory.depth_bits;
+}
+
 std::string ladder_text(const LadderLoad& L) {
   std::string s = std::to_string(L.count) + (L.count == 1 ? " memory" : " memories") + " every ";
   for (int m = 0; m < L.count; ++m)
@@ -427,6 +435,16 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.update_frames = p.planned.update_frames;
   p.config.memory.update_ratio = p.planned.update_ratio;
   p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
+  p.config.memory.depth_bits = depth_bits_for(p.planned.count, r.base);
+  p.choices.push_back(
+      {"memory.depth_bits", std::to_string(p.config.memory.depth_bits),
+       p.planned.count == 1
+           ? "one memory: the composition unit has nothing to compare, and the depth code only marks a texel empty (its "
+             "reserved value, at any width), so the narrowest allowed; each texel " +
+                 std::to_string(p.config.memory.color_bits() + p.config.memory.depth_bits) + " bits instead of " +
+                 std::to_string(r.base.memory.color_bits() + r.base.memory.depth_bits)
+           : "kept from " + r.base_source + ": " + std::to_string(p.planned.count) +
+                 " memories are composed by depth code, and the width that composition needs is not measured"});
   if (n == 0) {
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio", "1, 1, 2",
                          "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
@@ -484,6 +502,8 @@ Plan make_plan(const PlanRequest& r) {
                                    std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
                                    "loses those texels and says so"});
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
+  if (p.planned.count > 1)
+    p.not_decided.push_back("the depth code's width with several memories (the narrowest that composes them right is not measured)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   // 5. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
   // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
@@ -545,6 +565,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   for (const LadderLoad& L : p.ladders) {
     dp::ArpConfig c = p.config;
     c.memory.count = L.count;
+    c.memory.depth_bits = depth_bits_for(L.count, r.base);
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +

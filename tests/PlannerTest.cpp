@@ -98,10 +98,11 @@ TEST(Planner, OneFarObjectNeedsOneMemoryAndOneFace) {
   EXPECT_EQ(p.config.memory.update_frames, 1 << static_cast<int>(std::floor(std::log2(need))));  // the largest power of two within it
   const std::array<bool, 6> only_minus_z{false, false, false, false, false, true};
   EXPECT_EQ(p.faces_reached, only_minus_z);
-  // The memory keeps that face only: two eyes x one memory x two buffers x one face x S^2 x (24 + 16) bits.
+  // The memory keeps that face only: two eyes x one memory x two buffers x one face x S^2 x (24 + 2) bits
+  // (one memory: the narrowest depth code).
   EXPECT_EQ(p.config.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
   const int64_t S = p.config.memory.face_size;
-  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 40 / 8);
+  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 26 / 8);
 }
 
 // An object that only an eye reaches a face with: seen from the walk's line the ball's bound is 1 cm
@@ -133,6 +134,7 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
   r.threshold_deg = 1;
   const Plan p = make_plan(r);
   EXPECT_GT(p.config.memory.count, 1);
+  EXPECT_EQ(p.config.memory.depth_bits, r.base.memory.depth_bits);  // several memories compose: the width is kept
   LadderLoad one;
   for (const auto& L : p.ladders)
     if (L.count == 1) one = L;
@@ -353,7 +355,7 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   }
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
   const nlohmann::json& fp = rep[0]["footprint"];
-  const int64_t S = c.memory.face_size, hw = 2 * c.memory.count * 2 * 1 * S * S * 40 / 8;
+  const int64_t S = c.memory.face_size, hw = 2 * c.memory.count * 2 * 1 * S * S * (24 + c.memory.depth_bits) / 8;
   EXPECT_EQ(fp["display_memory_faces"], 1);
   EXPECT_EQ(fp["display_memory_bytes_hardware"], hw);
   EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 6 * hw);
@@ -459,6 +461,32 @@ TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
   int64_t updates = 0;
   for (const auto& m : rep["host"]["memories"]) updates += m["updates"].get<int64_t>();
   EXPECT_GT(updates, 0);  // the host did render while the pipeline ran
+}
+
+// One memory composes nothing: the plan keeps the narrowest depth code (2 bits, one of them values the
+// reserved "empty" code), and a run of it shows the same frames as with the 16-bit code, in a display
+// memory of (24 + 2) / (24 + 16) the size (eyes x 2 buffers x faces x S^2 x texel bits).
+TEST(PlanCli, OneMemoryKeepsTheNarrowestDepthCodeAndShowsTheSameFrames) {
+  TempDir d;
+  const auto r = plan_ball_and_walk(d);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const dp::ArpConfig c = config::load_file(d.file("plan.json"));
+  ASSERT_EQ(c.memory.count, 1);
+  EXPECT_EQ(c.memory.depth_bits, 2);
+  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.depth_bits | 2 | one memory"), std::string::npos);
+  nlohmann::json rep[2];
+  for (int wide = 0; wide < 2; ++wide) {
+    const std::string j = d.file("r" + std::to_string(wide) + ".json");
+    const auto o = run_command(kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --scene " +
+                               d.file("far.json") + " --walk " + d.file("walk.json") + (wide ? " --set memory.depth_bits=16" : "") +
+                               " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    rep[wide] = test::load_json(j);
+  }
+  EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
+  const int64_t S = c.memory.face_size, faces = c.memory.faces_present();
+  EXPECT_EQ(rep[0]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * faces * S * S * 26 / 8);
+  EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * faces * S * S * 40 / 8);
 }
 
 }  // namespace
