@@ -40,6 +40,7 @@ Fixture& fixture(bool bilinear, int filled) {
   if (!f) {
     f = std::make_unique<Fixture>();
     f->cfg.pipeline.aa = bilinear ? dp::AaMode::Bilinear : dp::AaMode::Off;
+    f->cfg.memory.count = std::max(f->cfg.memory.count, filled);  // 8: the composition unit's every input
     f->model = std::make_unique<FunctionalModel>(f->cfg);
     f->mem = std::make_unique<dp::DisplayMemorySet>(f->cfg.memory, f->cfg.timing.eyes);
     const auto cm = host::make_calibration_pattern(f->cfg.memory.face_size);
@@ -66,7 +67,7 @@ void BM_FunctionalFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_FunctionalFrame)
     ->ArgNames({"bilinear", "threads", "memories_filled"})
-    ->ArgsProduct({{0, 1}, {1, 2}, {1, 2, 4}})
+    ->ArgsProduct({{0, 1}, {1, 2}, {1, 2, 4, 8}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(0.5);

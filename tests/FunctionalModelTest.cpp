@@ -58,8 +58,8 @@ ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
 void fill(DisplayMemorySet& mem) { test::fill_layered(mem); }
 
 // fill() and then every further memory written too, each over its own pattern, with depths that tie
-// across memories: the composition of four memories, and of more than four (a count known only at
-// run time). fill() alone writes at most three.
+// across memories: the composition of four to eight memories (each count its own passes), and of more
+// than eight (a count known only at run time). fill() alone writes at most three.
 void fill_every_memory(DisplayMemorySet& mem) {
   fill(mem);
   const MemoryFormat& fmt = mem.format();
@@ -177,8 +177,9 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   c.memory.count = 3;
   cases["three memories, nearest"] = c;
   for (const auto& [name, cfg] : cases) expect_bit_identical(cfg, name);
-  // Every memory holding something: four (the fixed-count passes) and six (the run-time count).
-  for (const int count : {4, 6})
+  // Every memory holding something: four to eight (the fixed-count passes, up to the composition unit's
+  // eight inputs) and eleven (the run-time count).
+  for (const int count : {4, 5, 6, 7, 8, 11})
     for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
       c = small(ArpConfig{});
       c.memory.count = count;

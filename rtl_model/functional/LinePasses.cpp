@@ -106,12 +106,15 @@ constexpr int kBlock = 128;
 // Several memories: the texel loads alone in a scalar loop, into per-memory arrays, then the
 // composition (and the bilinear blend) in vectors. Faster than composing in the scalar loop (bilinear,
 // one thread: two memories 104-112 -> 124-137 M px/s, four 71-74 -> 82-86; bench/FunctionalModelBench,
-// alternating, 2026-11-26). K: the memory count, fixed up to four so the composition unrolls into
-// selects; K == 0: up to 16, counted at run time, in smaller blocks.
+// alternating, 2026-11-26). K: the memory count, fixed up to the composition unit's eight inputs so the
+// composition unrolls into selects; K == 0: more, up to 16, counted at run time, in smaller blocks. (Until
+// 2026-11-26 five to eight memories were counted at run time, in blocks of 32 pixels, which left the
+// prefetch no pixels ahead within a block: bilinear, one thread, eight memories 12.7 M px/s.)
 template <int K>
 struct Block {
   static constexpr int kMemories = K > 0 ? K : 16;
-  static constexpr int kPixels = K > 0 ? kBlock : 32;  // the words of a block stay within L1 either way
+  // The words of a block stay within L1: 4 taps x 8 bytes x K x pixels.
+  static constexpr int kPixels = K == 0 ? 32 : K <= 4 ? kBlock : kBlock / 2;
 };
 
 // The memories' pools and tile tables as locals: the loops' stores cannot alias them.
@@ -151,7 +154,7 @@ template <int K>
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
     uint64_t x[Block<K>::kMemories] = {};  // (K == 0: the compiler cannot see count >= 1)
-#pragma GCC unroll 4
+#pragma GCC unroll 8
     for (int k = 0; k < count; ++k) x[k] = w[k][i];
     out[i] = compose(x, count, cp).color;
   }
@@ -165,6 +168,10 @@ template <int K>
 ARP_COMPOSE_NEAREST(2)
 ARP_COMPOSE_NEAREST(3)
 ARP_COMPOSE_NEAREST(4)
+ARP_COMPOSE_NEAREST(5)
+ARP_COMPOSE_NEAREST(6)
+ARP_COMPOSE_NEAREST(7)
+ARP_COMPOSE_NEAREST(8)
 #undef ARP_COMPOSE_NEAREST
 void compose_nearest_0(const uint64_t (*w)[Block<0>::kPixels], int count, int n, const CompositionParams& cp,
                        uint32_t* out) {
@@ -182,6 +189,10 @@ void nearest_memories(const EyeSources& src, TexelRef ref, int n, const Composit
     if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
     else if constexpr (K == 3) compose_nearest_3(w, p.count, m, cp, out + i0);
     else if constexpr (K == 4) compose_nearest_4(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 5) compose_nearest_5(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 6) compose_nearest_6(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 7) compose_nearest_7(w, p.count, m, cp, out + i0);
+    else if constexpr (K == 8) compose_nearest_8(w, p.count, m, cp, out + i0);
     else compose_nearest_0(w, p.count, m, cp, out + i0);
   }
 }
@@ -193,6 +204,10 @@ void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const Compos
     case 2: nearest_memories<2>(src, ref, n, cp, out); break;
     case 3: nearest_memories<3>(src, ref, n, cp, out); break;
     case 4: nearest_memories<4>(src, ref, n, cp, out); break;
+    case 5: nearest_memories<5>(src, ref, n, cp, out); break;
+    case 6: nearest_memories<6>(src, ref, n, cp, out); break;
+    case 7: nearest_memories<7>(src, ref, n, cp, out); break;
+    case 8: nearest_memories<8>(src, ref, n, cp, out); break;
     default: nearest_memories<0>(src, ref, n, cp, out); break;  // one memory too (its fused pass is faster)
   }
 }
@@ -318,7 +333,7 @@ template <int K>
   for (int i = 0; i < n; ++i) {
     uint64_t a[Block<K>::kMemories] = {}, b[Block<K>::kMemories] = {}, c[Block<K>::kMemories] = {},
              d[Block<K>::kMemories] = {};
-#pragma GCC unroll 4
+#pragma GCC unroll 8
     for (int k = 0; k < count; ++k) {
       a[k] = w[k][0][i];
       b[k] = w[k][1][i];
@@ -341,6 +356,10 @@ template <int K>
 ARP_COMPOSE_TAPS(2)
 ARP_COMPOSE_TAPS(3)
 ARP_COMPOSE_TAPS(4)
+ARP_COMPOSE_TAPS(5)
+ARP_COMPOSE_TAPS(6)
+ARP_COMPOSE_TAPS(7)
+ARP_COMPOSE_TAPS(8)
 #undef ARP_COMPOSE_TAPS
 void compose_taps_0(const uint64_t (*w)[4][Block<0>::kPixels], int count, int n, const CompositionParams& cp,
                     uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11) {
@@ -386,6 +405,10 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
     if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 5) compose_taps_5(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 6) compose_taps_6(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 7) compose_taps_7(words, p.count, m, cp, c00, c10, c01, c11);
+    else if constexpr (K == 8) compose_taps_8(words, p.count, m, cp, c00, c10, c01, c11);
     else compose_taps_0(words, p.count, m, cp, c00, c10, c01, c11);
     blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
   }
@@ -418,6 +441,10 @@ void bilinear_memories_line(const EyeSources& src, const int32_t* face, const in
     case 2: bilinear_memories_impl<2>(src, face, u, v, n, T, S, L, cp, out); break;
     case 3: bilinear_memories_impl<3>(src, face, u, v, n, T, S, L, cp, out); break;
     case 4: bilinear_memories_impl<4>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 5: bilinear_memories_impl<5>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 6: bilinear_memories_impl<6>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 7: bilinear_memories_impl<7>(src, face, u, v, n, T, S, L, cp, out); break;
+    case 8: bilinear_memories_impl<8>(src, face, u, v, n, T, S, L, cp, out); break;
     default: bilinear_memories_impl<0>(src, face, u, v, n, T, S, L, cp, out); break;
   }
 }
