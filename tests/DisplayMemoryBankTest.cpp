@@ -65,6 +65,32 @@ TEST(DisplayMemoryBank, AFullCubeCostsLittleMoreThanItsTiles) {
   EXPECT_LE(b.bytes_allocated(), data * 5 / 4 + 6 * 256 * 4 + tile);  // growth slack <= a quarter
 }
 
+// Tiles in table order: a whole cube written face by face, row by row, leaves every tile where the table
+// order puts it (the functional model then reads without the table); a face left partly unwritten, a
+// face written out of order, or nothing written does not.
+TEST(DisplayMemoryBank, TilesInTableOrderOnlyWhenAWholeCubeIsWrittenInOrder) {
+  MemoryConfig mc;
+  mc.face_size = 70;  // not a multiple of the tile: the last tile of a row is part-filled
+  const MemoryFormat fmt(mc);
+  auto cube = [&](bool skip_last_tile, bool face_order_reversed) {
+    DisplayMemoryBank b(fmt);
+    for (int i = 0; i < 6; ++i) {
+      const int f = face_order_reversed ? 5 - i : i;
+      for (int y = 0; y < 70; ++y)
+        for (int x = 0; x < 70; ++x)
+          if (!(skip_last_tile && f == 5 && x >= 64 && y >= 64)) b.write(f, x, y, fmt.pack_rgb8(x, y, f), 7);
+    }
+    b.commit();
+    b.vblank();
+    return b.front_tiles_in_order();
+  };
+  EXPECT_TRUE(cube(false, false));
+  EXPECT_FALSE(cube(true, false));
+  EXPECT_FALSE(cube(false, true));
+  DisplayMemoryBank empty(fmt);
+  EXPECT_FALSE(empty.front_tiles_in_order());
+}
+
 TEST(DisplayMemoryBank, DoubleBufferSwapsOnlyAtVblankAfterCommit) {
   DisplayMemoryBank b{MemoryFormat{}};
   b.write(0, 1, 2, 0xABCDEF, 77);

@@ -236,4 +236,16 @@ bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
          f.depth_bits == want.depth_bits;
 }
 
+bool DisplayMemoryBank::front_tiles_in_order() const {
+  const int32_t tpf = tiles_per_row_ * tiles_per_row_;
+  const int32_t first = index(front_, 0)[0];
+  if (first == 0) return false;  // tile 0 is the shared empty tile: not written
+  for (int f = 0; f < 6; ++f) {
+    const int32_t* t = index(front_, f);
+    for (int32_t k = 0; k < tpf; ++k)
+      if (t[k] != first + f * tpf + k) return false;
+  }
+  return true;
+}
+
 }  // namespace arp::dp

@@ -109,6 +109,11 @@ class DisplayMemoryBank {
   // The front buffer's tile numbers of one face, row-major by tile (never null; 0 where never written).
   const int32_t* front_tile_index(int face) const { return index(front_, face); }
   int tiles_per_row() const { return tiles_per_row_; }
+  // Whether the front buffer's tiles lie in its pool in table order -- tile k of face f (row-major, faces
+  // +X .. -Z) is pool tile front_tile_index(0)[0] + f x tiles-per-face + k, every tile written -- as a
+  // whole cube stored face by face leaves them: a texel's place is then arithmetic (the functional model's
+  // several-memory passes read without the table).
+  bool front_tiles_in_order() const;
   // Whether any texel of this face of the front buffer was written (an
   // unwritten face reads empty everywhere and can never win composition).
   bool front_face_written(int face) const { return !buffers_[front_].index[face].empty(); }

@@ -113,6 +113,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
     passes::EyeSources& es = sources[static_cast<size_t>(e)];
     es.tiles_per_row = tpr;
     es.tiles_per_face = tpf;
+    bool dense = true;  // every memory's tiles in table order (see passes::EyeSources::dense)
     for (int m = 0; m < N; ++m) {
       const DisplayMemoryBank& b = mem.bank(e, m);
       bool any = false;
@@ -126,8 +127,11 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
       }
       es.pool[es.count] = b.front_pool();
       es.offset[es.count] = flat.back().data();
+      es.dense_base[es.count] = b.front_pool() + flat.back()[0];
+      dense = dense && b.front_tiles_in_order();
       ++es.count;
     }
+    es.dense = dense && es.count > 1;
   }
 
   out.resize_to_overwrite(W, H, E, opt.photon_times);  // every pixel and photon time is written below

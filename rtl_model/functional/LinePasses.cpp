@@ -117,25 +117,28 @@ struct Block {
   static constexpr int kPixels = K == 0 ? 32 : K <= 4 ? kBlock : kBlock / 2;
 };
 
-// The memories' pools and tile tables as locals: the loops' stores cannot alias them.
-template <int K>
+// The memories' pools and tile tables as locals: the loops' stores cannot alias them. Dense: every
+// memory's tiles lie in the pool in table order (EyeSources::dense), so a texel's place is arithmetic
+// and the same for every memory -- no tile table read per memory.
+template <int K, bool Dense>
 struct Pools {
   const uint64_t* pool[Block<K>::kMemories];
   const int32_t* offset[Block<K>::kMemories];
   int count;
   explicit Pools(const EyeSources& src) : count(K > 0 ? K : src.count) {
     for (int k = 0; k < count; ++k) {
-      pool[k] = src.pool[k];
+      pool[k] = Dense ? src.dense_base[k] : src.pool[k];
       offset[k] = src.offset[k];
     }
   }
   const uint64_t* at(int k, int32_t tile, int32_t word) const {
-    return pool[k] + static_cast<int64_t>(offset[k][tile]) + word;
+    if constexpr (Dense) return pool[k] + static_cast<int64_t>(tile) * DisplayMemoryBank::kTileWords + word;
+    else return pool[k] + static_cast<int64_t>(offset[k][tile]) + word;
   }
 };
 
-template <int K>
-void nearest_load(const Pools<K>& p, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
+template <int K, bool Dense>
+void nearest_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
                   uint64_t (*__restrict w)[Block<K>::kPixels]) {
   for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once
     for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i], word[i]));
@@ -178,14 +181,14 @@ void compose_nearest_0(const uint64_t (*w)[Block<0>::kPixels], int count, int n,
   compose_nearest_body<0>(w, count, n, cp, out);
 }
 
-template <int K>
-void nearest_memories(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
+template <int K, bool Dense>
+void nearest_memories_impl(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   constexpr int B = Block<K>::kPixels;
-  const Pools<K> p(src);
+  const Pools<K, Dense> p(src);
   alignas(64) uint64_t w[Block<K>::kMemories][B];
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
-    nearest_load<K>(p, ref.tile + i0, ref.word + i0, m, w);
+    nearest_load<K, Dense>(p, ref.tile + i0, ref.word + i0, m, w);
     if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
     else if constexpr (K == 3) compose_nearest_3(w, p.count, m, cp, out + i0);
     else if constexpr (K == 4) compose_nearest_4(w, p.count, m, cp, out + i0);
@@ -195,6 +198,11 @@ void nearest_memories(const EyeSources& src, TexelRef ref, int n, const Composit
     else if constexpr (K == 8) compose_nearest_8(w, p.count, m, cp, out + i0);
     else compose_nearest_0(w, p.count, m, cp, out + i0);
   }
+}
+template <int K>
+void nearest_memories(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
+  if (src.dense) nearest_memories_impl<K, true>(src, ref, n, cp, out);
+  else nearest_memories_impl<K, false>(src, ref, n, cp, out);
 }
 }  // namespace
 
@@ -296,8 +304,8 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
 
 // Bilinear over several memories likewise: per pixel and memory one tile lookup for the four taps (the
 // apron), their words into per-memory arrays; then each tap's composition and the blend in vectors.
-template <int K>
-void bilinear_load(const Pools<K>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
+template <int K, bool Dense>
+void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
                    const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
                    uint64_t (*__restrict w)[4][Block<K>::kPixels]) {
   for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once; both rows of a quad
@@ -388,11 +396,11 @@ void blend_colours_64(const uint32_t* c00, const uint32_t* c10, const uint32_t* 
   blend_colours_body<uint64_t>(c00, c10, c01, c11, wx, wy, n, T, L, out);
 }
 
-template <int K>
-void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+template <int K, bool Dense>
+void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                             int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
   constexpr int B = Block<K>::kPixels;
-  const Pools<K> p(src);
+  const Pools<K, Dense> p(src);
   alignas(64) int32_t tile[B], w0[B], dx[B], dy[B];
   alignas(64) uint32_t wx[B], wy[B], c00[B], c10[B], c01[B], c11[B];
   alignas(64) uint64_t words[Block<K>::kMemories][4][B];
@@ -401,7 +409,7 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
     const int m = std::min(B, n - i0);
     bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy,
                        wx, wy);
-    bilinear_load<K>(p, tile, w0, dx, dy, m, words);
+    bilinear_load<K, Dense>(p, tile, w0, dx, dy, m, words);
     if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, c00, c10, c01, c11);
@@ -412,6 +420,12 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
     else compose_taps_0(words, p.count, m, cp, c00, c10, c01, c11);
     blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
   }
+}
+template <int K>
+void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                            int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  if (src.dense) bilinear_memories_pass<K, true>(src, face, u, v, n, T, S, L, cp, out);
+  else bilinear_memories_pass<K, false>(src, face, u, v, n, T, S, L, cp, out);
 }
 
 ARP_VECTOR_CLONES

@@ -40,6 +40,11 @@ struct EyeSources {
   const uint64_t* pool[16];
   const int32_t* offset[16];
   int tiles_per_row = 0, tiles_per_face = 0;
+  // Every memory's tiles in its pool in table order (offset[k][t] == offset[k][0] + t x kTileWords for
+  // every t): a texel of tile t is then dense_base[k] + t x kTileWords + word, the same arithmetic for
+  // every memory (the several-memory passes skip the tile tables).
+  bool dense = false;
+  const uint64_t* dense_base[16];
 };
 
 // Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors.
