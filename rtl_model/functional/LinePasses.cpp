@@ -1,6 +1,7 @@
 #include "LinePasses.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "common/VectorClones.hpp"
 
@@ -97,8 +98,10 @@ namespace {
 // that far ahead (nearest, one thread, four full memories, composed in the loop as it then was: 63-66
 // M px/s without, 89-97 with 16, 32 or 64 ahead, 32 the best; 115-117 with a block's first 32 asked for
 // at its start and the memories' pointers held in locals; arp_bench_functional, runs alternating,
-// 2026-11-26).
-constexpr int kAhead = 32;
+// 2026-11-26). Once the loads no longer read the tile tables (EyeSources::dense) the loop ran ahead of
+// 32: nearest, four memories, 3.74-4.06 ms a frame at 32, 3.18-3.41 at 64, 96 and 128 with the look-ahead
+// running across blocks (bilinear the same within noise at each).
+constexpr int kAhead = 96;
 
 // Pixels per block of the passes that keep per-pixel arrays (they stay within L1).
 constexpr int kBlock = 128;
@@ -137,15 +140,19 @@ struct Pools {
   }
 };
 
+// Pixels [i0, i0 + n) of a line of `line` pixels whose texel places are all known: the prefetch looks
+// ahead across the block's end, into the next block's pixels; a line's first pixels are asked for at once.
 template <int K, bool Dense>
-void nearest_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict word, int n,
-                  uint64_t (*__restrict w)[Block<K>::kPixels]) {
-  for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once
-    for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i], word[i]));
+void nearest_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict word, int i0,
+                  int n, int line, uint64_t (*__restrict w)[Block<K>::kPixels]) {
+  if (i0 == 0)
+    for (int i = 0; i < std::min(line, kAhead); ++i)
+      for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i], word[i]));
   for (int i = 0; i < n; ++i) {
-    if (i + kAhead < n)
-      for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[i + kAhead], word[i + kAhead]));
-    for (int k = 0; k < p.count; ++k) w[k][i] = *p.at(k, tile[i], word[i]);
+    const int j = i0 + i;
+    if (j + kAhead < line)
+      for (int k = 0; k < p.count; ++k) __builtin_prefetch(p.at(k, tile[j + kAhead], word[j + kAhead]));
+    for (int k = 0; k < p.count; ++k) w[k][i] = *p.at(k, tile[j], word[j]);
   }
 }
 
@@ -188,7 +195,7 @@ void nearest_memories_impl(const EyeSources& src, TexelRef ref, int n, const Com
   alignas(64) uint64_t w[Block<K>::kMemories][B];
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
-    nearest_load<K, Dense>(p, ref.tile + i0, ref.word + i0, m, w);
+    nearest_load<K, Dense>(p, ref.tile, ref.word, i0, m, n, w);
     if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
     else if constexpr (K == 3) compose_nearest_3(w, p.count, m, cp, out + i0);
     else if constexpr (K == 4) compose_nearest_4(w, p.count, m, cp, out + i0);
@@ -304,29 +311,33 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
 
 // Bilinear over several memories likewise: per pixel and memory one tile lookup for the four taps (the
 // apron), their words into per-memory arrays; then each tap's composition and the blend in vectors.
+// Pixels [i0, i0 + n) of a line of `line` pixels whose taps are all known: as nearest_load, the prefetch
+// (both rows of a quad) looks ahead across the block's end.
 template <int K, bool Dense>
 void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
-                   const int32_t* __restrict dx, const int32_t* __restrict dy, int n,
+                   const int32_t* __restrict dx, const int32_t* __restrict dy, int i0, int n, int line,
                    uint64_t (*__restrict w)[4][Block<K>::kPixels]) {
-  for (int i = 0; i < std::min(n, kAhead); ++i)  // the block's first texels, all at once; both rows of a quad
-    for (int k = 0; k < p.count; ++k) {
-      const uint64_t* q = p.at(k, tile[i], w0[i]);
-      __builtin_prefetch(q);
-      __builtin_prefetch(q + dy[i]);
-    }
-  for (int i = 0; i < n; ++i) {
-    if (i + kAhead < n)
+  if (i0 == 0)
+    for (int i = 0; i < std::min(line, kAhead); ++i)
       for (int k = 0; k < p.count; ++k) {
-        const uint64_t* q = p.at(k, tile[i + kAhead], w0[i + kAhead]);
+        const uint64_t* q = p.at(k, tile[i], w0[i]);
         __builtin_prefetch(q);
-        __builtin_prefetch(q + dy[i + kAhead]);
+        __builtin_prefetch(q + dy[i]);
+      }
+  for (int i = 0; i < n; ++i) {
+    const int j = i0 + i;
+    if (j + kAhead < line)
+      for (int k = 0; k < p.count; ++k) {
+        const uint64_t* q = p.at(k, tile[j + kAhead], w0[j + kAhead]);
+        __builtin_prefetch(q);
+        __builtin_prefetch(q + dy[j + kAhead]);
       }
     for (int k = 0; k < p.count; ++k) {
-      const uint64_t* q = p.at(k, tile[i], w0[i]);
+      const uint64_t* q = p.at(k, tile[j], w0[j]);
       w[k][0][i] = q[0];
-      w[k][1][i] = q[dx[i]];
-      w[k][2][i] = q[dy[i]];
-      w[k][3][i] = q[dy[i] + dx[i]];
+      w[k][1][i] = q[dx[j]];
+      w[k][2][i] = q[dy[j]];
+      w[k][3][i] = q[dy[j] + dx[j]];
     }
   }
 }
@@ -401,15 +412,21 @@ void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const in
                             int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
   constexpr int B = Block<K>::kPixels;
   const Pools<K, Dense> p(src);
-  alignas(64) int32_t tile[B], w0[B], dx[B], dy[B];
-  alignas(64) uint32_t wx[B], wy[B], c00[B], c10[B], c01[B], c11[B];
+  // The whole line's taps first, so that the loads can look ahead across blocks.
+  thread_local std::vector<int32_t> taps_of_thread;
+  std::vector<int32_t>& taps = taps_of_thread;
+  taps.resize(6 * static_cast<size_t>(n));
+  int32_t* tile = taps.data();
+  int32_t *w0 = tile + n, *dx = w0 + n, *dy = dx + n;
+  uint32_t* wx = reinterpret_cast<uint32_t*>(dy + n);
+  uint32_t* wy = wx + n;
+  bilinear_taps_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy, wx, wy);
+  alignas(64) uint32_t c00[B], c10[B], c01[B], c11[B];
   alignas(64) uint64_t words[Block<K>::kMemories][4][B];
   const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
-    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy,
-                       wx, wy);
-    bilinear_load<K, Dense>(p, tile, w0, dx, dy, m, words);
+    bilinear_load<K, Dense>(p, tile, w0, dx, dy, i0, m, n, words);
     if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, c00, c10, c01, c11);
@@ -418,7 +435,7 @@ void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const in
     else if constexpr (K == 7) compose_taps_7(words, p.count, m, cp, c00, c10, c01, c11);
     else if constexpr (K == 8) compose_taps_8(words, p.count, m, cp, c00, c10, c01, c11);
     else compose_taps_0(words, p.count, m, cp, c00, c10, c01, c11);
-    blend(c00, c10, c01, c11, wx, wy, m, T, L, out + i0);
+    blend(c00, c10, c01, c11, wx + i0, wy + i0, m, T, L, out + i0);
   }
 }
 template <int K>
