@@ -1,6 +1,7 @@
 #include "LinePasses.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include "common/VectorClones.hpp"
@@ -312,11 +313,14 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
 // Bilinear over several memories likewise: per pixel and memory one tile lookup for the four taps (the
 // apron), their words into per-memory arrays; then each tap's composition and the blend in vectors.
 // Pixels [i0, i0 + n) of a line of `line` pixels whose taps are all known: as nearest_load, the prefetch
-// (both rows of a quad) looks ahead across the block's end.
+// (both rows of a quad) looks ahead across the block's end. Each row of a quad is its two neighbouring
+// words, read and stored as one 16-byte pair (the apron keeps the right-hand word within the stored tile,
+// and below it the apron row): w[k][row][2 i + column]. At a face's last column both taps are the same
+// texel (dx 0), and the pair is made so.
 template <int K, bool Dense>
 void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
                    const int32_t* __restrict dx, const int32_t* __restrict dy, int i0, int n, int line,
-                   uint64_t (*__restrict w)[4][Block<K>::kPixels]) {
+                   uint64_t (*__restrict w)[2][2 * Block<K>::kPixels]) {
   if (i0 == 0)
     for (int i = 0; i < std::min(line, kAhead); ++i)
       for (int k = 0; k < p.count; ++k) {
@@ -334,43 +338,41 @@ void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, con
       }
     for (int k = 0; k < p.count; ++k) {
       const uint64_t* q = p.at(k, tile[j], w0[j]);
-      w[k][0][i] = q[0];
-      w[k][1][i] = q[dx[j]];
-      w[k][2][i] = q[dy[j]];
-      w[k][3][i] = q[dy[j] + dx[j]];
+      std::memcpy(&w[k][0][2 * i], q, 16);
+      std::memcpy(&w[k][1][2 * i], q + dy[j], 16);
     }
+    if (dx[j] == 0) [[unlikely]]
+      for (int k = 0; k < p.count; ++k) {
+        w[k][0][2 * i + 1] = w[k][0][2 * i];
+        w[k][1][2 * i + 1] = w[k][1][2 * i];
+      }
   }
 }
 
+// Every tap composed across the memories: each row's 2 n words (the quads' top and bottom pairs), in place
+// of the pairs: row0[2 i] is c00, row0[2 i + 1] c10, row1[2 i] c01, row1[2 i + 1] c11.
 template <int K>
-[[gnu::always_inline]] inline void compose_taps_body(const uint64_t (*__restrict w)[4][Block<K>::kPixels], int count_rt,
-                                                     int n, const CompositionParams& cpref, uint32_t* __restrict c00,
-                                                     uint32_t* __restrict c10, uint32_t* __restrict c01,
-                                                     uint32_t* __restrict c11) {
+[[gnu::always_inline]] inline void compose_taps_body(const uint64_t (*__restrict w)[2][2 * Block<K>::kPixels],
+                                                     int count_rt, int n, const CompositionParams& cpref,
+                                                     uint32_t* __restrict row0, uint32_t* __restrict row1) {
   const int count = K > 0 ? K : count_rt;
   const CompositionParams cp = cpref;
-  for (int i = 0; i < n; ++i) {
-    uint64_t a[Block<K>::kMemories] = {}, b[Block<K>::kMemories] = {}, c[Block<K>::kMemories] = {},
-             d[Block<K>::kMemories] = {};
+  for (int j = 0; j < 2 * n; ++j) {
+    uint64_t a[Block<K>::kMemories] = {}, b[Block<K>::kMemories] = {};
 #pragma GCC unroll 8
     for (int k = 0; k < count; ++k) {
-      a[k] = w[k][0][i];
-      b[k] = w[k][1][i];
-      c[k] = w[k][2][i];
-      d[k] = w[k][3][i];
+      a[k] = w[k][0][j];
+      b[k] = w[k][1][j];
     }
-    c00[i] = compose(a, count, cp).color;
-    c10[i] = compose(b, count, cp).color;
-    c01[i] = compose(c, count, cp).color;
-    c11[i] = compose(d, count, cp).color;
+    row0[j] = compose(a, count, cp).color;
+    row1[j] = compose(b, count, cp).color;
   }
 }
 
 #define ARP_COMPOSE_TAPS(K)                                                                                        \
-  ARP_VECTOR_CLONES void compose_taps_##K(const uint64_t (*w)[4][Block<K>::kPixels], int count, int n,            \
-                                          const CompositionParams& cp, uint32_t* c00, uint32_t* c10,             \
-                                          uint32_t* c01, uint32_t* c11) {                                        \
-    compose_taps_body<K>(w, count, n, cp, c00, c10, c01, c11);                                                   \
+  ARP_VECTOR_CLONES void compose_taps_##K(const uint64_t (*w)[2][2 * Block<K>::kPixels], int count, int n,        \
+                                          const CompositionParams& cp, uint32_t* row0, uint32_t* row1) {         \
+    compose_taps_body<K>(w, count, n, cp, row0, row1);                                                           \
   }
 ARP_COMPOSE_TAPS(2)
 ARP_COMPOSE_TAPS(3)
@@ -380,31 +382,32 @@ ARP_COMPOSE_TAPS(6)
 ARP_COMPOSE_TAPS(7)
 ARP_COMPOSE_TAPS(8)
 #undef ARP_COMPOSE_TAPS
-void compose_taps_0(const uint64_t (*w)[4][Block<0>::kPixels], int count, int n, const CompositionParams& cp,
-                    uint32_t* c00, uint32_t* c10, uint32_t* c01, uint32_t* c11) {
-  compose_taps_body<0>(w, count, n, cp, c00, c10, c01, c11);
+void compose_taps_0(const uint64_t (*w)[2][2 * Block<0>::kPixels], int count, int n, const CompositionParams& cp,
+                    uint32_t* row0, uint32_t* row1) {
+  compose_taps_body<0>(w, count, n, cp, row0, row1);
 }
 
+// The blend over the composed rows (compose_taps_body's layout).
 template <class Acc>
-[[gnu::always_inline]] inline void blend_colours_body(const uint32_t* __restrict c00, const uint32_t* __restrict c10,
-                                                      const uint32_t* __restrict c01, const uint32_t* __restrict c11,
+[[gnu::always_inline]] inline void blend_colours_body(const uint32_t* __restrict row0, const uint32_t* __restrict row1,
                                                       const uint32_t* __restrict wx, const uint32_t* __restrict wy,
                                                       int n, int T, const ChannelLayout& Lref,
                                                       uint32_t* __restrict out) {
   const ChannelLayout L = Lref;
-  for (int i = 0; i < n; ++i) out[i] = bilinear_blend_in<Acc>(c00[i], c10[i], c01[i], c11[i], wx[i], wy[i], T, L);
+  for (int i = 0; i < n; ++i)
+    out[i] = bilinear_blend_in<Acc>(row0[2 * i], row0[2 * i + 1], row1[2 * i], row1[2 * i + 1], wx[i], wy[i], T, L);
 }
 
 ARP_VECTOR_CLONES
-void blend_colours_32(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
-                      const uint32_t* wx, const uint32_t* wy, int n, int T, const ChannelLayout& L, uint32_t* out) {
-  blend_colours_body<uint32_t>(c00, c10, c01, c11, wx, wy, n, T, L, out);
+void blend_colours_32(const uint32_t* row0, const uint32_t* row1, const uint32_t* wx, const uint32_t* wy, int n, int T,
+                      const ChannelLayout& L, uint32_t* out) {
+  blend_colours_body<uint32_t>(row0, row1, wx, wy, n, T, L, out);
 }
 
 ARP_VECTOR_CLONES
-void blend_colours_64(const uint32_t* c00, const uint32_t* c10, const uint32_t* c01, const uint32_t* c11,
-                      const uint32_t* wx, const uint32_t* wy, int n, int T, const ChannelLayout& L, uint32_t* out) {
-  blend_colours_body<uint64_t>(c00, c10, c01, c11, wx, wy, n, T, L, out);
+void blend_colours_64(const uint32_t* row0, const uint32_t* row1, const uint32_t* wx, const uint32_t* wy, int n, int T,
+                      const ChannelLayout& L, uint32_t* out) {
+  blend_colours_body<uint64_t>(row0, row1, wx, wy, n, T, L, out);
 }
 
 template <int K, bool Dense>
@@ -421,21 +424,21 @@ void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const in
   uint32_t* wx = reinterpret_cast<uint32_t*>(dy + n);
   uint32_t* wy = wx + n;
   bilinear_taps_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy, wx, wy);
-  alignas(64) uint32_t c00[B], c10[B], c01[B], c11[B];
-  alignas(64) uint64_t words[Block<K>::kMemories][4][B];
+  alignas(64) uint32_t row0[2 * B], row1[2 * B];
+  alignas(64) uint64_t words[Block<K>::kMemories][2][2 * B];
   const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
     bilinear_load<K, Dense>(p, tile, w0, dx, dy, i0, m, n, words);
-    if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 5) compose_taps_5(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 6) compose_taps_6(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 7) compose_taps_7(words, p.count, m, cp, c00, c10, c01, c11);
-    else if constexpr (K == 8) compose_taps_8(words, p.count, m, cp, c00, c10, c01, c11);
-    else compose_taps_0(words, p.count, m, cp, c00, c10, c01, c11);
-    blend(c00, c10, c01, c11, wx + i0, wy + i0, m, T, L, out + i0);
+    if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 5) compose_taps_5(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 6) compose_taps_6(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 7) compose_taps_7(words, p.count, m, cp, row0, row1);
+    else if constexpr (K == 8) compose_taps_8(words, p.count, m, cp, row0, row1);
+    else compose_taps_0(words, p.count, m, cp, row0, row1);
+    blend(row0, row1, wx + i0, wy + i0, m, T, L, out + i0);
   }
 }
 template <int K>
