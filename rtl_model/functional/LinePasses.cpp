@@ -253,46 +253,46 @@ void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restric
   }
 }
 
-// No vector clone: the baseline has no gathers, so the loads stay scalar.
+// No vector clone: the baseline has no gathers, so the loads stay scalar. Each row of a quad is one
+// 16-byte pair, as in bilinear_load below: row0[2 i + column], row1[2 i + column].
 void bilinear_load_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
                         const int32_t* __restrict tile, const int32_t* __restrict w0, const int32_t* __restrict dx,
-                        const int32_t* __restrict dy, int n, uint64_t* __restrict a, uint64_t* __restrict b,
-                        uint64_t* __restrict c, uint64_t* __restrict d) {
+                        const int32_t* __restrict dy, int n, uint64_t* __restrict row0, uint64_t* __restrict row1) {
   for (int i = 0; i < n; ++i) {
     const uint64_t* q = pool + static_cast<int64_t>(offset[tile[i]]) + w0[i];
-    a[i] = q[0];
-    b[i] = q[dx[i]];
-    c[i] = q[dy[i]];
-    d[i] = q[dy[i] + dx[i]];
+    std::memcpy(row0 + 2 * i, q, 16);
+    std::memcpy(row1 + 2 * i, q + dy[i], 16);
+    if (dx[i] == 0) [[unlikely]] {  // a face's last column: both taps the same texel
+      row0[2 * i + 1] = row0[2 * i];
+      row1[2 * i + 1] = row1[2 * i];
+    }
   }
 }
 
 // Acc: the blend's accumulator (uint32_t where dp::blend_fits_32: the same value, twice the lanes).
 template <class Acc>
-[[gnu::always_inline]] inline void bilinear_blend_body(const uint64_t* __restrict a, const uint64_t* __restrict b,
-                                                       const uint64_t* __restrict c, const uint64_t* __restrict d,
+[[gnu::always_inline]] inline void bilinear_blend_body(const uint64_t* __restrict row0, const uint64_t* __restrict row1,
                                                        const uint32_t* __restrict wx, const uint32_t* __restrict wy,
                                                        int n, int T, const ChannelLayout& Lref,
                                                        const CompositionParams& cpref, uint32_t* __restrict out) {
   const ChannelLayout L = Lref;
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i)
-    out[i] = bilinear_blend_in<Acc>(compose(&a[i], 1, cp).color, compose(&b[i], 1, cp).color,
-                                    compose(&c[i], 1, cp).color, compose(&d[i], 1, cp).color, wx[i], wy[i], T, L);
+    out[i] = bilinear_blend_in<Acc>(compose(&row0[2 * i], 1, cp).color, compose(&row0[2 * i + 1], 1, cp).color,
+                                    compose(&row1[2 * i], 1, cp).color, compose(&row1[2 * i + 1], 1, cp).color, wx[i],
+                                    wy[i], T, L);
 }
 
 ARP_VECTOR_CLONES
-void bilinear_blend_32(const uint64_t* a, const uint64_t* b, const uint64_t* c, const uint64_t* d, const uint32_t* wx,
-                       const uint32_t* wy, int n, int T, const ChannelLayout& L, const CompositionParams& cp,
-                       uint32_t* out) {
-  bilinear_blend_body<uint32_t>(a, b, c, d, wx, wy, n, T, L, cp, out);
+void bilinear_blend_32(const uint64_t* row0, const uint64_t* row1, const uint32_t* wx, const uint32_t* wy, int n, int T,
+                       const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  bilinear_blend_body<uint32_t>(row0, row1, wx, wy, n, T, L, cp, out);
 }
 
 ARP_VECTOR_CLONES
-void bilinear_blend_64(const uint64_t* a, const uint64_t* b, const uint64_t* c, const uint64_t* d, const uint32_t* wx,
-                       const uint32_t* wy, int n, int T, const ChannelLayout& L, const CompositionParams& cp,
-                       uint32_t* out) {
-  bilinear_blend_body<uint64_t>(a, b, c, d, wx, wy, n, T, L, cp, out);
+void bilinear_blend_64(const uint64_t* row0, const uint64_t* row1, const uint32_t* wx, const uint32_t* wy, int n, int T,
+                       const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  bilinear_blend_body<uint64_t>(row0, row1, wx, wy, n, T, L, cp, out);
 }
 
 void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int32_t* face, const int32_t* u,
@@ -300,13 +300,13 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
                           const CompositionParams& cp, uint32_t* out) {
   alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
   alignas(64) uint32_t wx[kBlock], wy[kBlock];
-  alignas(64) uint64_t a[kBlock], b[kBlock], c[kBlock], d[kBlock];
+  alignas(64) uint64_t row0[2 * kBlock], row1[2 * kBlock];
   const auto blend = blend_fits_32(T, L) ? bilinear_blend_32 : bilinear_blend_64;
   for (int i0 = 0; i0 < n; i0 += kBlock) {
     const int m = std::min(kBlock, n - i0);
     bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, tpr, tpf, tile, w0, dx, dy, wx, wy);
-    bilinear_load_impl(pool, offset, tile, w0, dx, dy, m, a, b, c, d);
-    blend(a, b, c, d, wx, wy, m, T, L, cp, out + i0);
+    bilinear_load_impl(pool, offset, tile, w0, dx, dy, m, row0, row1);
+    blend(row0, row1, wx, wy, m, T, L, cp, out + i0);
   }
 }
 
