@@ -398,13 +398,18 @@ TEST(PlanCli, ARunRendersByThePlansThreshold) {
   EXPECT_EQ(config::load_file(d.file("plan2.json")).memory.threshold_deg, 2.5);
 }
 
+// A ball of 0.5 m two metres ahead of the walks below (near.json).
+void write_near_ball(TempDir& d) {
+  write(d.file("near.json"), R"({"name": "near", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -2]}]})");
+}
+
 // The engine's fill counts. A ball near the eye, with the engine's triangles and set-up made free: its fill
 // is all the engine does, and the plan's busy share is what a run with the plan reports of its modelled
 // engine (host.memories[].engine_busy_s over the simulated seconds: the host simulation's own account of
 // the texels its renders filled), within what the eyes' 32 mm either side of the walk's point change.
 TEST(PlanCli, ThePlansEngineBusyIsWhatARunsEngineIs) {
   TempDir d;
-  write(d.file("near.json"), R"({"name": "near", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -2]}]})");
+  write_near_ball(d);
   write(d.file("still.json"), R"({"speed": 0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
   PlanRequest r = request(d.file("near.json"), d.file("still.json"));
   r.size_widths = false;
@@ -437,7 +442,7 @@ TEST(PlanCli, ThePlansEngineBusyIsWhatARunsEngineIs) {
 // scan-out FIFO the issue slack and one, and no write is blocked.
 TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
   TempDir d;
-  write(d.file("near.json"), R"({"name": "near", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -2]}]})");
+  write_near_ball(d);
   write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
   PlanRequest r = request(d.file("near.json"), d.file("walk.json"));
   r.size_widths = false;
