@@ -27,7 +27,7 @@ per_pixel() {  # bilinear memories -> cycles per pixel, one try
     "$LOOP" "$1" 1 "$2" "$FRAMES" | sed -n 's/^cycles per pixel.*: \([0-9.]*\)$/\1/p'
   fi
 }
-echo "method: $METHOD$([ "$METHOD" = clock ] && echo ", core clock $(build/bench/arp_core_clock)")"
+echo "method: $METHOD$([ "$METHOD" = clock ] && echo ", core clock $("$(dirname "$LOOP")/arp_core_clock")")"
 printf "%-10s %-8s %-9s %s\n" filter threads memories "cycles/pixel"
 for aa in 0 1; do
   for mems in 1 4; do

@@ -11,6 +11,7 @@
 #include "common/InputError.hpp"
 #include "common/Units.hpp"
 #include "host/priority/PriorityScheduler.hpp"
+#include "host/priority/RenderCost.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/render/DepthCode.hpp"
 #include "host/render/FaceFrustum.hpp"
@@ -116,7 +117,8 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   MotionSamples m;
   m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : 0.0;
   // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
-  const int64_t frames = static_cast<int64_t>(std::clamp(std::ceil(m.span_s * hz) + 1, 1.0, 1099511627776.0));
+  // (every sample within the motion: past its end a looping walk would be back at its start)
+  const int64_t frames = static_cast<int64_t>(std::clamp(std::floor(m.span_s * hz) + 1, 1.0, 1099511627776.0));
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
   for (int64_t f = 0; f < frames; f += step) m.t.push_back(static_cast<double>(f) / hz);
   m.step_s = static_cast<double>(step) / hz;
@@ -125,10 +127,11 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
 
 // Texels each object fills (passing the depth test) per update at each sample (k * objects + i), for one
 // eye: the whole scene rendered from the walk's point at face size S, by the run's own renderer, at
-// kFillPoints samples evenly spread over the motion; every other sample takes the nearest's figures.
+// kFillPoints samples evenly spread over the motion; every other sample interpolates the two around it.
 // Within one render an object's fill is at most what it fills in a memory holding only some of the objects
 // (fewer occluders drawn before it: host::CubeFaceRenderer draws in scene order), so for any ladder each
-// measured figure is a lower bound; the samples between are not rendered.
+// rendered point's figure is a lower bound; the samples between are not rendered, and their figures are
+// an estimate, not a bound (an object that comes close between two rendered points is under-counted).
 struct FillSamples {
   std::vector<double> texels;  // k * objects + i
   int points = 0;              // samples rendered
@@ -144,14 +147,22 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
   renderer.set_fill_by_object(true);
   std::vector<host::FaceImage> faces;
   std::vector<std::vector<int64_t>> at(points);
+  std::vector<size_t> sample_of(points);
   for (size_t j = 0; j < points; ++j) {
-    const size_t k = points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
+    const size_t k = sample_of[j] = points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
     at[j] = renderer.render_faces(scene, {}, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
     progress(static_cast<double>(j + 1) / static_cast<double>(points));
   }
+  // Between two rendered points, each object's fill interpolated linearly in the sample index.
+  size_t j = 0;
   for (size_t k = 0; k < samples; ++k) {
-    const size_t j = samples == 1 ? 0 : (k * (points - 1) + (samples - 1) / 2) / (samples - 1);  // the nearest rendered
-    for (size_t i = 0; i < n; ++i) out.texels[k * n + i] = static_cast<double>(at[j][i]);
+    while (j + 1 < points && sample_of[j + 1] <= k) ++j;
+    const size_t j1 = std::min(j + 1, points - 1);
+    const double f = sample_of[j1] > sample_of[j]
+                         ? static_cast<double>(k - sample_of[j]) / static_cast<double>(sample_of[j1] - sample_of[j])
+                         : 0.0;
+    for (size_t i = 0; i < n; ++i)  // (whole texels, as a render counts them)
+      out.texels[k * n + i] = std::round((1 - f) * static_cast<double>(at[j][i]) + f * static_cast<double>(at[j1][i]));
   }
   out.points = static_cast<int>(points);
   return out;
@@ -165,7 +176,8 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
 // LadderLoad::engine_busy.) The eyes are the default distance apart (`plan` has no --ipd, as for the faces
 // below): a run with wider eyes can send an object to a face this count leaves out.
 std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
-                                   const dp::HostEngineConfig& engine, int eyes, const FillSamples& fill) {
+                                   const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
+  const host::RenderEngine engine(config);  // the run's own cost of a render
   const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
   const size_t n = scene.objects.size();
   std::vector<double> out(ms.t.size() * n);
@@ -176,9 +188,11 @@ std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPat
       const host::Sphere b = o.world_bound(ms.t[k]);
       int faces = 0;
       for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
-      out[k * n + i] = eyes * (engine.object_setup_s +
-                               static_cast<double>(o.mesh->triangles()) * std::max(faces, 1) / engine.triangles_per_s +
-                               fill.texels[k * n + i] / engine.texels_per_s);
+      host::RenderStats drawn;  // what drawing it for one eye costs the engine
+      drawn.objects = 1;
+      drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
+      drawn.texels_filled = std::llround(fill.texels[k * n + i]);
+      out[k * n + i] = eyes * engine.seconds(drawn);
     }
   }
   return out;
@@ -373,7 +387,7 @@ Plan make_plan(const PlanRequest& r) {
   std::vector<LadderLoad> candidates;
   const dp::HostEngineConfig& engine = p.config.host;
   const int eyes = p.config.timing.eyes;
-  const FillSamples fill = measure_fill(scene, walk, ms, S, [&](double f) { progress(0.96 + 0.03 * f, "measuring the fill"); });
+  const FillSamples fill = measure_fill(scene, walk, ms, S, [&](double f) { progress(0.96 + 0.02 * f, "measuring the fill"); });
   p.fill_points = fill.points;
   const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, fill);
   if (n == 0) {
@@ -399,8 +413,10 @@ Plan make_plan(const PlanRequest& r) {
   if (least_busy.engine_busy > 1) {
     double floor_busy = 0;  // every object at every sample once every `cap` frames, mean over the motion
     for (const double e : engine_s) floor_busy += e * hz / cap / static_cast<double>(ms.t.size());
+    // Name the rate that takes most of the engine's time: the fill's, or the triangles' (with set-up).
+    const bool fill_most = least_busy.texels_per_s / engine.texels_per_s > 0.5 * least_busy.engine_busy;
     throw InputError(
-        r.base_source, "host.triangles_per_s",
+        r.base_source, fill_most ? "host.texels_per_s" : "host.triangles_per_s",
         "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.texels_per_s) +
             " texels/s, " + fmt("%.3g", engine.object_setup_s) + " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
             fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg: every ladder keeps it busy more than the whole of each second -- the least " +
@@ -427,9 +443,16 @@ Plan make_plan(const PlanRequest& r) {
       for (size_t i = 0; i < n; ++i)
         base_validity[k * n + i] =
             host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
+  // Its fill at its own face size.
+  const FillSamples base_fill =
+      r.base.memory.face_size == S || n == 0
+          ? fill
+          : measure_fill(scene, walk, ms, r.base.memory.face_size, [&](double f) { progress(0.98 + 0.01 * f, "measuring the fill"); });
+  const std::vector<double> base_engine_s =
+      r.base.memory.face_size == S ? engine_s : engine_seconds(scene, walk, ms, engine, eyes, base_fill);
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
-                                       r.base.memory.update_ratio, base_validity, engine_s, fill, eyes);
+                                       r.base.memory.update_ratio, base_validity, base_engine_s, base_fill, eyes);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -502,6 +525,9 @@ Plan make_plan(const PlanRequest& r) {
                                    std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
                                    "loses those texels and says so"});
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
+  p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
+                          " points of the motion rendered for it: each other point interpolates the two around it, so an "
+                          "object that comes close between two of them and leaves again is under-counted");
   if (p.planned.count > 1)
     p.not_decided.push_back("the depth code's width with several memories (the narrowest that composes them right is not measured)");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
@@ -509,7 +535,7 @@ Plan make_plan(const PlanRequest& r) {
   // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
   // port -- so at any host load each inter-stage FIFO holds one token and the scan-out FIFO the issue slack
   // plus one (a run's report: fifos[].max_occupancy).
-  p.config.timed.fifo_depth = p.config.timed.issue_slack_cycles + 2;
+  p.config.timed.fifo_depth = p.config.timed.min_fifo_depth();
   p.choices.push_back({"timed.fifo_depth", std::to_string(p.config.timed.fifo_depth),
                        "the smallest allowed (timed.issue_slack_cycles + 2): the host writes the display memories through "
                        "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
@@ -525,7 +551,7 @@ Plan make_plan(const PlanRequest& r) {
                            fmt("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
                            fmt("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + fmt("%.3g", engine.texels_per_s) +
                            ", measured by rendering the scene at " + std::to_string(fill.points) +
-                           " points of the motion, each other point taking the nearest's; ladders it could not carry were not considered)"});
+                           " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)"});
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(r.base);
   config::check(p.config, "the plan");

@@ -52,8 +52,8 @@ struct LadderLoad {
   double texels_per_s = 0;        // texels the host fills (passing the depth test), both eyes, mean over the motion
   // The share of each second the rendering engine (host.*) is busy, mean over the motion: every object drawn
   // for each eye at each update of its memory, its set-up, its triangles sent to every face its bound
-  // reaches from both eyes (one at least), and its fill as measured at the nearest point rendered (above 1,
-  // the engine cannot carry the ladder).
+  // reaches from both eyes (one at least), and its fill as measured by rendering (interpolated between the
+  // points rendered). Above 1, the engine cannot carry the ladder.
   double engine_busy = 0;
   double late_share = 0;          // object-samples whose memory updates slower than their validity needs
   std::vector<double> objects;    // mean objects in each memory

@@ -410,31 +410,43 @@ void write_near_ball(TempDir& d) {
 TEST(PlanCli, ThePlansEngineBusyIsWhatARunsEngineIs) {
   TempDir d;
   write_near_ball(d);
+  // Standing still, and walking a metre toward the ball (its fill grows about fourfold: the plan renders 16
+  // points of the walk and interpolates between them). Until the planner sampled only within the motion,
+  // its last point was past a looping walk's end, back at the start, and the walk was 7 % under.
   write(d.file("still.json"), R"({"speed": 0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
-  PlanRequest r = request(d.file("near.json"), d.file("still.json"));
-  r.size_widths = false;
-  r.base.host.object_setup_s = 0;
-  r.base.host.triangles_per_s = 1e15;
-  r.base.host.texels_per_s = 1e7;
-  const Plan p = make_plan(r);
-  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
-  ASSERT_GT(p.planned.texels_per_s, 0);
-  EXPECT_NEAR(p.planned.engine_busy, p.planned.texels_per_s / 1e7, 1e-6 * p.planned.engine_busy);  // the fill is all of it
-  write(d.file("plan.json"), plan_config_text(p));
-  const int frames = 4 * p.config.memory.update_frames;  // four updates of its one memory
-  const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
-                             d.file("plan.json") + " --scene " + d.file("near.json") + " --walk " + d.file("still.json") +
-                             " --report " + d.file("r.json"));
-  ASSERT_EQ(o.status, 0) << o.output;
-  const nlohmann::json rep = test::load_json(d.file("r.json"));
-  double busy_s = 0;
-  int64_t updates = 0;
-  for (const auto& m : rep["host"]["memories"]) {
-    busy_s += m["engine_busy_s"].get<double>();
-    updates += m["updates"].get<int64_t>();
+  write(d.file("toward.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  for (const std::string walk : {"still", "toward"}) {
+    PlanRequest r = request(d.file("near.json"), d.file(walk + ".json"));
+    r.size_widths = false;
+    r.base.host.object_setup_s = 0;
+    r.base.host.triangles_per_s = 1e15;
+    r.base.host.texels_per_s = 1e7;
+    const Plan p = make_plan(r);
+    const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+    ASSERT_GT(p.planned.texels_per_s, 0) << walk;
+    EXPECT_NEAR(p.planned.engine_busy, p.planned.texels_per_s / 1e7, 1e-6 * p.planned.engine_busy) << walk;  // the fill is all of it
+    write(d.file("plan.json"), plan_config_text(p));
+    // Still: four updates of its one memory. Walking: the whole walk.
+    const int frames = walk == "still" ? 4 * p.config.memory.update_frames : static_cast<int>(std::lround(p.motion_s * hz));
+    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
+                               d.file("plan.json") + " --scene " + d.file("near.json") + " --walk " + d.file(walk + ".json") +
+                               " --report " + d.file("r.json"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    const nlohmann::json rep = test::load_json(d.file("r.json"));
+    double busy_s = 0;
+    int64_t updates = 0;
+    for (const auto& m : rep["host"]["memories"]) {
+      busy_s += m["engine_busy_s"].get<double>();
+      updates += m["updates"].get<int64_t>();
+    }
+    int64_t due = 0;  // each memory's updates in `frames` frames, from frame 0
+    for (int m = 0; m < p.config.memory.count; ++m) {
+      const int64_t period = dp::update_period_frames(p.config.memory.update_frames, p.config.memory.update_ratio, m);
+      due += (frames + period - 1) / period;
+    }
+    EXPECT_EQ(updates, walk == "still" ? 4 : due) << walk;
+    EXPECT_NEAR(busy_s / (frames / hz), p.planned.engine_busy, 0.02 * p.planned.engine_busy) << walk;
   }
-  EXPECT_EQ(updates, 4);
-  EXPECT_NEAR(busy_s / (frames / hz), p.planned.engine_busy, 0.02 * p.planned.engine_busy);
 }
 
 // The FIFOs are the smallest the configuration allows, and a cycle-level run of the plan, the host
@@ -468,7 +480,7 @@ TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
   EXPECT_GT(updates, 0);  // the host did render while the pipeline ran
 }
 
-// One memory composes nothing: the plan keeps the narrowest depth code (2 bits, one of them values the
+// One memory composes nothing: the plan keeps the narrowest depth code (2 bits, one of its four values the
 // reserved "empty" code), and a run of it shows the same frames as with the 16-bit code, in a display
 // memory of (24 + 2) / (24 + 16) the size (eyes x 2 buffers x faces x S^2 x texel bits).
 TEST(PlanCli, OneMemoryKeepsTheNarrowestDepthCodeAndShowsTheSameFrames) {

@@ -267,11 +267,9 @@ std::vector<ConfigIssue> validate_timed(const ArpConfig& c) {
   if (c.memory.count > kCompositionInputs)
     ck.fail("memory.count", "is " + std::to_string(c.memory.count) + ", the timed models' composition unit compares at most " +
                                 std::to_string(kCompositionInputs) + " memories");
-  // The scan-out FIFO holds slack + 1 pixels at the start of each clock and,
-  // having no bypass, must have room for one more while it is read.
-  if (tm.fifo_depth < tm.issue_slack_cycles + 2)
+  if (tm.fifo_depth < tm.min_fifo_depth())
     ck.fail("timed.fifo_depth", "is " + std::to_string(tm.fifo_depth) + ", must be at least the issue slack plus two (" +
-                                    std::to_string(tm.issue_slack_cycles + 2) + ") or the scan-out FIFO backs up");
+                                    std::to_string(tm.min_fifo_depth()) + ") or the scan-out FIFO backs up");
   const PipelineSchedule sched(c);
   if (sched.issue_lead() >= sched.vblank_cycles())
     ck.fail("timed.issue_slack_cycles",

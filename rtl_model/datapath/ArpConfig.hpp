@@ -160,6 +160,9 @@ struct TimedConfig {
   int issue_slack_cycles = 2;             // pixels are issued this much earlier than the stage latencies need
   int64_t host_clock_hz = 100'000'000;    // host -> display memory write port clock
   int host_texels_per_cycle = 1;          // texels the write port stores per host clock
+  // The shallowest FIFO allowed: the scan-out FIFO holds slack + 1 pixels at the start of each clock and,
+  // having no bypass, must have room for one more while it is read.
+  int min_fifo_depth() const { return issue_slack_cycles + 2; }
 };
 
 constexpr int kCompositionInputs = 8;     // memories the timed models' composition unit can compare

@@ -82,6 +82,33 @@ void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStrea
   }
 }
 
+passes::EyeSources FunctionalModel::eye_sources(const DisplayMemorySet& mem, int e, std::vector<std::vector<int32_t>>& flat) {
+  const int tpr = mem.bank(0, 0).tiles_per_row(), tpf = tpr * tpr;
+  passes::EyeSources es;
+  es.tiles_per_row = tpr;
+  es.tiles_per_face = tpf;
+  bool dense = true;  // every memory's tiles in table order (see passes::EyeSources::dense)
+  for (int m = 0; m < mem.count(); ++m) {
+    const DisplayMemoryBank& b = mem.bank(e, m);
+    bool any = false;
+    for (int face = 0; face < 6; ++face) any = any || b.front_face_written(face);
+    if (!any) continue;
+    flat.emplace_back(static_cast<size_t>(6) * tpf);
+    for (int face = 0; face < 6; ++face) {
+      const int32_t* tiles = b.front_tile_index(face);
+      for (int k = 0; k < tpf; ++k)  // tile numbers -> word offsets into the pool
+        flat.back()[static_cast<size_t>(face * tpf + k)] = tiles[k] * DisplayMemoryBank::kTileWords;
+    }
+    es.pool[es.count] = b.front_pool();
+    es.offset[es.count] = flat.back().data();
+    es.dense_base[es.count] = b.front_pool() + flat.back()[0];
+    dense = dense && b.front_tiles_in_order();
+    ++es.count;
+  }
+  es.dense = dense && es.count > 1;
+  return es;
+}
+
 template <DividerKind D, AaMode A>
 void FunctionalModel::render_impl(const DisplayMemorySet& mem, const OrientationStream& orientation,
                                   int64_t frame, HmdFrame& out, const RenderOptions& opt) const {
@@ -103,36 +130,11 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   // texels, plus the empty tile) ends below 2^31 words.
   static_assert((int64_t{6} * 512 * 512 + 1) * DisplayMemoryBank::kTileWords < INT32_MAX,
                 "tile word offsets must fit int32 for the largest face_size");
-  // Per eye, the memories holding anything, each with its tile pointers
-  // flattened over the six faces (see passes::EyeSources).
-  const int tpr = mem.bank(0, 0).tiles_per_row(), tpf = tpr * tpr;
+  // Per eye, the memories holding anything (see eye_sources).
   std::vector<passes::EyeSources> sources(static_cast<size_t>(E));
   std::vector<std::vector<int32_t>> flat;
-  flat.reserve(static_cast<size_t>(E) * N);
-  for (int e = 0; e < E; ++e) {
-    passes::EyeSources& es = sources[static_cast<size_t>(e)];
-    es.tiles_per_row = tpr;
-    es.tiles_per_face = tpf;
-    bool dense = true;  // every memory's tiles in table order (see passes::EyeSources::dense)
-    for (int m = 0; m < N; ++m) {
-      const DisplayMemoryBank& b = mem.bank(e, m);
-      bool any = false;
-      for (int face = 0; face < 6; ++face) any = any || b.front_face_written(face);
-      if (!any) continue;
-      flat.emplace_back(static_cast<size_t>(6) * tpf);
-      for (int face = 0; face < 6; ++face) {
-        const int32_t* tiles = b.front_tile_index(face);
-        for (int k = 0; k < tpf; ++k)  // tile numbers -> word offsets into the pool
-          flat.back()[static_cast<size_t>(face * tpf + k)] = tiles[k] * DisplayMemoryBank::kTileWords;
-      }
-      es.pool[es.count] = b.front_pool();
-      es.offset[es.count] = flat.back().data();
-      es.dense_base[es.count] = b.front_pool() + flat.back()[0];
-      dense = dense && b.front_tiles_in_order();
-      ++es.count;
-    }
-    es.dense = dense && es.count > 1;
-  }
+  flat.reserve(static_cast<size_t>(E) * N);  // (the sources point into it: no reallocation)
+  for (int e = 0; e < E; ++e) sources[static_cast<size_t>(e)] = eye_sources(mem, e, flat);
 
   out.resize_to_overwrite(W, H, E, opt.photon_times);  // every pixel and photon time is written below
   out.display_bits = scan_.display_bits();

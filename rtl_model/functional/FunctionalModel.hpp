@@ -54,6 +54,12 @@ class FunctionalModel {
   void render(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation, int64_t frame,
               HmdFrame& out, const RenderOptions& opt = {}) const;
 
+  // What render() reads an eye's memories through: the memories holding anything, each with its tile
+  // pointers flattened over the six faces (kept in `flat`), and whether every one has its tiles in table
+  // order (EyeSources::dense: the several-memory passes then place texels by arithmetic).
+  static passes::EyeSources eye_sources(const dp::DisplayMemorySet& mem, int eye,
+                                        std::vector<std::vector<int32_t>>& flat);
+
  private:
   template <dp::DividerKind D, dp::AaMode A>
   void render_impl(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation, int64_t frame,

@@ -262,7 +262,7 @@ void bilinear_load_impl(const uint64_t* __restrict pool, const int32_t* __restri
     const uint64_t* q = pool + static_cast<int64_t>(offset[tile[i]]) + w0[i];
     std::memcpy(row0 + 2 * i, q, 16);
     std::memcpy(row1 + 2 * i, q + dy[i], 16);
-    if (dx[i] == 0) [[unlikely]] {  // a face's last column: both taps the same texel
+    if (dx[i] == 0) [[unlikely]] {  // a face's first or last column: both taps the same texel
       row0[2 * i + 1] = row0[2 * i];
       row1[2 * i + 1] = row1[2 * i];
     }
@@ -315,7 +315,7 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
 // Pixels [i0, i0 + n) of a line of `line` pixels whose taps are all known: as nearest_load, the prefetch
 // (both rows of a quad) looks ahead across the block's end. Each row of a quad is its two neighbouring
 // words, read and stored as one 16-byte pair (the apron keeps the right-hand word within the stored tile,
-// and below it the apron row): w[k][row][2 i + column]. At a face's last column both taps are the same
+// and below it the apron row): w[k][row][2 i + column]. At a face's first or last column both taps are the same
 // texel (dx 0), and the pair is made so.
 template <int K, bool Dense>
 void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
