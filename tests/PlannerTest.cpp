@@ -191,6 +191,15 @@ TEST(Planner, WhatNeverChangesIsUpdatedOnceASecondAtMost) {
   EXPECT_EQ(p.config.memory.count, 1);
 }
 
+// An engine whose only cost is its triangles (no set-up, the fill made negligible), at this rate; the
+// widths kept.
+void triangles_alone(PlanRequest& r, double triangles_per_s) {
+  r.size_widths = false;
+  r.base.host.object_setup_s = 0;
+  r.base.host.texels_per_s = 1e15;
+  r.base.host.triangles_per_s = triangles_per_s;
+}
+
 // The rendering engine (host.*) must carry the ladder. Standing still before one ball of T triangles,
 // the least an engine can be asked is the ball drawn for each of two eyes once a second (the slowest
 // update when the motion spans no time: a second's frames): 2 T / rate of each second. At T triangles a
@@ -202,10 +211,7 @@ TEST(Planner, AnEngineThatCannotCarryTheSceneIsRefusedNamingTheLeastLoad) {
   const double T = static_cast<double>(host::load_scene_file(d.file("ball.json")).objects.at(0).mesh->triangles());
   PlanRequest r = request(d.file("ball.json"));
   r.walk_speed = 0.0;
-  r.size_widths = false;
-  r.base.host.object_setup_s = 0;
-  r.base.host.texels_per_s = 1e15;  // the fill made negligible: the triangles alone
-  r.base.host.triangles_per_s = T;
+  triangles_alone(r, T);
   const InputError e = test::error_of([&] { make_plan(r); });
   EXPECT_EQ(e.place(), "host.triangles_per_s") << e.what();
   EXPECT_NE(e.reason().find("no theta_t helps"), std::string::npos) << e.what();
@@ -228,10 +234,7 @@ TEST(Planner, AnObjectOnACornerDiagonalCostsTheEngineThreeFaces) {
         R"({"name": "corner", "objects": [{"name": "ball", "sphere": 0.5, "position": [6, 7.6, -6]}]})");
   const double T = static_cast<double>(host::load_scene_file(d.file("corner.json")).objects.at(0).mesh->triangles());
   PlanRequest r = request(d.file("corner.json"), d.file("walk.json"));
-  r.size_widths = false;
-  r.base.host.object_setup_s = 0;
-  r.base.host.texels_per_s = 1e15;  // the fill made negligible: the triangles alone
-  r.base.host.triangles_per_s = T;
+  triangles_alone(r, T);
   const InputError e = test::error_of([&] { make_plan(r); });
   EXPECT_EQ(e.place(), "host.triangles_per_s") << e.what();
   EXPECT_NE(e.reason().find("it needs 6 s a second"), std::string::npos) << e.what();  // 2 eyes x 3 faces x T / T

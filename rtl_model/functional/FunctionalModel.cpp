@@ -133,7 +133,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
   // Per eye, the memories holding anything (see eye_sources).
   std::vector<passes::EyeSources> sources(static_cast<size_t>(E));
   std::vector<std::vector<int32_t>> flat;
-  flat.reserve(static_cast<size_t>(E) * N);  // (the sources point into it: no reallocation)
+  flat.reserve(static_cast<size_t>(E) * N);  // (the sources point into its vectors, whose buffers stay put as it grows)
   for (int e = 0; e < E; ++e) sources[static_cast<size_t>(e)] = eye_sources(mem, e, flat);
 
   out.resize_to_overwrite(W, H, E, opt.photon_times);  // every pixel and photon time is written below
