@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
 #include "MemoryContents.hpp"
 #include "TradeMeasure.hpp"
@@ -132,6 +133,12 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
 // (fewer occluders drawn before it: host::CubeFaceRenderer draws in scene order), so for any ladder each
 // rendered point's figure is a lower bound; the samples between are not rendered, and their figures are
 // an estimate, not a bound (an object that comes close between two rendered points is under-counted).
+// The sample index of the j-th of `points` rendered points, evenly spread over `samples` (the first and the last
+// included).
+size_t rendered_sample(size_t j, size_t points, size_t samples) {
+  return points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
+}
+
 struct FillSamples {
   std::vector<double> texels;  // k * objects + i
   int points = 0;              // samples rendered
@@ -149,7 +156,7 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
   std::vector<std::vector<int64_t>> at(points);
   std::vector<size_t> sample_of(points);
   for (size_t j = 0; j < points; ++j) {
-    const size_t k = sample_of[j] = points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
+    const size_t k = sample_of[j] = rendered_sample(j, points, samples);
     at[j] = renderer.render_faces(scene, {}, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
     progress(static_cast<double>(j + 1) / static_cast<double>(points));
   }
@@ -236,12 +243,40 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
-// The depth code's width for `count` memories: with one there is nothing for the composition unit to
-// compare, and the code only marks a texel empty (its reserved value, at any width), so the narrowest
-// the parameter table allows; with more, the starting configuration's (what composition needs is not
-// measured).
-int depth_bits_for(int count, const dp::ArpConfig& base) {
-  return count == 1 ? static_cast<int>(dp::arp_parameters().find("memory.depth_bits")->int_min) : base.memory.depth_bits;
+// The narrowest depth code the parameter table allows.
+int min_depth_bits() { return static_cast<int>(dp::arp_parameters().find("memory.depth_bits")->int_min); }
+
+// The depth code's width for a ladder of `count` memories not measured (every ladder weighed but the planned
+// one): with one there is nothing for the composition unit to compare, and the code only marks a texel
+// written (its reserved value "empty", at any width), so the narrowest allowed; with more, the starting
+// configuration's.
+int depth_bits_for(int count, const dp::ArpConfig& base) { return count == 1 ? min_depth_bits() : base.memory.depth_bits; }
+
+// The planned ladder's composition at every depth-code width (CompositionDepth): at the fill's rendered points of
+// the motion, each object in the memory the run's priority rule puts it in there (the scheduler replayed over
+// every sample, as ladder_load does), from the walk's point, at face size S.
+CompositionDepth measure_composition(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
+                                     double hz, double threshold_rad, const LadderLoad& L, int S,
+                                     const std::function<void(double)>& progress) {
+  CompositionDepth out;
+  dp::MemoryConfig mc;
+  mc.count = L.count;
+  mc.update_frames = L.update_frames;
+  mc.update_ratio = L.update_ratio;
+  host::PriorityConfig pc = host::PriorityConfig::of(mc, hz);
+  pc.threshold_rad = threshold_rad;
+  host::PriorityScheduler sched(scene, pc, 1);
+  const size_t samples = ms.t.size(), points = std::min<size_t>(samples, kFillPoints);
+  std::vector<int> memory_of(scene.objects.size());
+  for (size_t k = 0, j = 0; k < samples && j < points; ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    if (k != rendered_sample(j, points, samples)) continue;
+    for (size_t i = 0; i < memory_of.size(); ++i) memory_of[i] = sched.belongs_in(i);
+    add_composition_depth(scene, memory_of, L.count, ms.t[k], walk.position(ms.t[k]), S, out);
+    ++j;
+    progress(static_cast<double>(j) / static_cast<double>(points));
+  }
+  return out;
 }
 
 std::string ladder_text(const LadderLoad& L) {
@@ -263,6 +298,8 @@ Plan make_plan(const PlanRequest& r) {
   if (r.walk.empty())
     throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
+  if (r.depth_error && !(*r.depth_error >= 0 && *r.depth_error <= 1))
+    throw InputError("--depth-error", "", "must be a share of the composed texels, 0 .. 1");
   config::check(r.base, r.base_source);
   Plan p;
   p.config = r.base;
@@ -458,16 +495,41 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.update_frames = p.planned.update_frames;
   p.config.memory.update_ratio = p.planned.update_ratio;
   p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
-  p.config.memory.depth_bits = depth_bits_for(p.planned.count, r.base);
-  p.choices.push_back(
-      {"memory.depth_bits", std::to_string(p.config.memory.depth_bits),
-       p.planned.count == 1
-           ? "one memory: the composition unit has nothing to compare, and the depth code only marks a texel empty (its "
-             "reserved value, at any width), so the narrowest allowed; each texel " +
-                 std::to_string(p.config.memory.color_bits() + p.config.memory.depth_bits) + " bits instead of " +
-                 std::to_string(r.base.memory.color_bits() + r.base.memory.depth_bits)
-           : "kept from " + r.base_source + ": " + std::to_string(p.planned.count) +
-                 " memories are composed by depth code, and the width that composition needs is not measured"});
+  // The depth code: with one memory only a written flag; with several, the narrowest that composes them
+  // within the bound, measured.
+  const auto texel_bits = [&] {
+    return "each texel " + std::to_string(p.config.memory.color_bits() + p.config.memory.depth_bits) + " bits instead of " +
+           std::to_string(r.base.memory.color_bits() + r.base.memory.depth_bits);
+  };
+  if (p.planned.count == 1) {
+    p.config.memory.depth_bits = min_depth_bits();
+    p.choices.push_back({"memory.depth_bits", std::to_string(p.config.memory.depth_bits),
+                         "one memory: the composition unit has nothing to compare, and the depth code only marks a texel "
+                         "written (its reserved value \"empty\", at any width), so the narrowest allowed; " + texel_bits()});
+  } else {
+    p.composition = measure_composition(scene, walk, ms, hz, p.threshold_rad, p.planned, S,
+                                        [&](double f) { progress(0.99 + 0.01 * f, "measuring the depth code"); });
+    const int base_bits = r.base.memory.depth_bits;
+    p.depth_error_bound = r.depth_error.value_or(p.composition.share(base_bits));
+    p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), p.depth_error_bound);
+    if (!r.depth_error) p.config.memory.depth_bits = std::min(p.config.memory.depth_bits, base_bits);
+    const int w = p.config.memory.depth_bits;
+    std::string why = std::to_string(p.planned.count) + " memories composed by depth code (the smallest wins, a tie goes to the "
+                      "lower memory), measured at " + std::to_string(p.composition.points) +
+                      " points of the motion: each memory's objects (the run's priority rule) rendered from the walk's point at "
+                      "face size " + std::to_string(S) + " and composed at every width; of " +
+                      std::to_string(p.composition.composed) + " texels where two or more memories hold a surface, " +
+                      "composed from a memory whose surface is not the nearest: " + fmt("%.3g", p.composition.share(w)) + " at " +
+                      std::to_string(w) + (w == 1 ? " bit" : " bits");
+    if (w > min_depth_bits()) why += ", " + fmt("%.3g", p.composition.share(w - 1)) + " at " + std::to_string(w - 1);
+    why += ", " + fmt("%.3g", p.composition.share(base_bits)) + " at " + std::to_string(base_bits) + " (" + r.base_source +
+           "'s); the narrowest whose share, and every wider width's, is within " + fmt("%.3g", p.depth_error_bound) +
+           (r.depth_error ? " (--depth-error)" : " (what " + r.base_source + "'s width measures: --depth-error)") + "; " +
+           texel_bits();
+    if (w == min_depth_bits() && p.composition.wrong[static_cast<size_t>(w)] == 0)
+      why += " (every nearer surface is in a faster memory: a tie, won by the lower memory, is right)";
+    p.choices.push_back({"memory.depth_bits", std::to_string(w), why});
+  }
   if (n == 0) {
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio", "1, 1, 2",
                          "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
@@ -529,7 +591,9 @@ Plan make_plan(const PlanRequest& r) {
                           " points of the motion rendered for it: each other point interpolates the two around it, so an "
                           "object that comes close between two of them and leaves again is under-counted");
   if (p.planned.count > 1)
-    p.not_decided.push_back("the depth code's width with several memories (the narrowest that composes them right is not measured)");
+    p.not_decided.push_back("a bound on the depth code's composition: it is measured from the walk's point at the " +
+                            std::to_string(p.composition.points) + " points rendered, each memory as if rendered there and "
+                            "then; a run renders a slower memory from where the head was at its last update");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   // 5. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
   // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
@@ -591,12 +655,23 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   for (const LadderLoad& L : p.ladders) {
     dp::ArpConfig c = p.config;
     c.memory.count = L.count;
-    c.memory.depth_bits = depth_bits_for(L.count, r.base);
+    const bool planned = L.count == p.planned.count && L.update_ratio == p.planned.update_ratio;
+    c.memory.depth_bits = planned ? p.config.memory.depth_bits : depth_bits_for(L.count, r.base);
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
          fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(display_memory_bytes(c)) / 1048576.0) +
-         (L.count == p.planned.count && L.update_ratio == p.planned.update_ratio ? " (planned)" : "") + " |\n";
+         (planned ? " (planned)" : "") + " |\n";
+  }
+  if (p.composition.points > 0) {
+    s += "\n## The depth code's composition, by width\n\nThe share of the " + std::to_string(p.composition.composed) +
+         " texels where two or more of the planned memories hold a surface that the code composes from a memory whose surface "
+         "is not the nearest (" + std::to_string(p.composition.points) + " points of the motion, from the walk's point).\n\n"
+         "| bits | composed wrong | share | |\n| --- | --- | --- | --- |\n";
+    for (int w = 1; w <= CompositionDepth::kMaxBits; ++w)
+      s += "| " + std::to_string(w) + " | " + std::to_string(p.composition.wrong[static_cast<size_t>(w)]) + " | " +
+           fmt("%.3g", p.composition.share(w)) + " | " +
+           (w == p.config.memory.depth_bits ? "planned" : w == r.base.memory.depth_bits ? r.base_source : "") + " |\n";
   }
   s += "\n## Not decided by this plan\n\n";
   for (const auto& n : p.not_decided) s += "- " + n + "\n";

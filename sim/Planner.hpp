@@ -9,7 +9,9 @@
 //   classes): each object's validity period over the motion at theta_t, put
 //   through the run's own priority rule (host::PriorityScheduler) for every
 //   candidate ladder, the host's rendering load measured for each;
-// - the cube faces any object reaches over the motion.
+// - the cube faces any object reaches over the motion;
+// - the depth code: a written flag for one memory, the narrowest that composes
+//   several within a bound, measured (CompositionDepth).
 // What it does not decide yet is listed in the plan itself (Plan::not_decided).
 #pragma once
 #include <array>
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "CompositionDepth.hpp"
 #include "HardwareCost.hpp"
 #include "RunSpec.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
@@ -36,6 +39,9 @@ struct PlanRequest {
   std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"
   double load_tolerance = 0.10;        // a memory more must save more than this share of the host's load
   bool size_widths = true;             // false: keep the starting configuration's datapath widths (--keep-widths)
+  // The share of composed texels (two or more memories hold a surface) the depth code may compose from the
+  // wrong memory, with several memories (unset: what the starting configuration's width measures).
+  std::optional<double> depth_error;
   std::function<void(double, const std::string&)> progress;
 };
 
@@ -80,6 +86,9 @@ struct Plan {
   std::vector<LadderLoad> ladders;        // every candidate weighed
   double fastest_need_frames = 0;        // the shortest validity of any object, in display frames
   std::array<bool, 6> faces_reached{};    // by some object at some point of the motion
+  // Depth code (several memories): the planned ladder's composition at every width, and the bound used
+  CompositionDepth composition;
+  double depth_error_bound = 0;
   // Display memory as hardware (eyes x memories x 2 buffers x 6 faces x S^2 x texel bits)
   int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
 };

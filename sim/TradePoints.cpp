@@ -50,6 +50,7 @@ const std::vector<WidthRow>& width_rows() {
        {"datapath.texel_frac=6", "memory.count=8", "memory.red_bits=5", "memory.green_bits=6", "memory.blue_bits=5",
         "memory.depth_bits=24", "memory.background=[16,69,165]", "timed.compose_latency=2", "timed.filter_latency=3"},
        true},
+      {"flag1", {"memory.count=2", "memory.depth_bits=1"}, true},
       {"q16", {"datapath.vec_frac=16", "datapath.mat_frac=16", "datapath.rot_frac=16"}, false},
       {"q13", {"datapath.vec_frac=13", "datapath.mat_frac=13", "datapath.rot_frac=13"}, false},
       {"q11", {"datapath.vec_frac=11", "datapath.mat_frac=11", "datapath.rot_frac=11"}, false},

@@ -11,6 +11,8 @@
 #include "common/InputError.hpp"
 #include "host/priority/PriorityScheduler.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
+#include "host/render/CubeFaceRenderer.hpp"
+#include "host/render/DepthCode.hpp"
 #include "host/scene/Primitives.hpp"
 #include "host/scene/SceneFile.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
@@ -98,11 +100,11 @@ TEST(Planner, OneFarObjectNeedsOneMemoryAndOneFace) {
   EXPECT_EQ(p.config.memory.update_frames, 1 << static_cast<int>(std::floor(std::log2(need))));  // the largest power of two within it
   const std::array<bool, 6> only_minus_z{false, false, false, false, false, true};
   EXPECT_EQ(p.faces_reached, only_minus_z);
-  // The memory keeps that face only: two eyes x one memory x two buffers x one face x S^2 x (24 + 2) bits
-  // (one memory: the narrowest depth code).
+  // The memory keeps that face only: two eyes x one memory x two buffers x one face x S^2 x (24 + 1) bits
+  // (one memory: the narrowest depth code, a written flag).
   EXPECT_EQ(p.config.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
   const int64_t S = p.config.memory.face_size;
-  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 26 / 8);
+  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 25 / 8);
 }
 
 // An object that only an eye reaches a face with: seen from the walk's line the ball's bound is 1 cm
@@ -134,7 +136,9 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
   r.threshold_deg = 1;
   const Plan p = make_plan(r);
   EXPECT_GT(p.config.memory.count, 1);
-  EXPECT_EQ(p.config.memory.depth_bits, r.base.memory.depth_bits);  // several memories compose: the width is kept
+  // No two of the balls are ever seen in one direction: nothing is composed, and a tie can never be wrong.
+  EXPECT_EQ(p.composition.composed, 0);
+  EXPECT_EQ(p.config.memory.depth_bits, 1);
   LadderLoad one;
   for (const auto& L : p.ladders)
     if (L.count == 1) one = L;
@@ -144,6 +148,49 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
     if (L.count < p.planned.count) {
       EXPECT_GT(L.triangles_per_s, p.best.triangles_per_s * (1 + r.load_tolerance)) << L.count;
     }
+}
+
+// Two memories composed by depth code, in closed form. A 3 m square 2 m ahead of the eye in memory 1, in
+// front of a wall 2.2 m ahead in memory 0: along any ray the wall is 1.1x as far, so the codes of a
+// logarithmic depth code with M = 2^w - 2 steps over ln(far / near) are ln(1.1) M / ln(far / near) steps
+// apart: at least one step -- never a tie -- from the width where that reaches 1 (7 bits over 0.05 ..
+// 1000 m); below it the square's texels can tie, and a tie goes to memory 0, the wall, wrongly; at 1 or
+// 2 bits every code is the same (0 and 1 of 0 .. 2). With the memories the other way round every tie is
+// won by the nearer square: right at every width.
+TEST(CompositionDepth, TiesBelowTheWidthTheDistanceRatioNeedsAndOnlyWhereTheNearerIsInTheHigherMemory) {
+  host::Scene s;
+  host::Material m;
+  host::add_object(s, "square", std::make_shared<host::Mesh>(host::make_quad(3, 3)), {0, 0, -2}, m);
+  host::add_object(s, "wall", std::make_shared<host::Mesh>(host::make_quad(12, 12)), {0, 0, -2.2}, m);
+  const host::DepthCode dc;
+  const double steps_per_code = std::log(1.1) / std::log(dc.far_m / dc.near_m);
+  int needed = 1;
+  while (((int64_t{1} << needed) - 2) * steps_per_code < 1) ++needed;
+  ASSERT_EQ(needed, 7);
+  // The square's texels, counted from a render of it alone: where both memories hold a surface.
+  std::vector<host::FaceImage> alone;
+  host::CubeFaceRenderer().render_faces(s, {0}, 0.0, {0, 0, 0}, 128, alone);
+  int64_t square = 0;
+  for (const auto& f : alone)
+    for (const double d : f.distance) square += std::isfinite(d) ? 1 : 0;
+  ASSERT_GT(square, 1000);
+
+  CompositionDepth wrong_way;
+  add_composition_depth(s, {1, 0}, 2, 0.0, {0, 0, 0}, 128, wrong_way);
+  EXPECT_EQ(wrong_way.points, 1);
+  EXPECT_EQ(wrong_way.composed, square);
+  EXPECT_EQ(wrong_way.wrong[1], square);
+  EXPECT_EQ(wrong_way.wrong[2], square);
+  EXPECT_GT(wrong_way.wrong[needed - 1], 0);
+  for (int w = needed; w <= CompositionDepth::kMaxBits; ++w) EXPECT_EQ(wrong_way.wrong[static_cast<size_t>(w)], 0) << w;
+  EXPECT_EQ(wrong_way.narrowest(1, 0.0), needed);
+  EXPECT_EQ(wrong_way.narrowest(1, 1.0), 1);
+
+  CompositionDepth right_way;
+  add_composition_depth(s, {0, 1}, 2, 0.0, {0, 0, 0}, 128, right_way);
+  EXPECT_EQ(right_way.composed, square);
+  for (int w = 1; w <= CompositionDepth::kMaxBits; ++w) EXPECT_EQ(right_way.wrong[static_cast<size_t>(w)], 0) << w;
+  EXPECT_EQ(right_way.narrowest(1, 0.0), 1);
 }
 
 // A loose bound gives narrower widths than a tight one, and the harness, run afresh on the plan,
@@ -256,6 +303,17 @@ TEST(Planner, ABoundNoWidthsMeetNamesTheBestAchievable) {
   EXPECT_NE(std::string(e.what()).find("the best achievable is"), std::string::npos) << e.what();
 }
 
+TEST(Planner, ADepthErrorThatIsNoShareIsRefused) {
+  TempDir d;
+  write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
+  for (const double bad : {-0.1, 1.5, std::nan("")}) {
+    PlanRequest r = request(d.file("empty.json"));
+    r.depth_error = bad;
+    const InputError e = test::error_of([&] { make_plan(r); });
+    EXPECT_EQ(e.source(), "--depth-error") << bad;
+  }
+}
+
 TEST(PriorityLadder, MemoriesUpdateAtTheConfiguredPeriods) {
   host::Scene s;
   host::PriorityConfig pc;
@@ -358,10 +416,10 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   }
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
   const nlohmann::json& fp = rep[0]["footprint"];
-  const int64_t S = c.memory.face_size, hw = 2 * c.memory.count * 2 * 1 * S * S * (24 + c.memory.depth_bits) / 8;
+  const int64_t S = c.memory.face_size, hw_bits = 2 * c.memory.count * 2 * 1 * S * S * (24 + c.memory.depth_bits), hw = hw_bits / 8;
   EXPECT_EQ(fp["display_memory_faces"], 1);
   EXPECT_EQ(fp["display_memory_bytes_hardware"], hw);
-  EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 6 * hw);
+  EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 6 * hw_bits / 8);
   EXPECT_EQ(fp["texels_lost_on_absent_faces"], 0);
   // What was allocated: the ball's tiles (33 x 33 words of 8 bytes each, at least one an eye) within the peak.
   const int64_t tiles = fp["display_memory_tiles_at_end"].get<int64_t>();
@@ -483,17 +541,17 @@ TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
   EXPECT_GT(updates, 0);  // the host did render while the pipeline ran
 }
 
-// One memory composes nothing: the plan keeps the narrowest depth code (2 bits, one of its four values the
-// reserved "empty" code), and a run of it shows the same frames as with the 16-bit code, in a display
-// memory of (24 + 2) / (24 + 16) the size (eyes x 2 buffers x faces x S^2 x texel bits).
+// One memory composes nothing: the plan keeps the narrowest depth code (1 bit: a written flag, its other
+// value the reserved "empty" code), and a run of it shows the same frames as with the 16-bit code, in a
+// display memory of (24 + 1) / (24 + 16) the size (eyes x 2 buffers x faces x S^2 x texel bits).
 TEST(PlanCli, OneMemoryKeepsTheNarrowestDepthCodeAndShowsTheSameFrames) {
   TempDir d;
   const auto r = plan_ball_and_walk(d);
   ASSERT_EQ(r.status, 0) << r.output;
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.count, 1);
-  EXPECT_EQ(c.memory.depth_bits, 2);
-  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.depth_bits | 2 | one memory"), std::string::npos);
+  EXPECT_EQ(c.memory.depth_bits, 1);
+  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.depth_bits | 1 | one memory"), std::string::npos);
   nlohmann::json rep[2];
   for (int wide = 0; wide < 2; ++wide) {
     const std::string j = d.file("r" + std::to_string(wide) + ".json");
@@ -505,8 +563,36 @@ TEST(PlanCli, OneMemoryKeepsTheNarrowestDepthCodeAndShowsTheSameFrames) {
   }
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
   const int64_t S = c.memory.face_size, faces = c.memory.faces_present();
-  EXPECT_EQ(rep[0]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * faces * S * S * 26 / 8);
+  EXPECT_EQ(rep[0]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * faces * S * S * 25 / 8);
   EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * faces * S * S * 40 / 8);
+}
+
+// Several memories whose nearer surfaces are always in the faster memory: a ball walked toward before a
+// wall 300 m away. Every texel the two share is won by the ball, in memory 0, at any width -- ties
+// included -- so the plan takes a 1-bit code, and a run of it shows the same frames as with 16 bits.
+TEST(PlanCli, ANearBallBeforeAFarWallComposesRightWithAOneBitDepthCode) {
+  TempDir d;
+  write(d.file("wall.json"), R"({"name": "wall", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -3]},
+    {"name": "wall", "quad": [400, 400, 0], "position": [0, 1.6, -300]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  const auto r = run_command(kArpsim + " plan -q --scene " + d.file("wall.json") + " --walk " + d.file("walk.json") +
+                             " --threshold-deg 1 --set display.h_active=160 --set display.v_active=120 -o " + d.file("plan.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const dp::ArpConfig c = config::load_file(d.file("plan.json"));
+  ASSERT_GT(c.memory.count, 1);
+  EXPECT_EQ(c.memory.depth_bits, 1);
+  const std::string md = read_text(d.file("plan.md"));
+  EXPECT_NE(md.find("every nearer surface is in a faster memory"), std::string::npos) << md;
+  nlohmann::json rep[2];
+  for (int wide = 0; wide < 2; ++wide) {
+    const std::string j = d.file("r" + std::to_string(wide) + ".json");
+    const auto o = run_command(kArpsim + " run -q --frames 4 --every 0 --error-every 0 --config " + d.file("plan.json") +
+                               " --scene " + d.file("wall.json") + " --walk " + d.file("walk.json") +
+                               (wide ? " --set memory.depth_bits=16" : "") + " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    rep[wide] = test::load_json(j);
+  }
+  EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
 }
 
 }  // namespace

@@ -58,6 +58,10 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_option("--load-tolerance", a->req.load_tolerance,
                   "A display memory more must cut the host's load by more than this share of the least load")
       ->capture_default_str();
+  cmd->add_option_function<double>(
+      "--depth-error", [a](double v) { a->req.depth_error = v; },
+      "With several memories: the share of the texels two or more memories hold that the depth code may compose from the "
+      "wrong memory (default: what the starting configuration's width measures)");
   cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
                 "Keep the starting configuration's datapath widths (no accuracy-harness search)");
   cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();

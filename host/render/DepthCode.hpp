@@ -31,7 +31,9 @@ struct DepthCode {
   // reach a thousandth of that margin.
   void codes(const double* distance_m, uint32_t* out, size_t n) const;
   static constexpr double kTieMargin = 1e-3;
+  // At 1 bit every distance is code 0 (the code only marks a texel written): it stands for the near distance.
   double distance(uint32_t c) const {
+    if (max_code() == 0) return near_m;
     return near_m * std::exp(static_cast<double>(c) / max_code() * std::log(far_m / near_m));
   }
 };

@@ -114,8 +114,8 @@ ParameterTable<ArpConfig> make_parameters() {
            "red channel width (red + green + blue at most 32)");
   t.number("memory.green_bits", [](auto& c) -> auto& { return c.memory.green_bits; }, 1, 16, "bits", "green channel width");
   t.number("memory.blue_bits", [](auto& c) -> auto& { return c.memory.blue_bits; }, 1, 16, "bits", "blue channel width");
-  t.number("memory.depth_bits", [](auto& c) -> auto& { return c.memory.depth_bits; }, 2, 32, "bits",
-           "depth code width; the code 2^bits - 1 is reserved for \"empty\"");
+  t.number("memory.depth_bits", [](auto& c) -> auto& { return c.memory.depth_bits; }, 1, 32, "bits",
+           "depth code width; the code 2^bits - 1 is reserved for \"empty\" (1 bit: a written flag, for one memory)");
   t.number("memory.background", [](auto& c) -> auto& { return c.memory.background; }, 0, 255, "RGB8",
            "colour shown where every memory is empty");
   t.number("memory.faces", [](auto& c) -> auto& { return c.memory.faces; }, 0, 1, "",

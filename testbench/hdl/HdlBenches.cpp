@@ -430,13 +430,14 @@ void bench_comp(const HdlConfig& cfg, int mutant, const std::function<void()>& b
   std::mt19937 rng(20261125);
   std::uniform_int_distribution<uint32_t> color(0, max_color), depth(0, empty), small(0, 3), pick(0, 7);
   std::vector<std::vector<uint64_t>> words;
-  auto word = [](uint32_t c, uint32_t d) { return (uint64_t{d} << 32) | c; };
+  // A stored depth has the code's width (empty is all its ones): the bench's fixed codes are masked to it.
+  auto word = [empty](uint32_t c, uint32_t d) { return (uint64_t{d & empty} << 32) | c; };
   // Directed: all empty; one memory holding the texel, in each position; all at
   // one depth (ties); depth 0 and the deepest non-empty code.
   words.push_back(std::vector<uint64_t>(static_cast<size_t>(n), word(color(rng), empty)));
   for (int k = 0; k < n; ++k) {
     std::vector<uint64_t> w(static_cast<size_t>(n), word(color(rng), empty));
-    w[static_cast<size_t>(k)] = word(color(rng), 5);
+    w[static_cast<size_t>(k)] = word(color(rng), std::min<uint32_t>(5, empty - 1));  // (written at any width)
     words.push_back(w);
     for (uint32_t d : {0u, empty - 1, 7u}) {
       std::vector<uint64_t> t(static_cast<size_t>(n));
