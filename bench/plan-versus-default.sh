@@ -7,8 +7,12 @@
 # rendering load, the image error against one truth for both (--truth-face-size TRUTH: the plan's face
 # and the default's differ, and each against a truth of its own size would not compare). Runs alternate (default, plan, ...) and the
 # best speed of RUNS is kept: a neighbour on a shared machine only slows a run.
+# Then each configuration once with the head standing at the walk's start and turning at 30 deg/s (121
+# frames): the image error the faces and the datapath make, without the walk's translation lag (which
+# dominates the walking PSNR and does not depend on them), against an area-sampled truth (faces of
+# STILL_TRUTH, 2 x 2 samples a pixel: --truth-supersample).
 # Usage: bench/plan-versus-default.sh SCENE WALK   (env: ARPSIM, FRAMES=120, RUNS=2, THETA=0: --threshold-deg, TRUTH=1024,
-#        PLAN_ARGS: more options for arpsim plan). Needs jq.
+#        STILL_TRUTH=2048, PLAN_ARGS: more options for arpsim plan). Needs jq.
 set -euo pipefail
 SCENE=$1 WALK=$2
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
@@ -16,6 +20,7 @@ FRAMES=${FRAMES:-120}
 RUNS=${RUNS:-2}
 THETA=${THETA:-0}
 TRUTH=${TRUTH:-1024}
+STILL_TRUTH=${STILL_TRUTH:-2048}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # shellcheck disable=SC2086
@@ -34,12 +39,20 @@ for _ in $(seq "$RUNS"); do
   one default
   one plan --config "$tmp/plan.json"
 done
-echo "| configuration | memories | face | display memory, hardware MiB | modelled peak MiB | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+still() {  # name, config args... -> $tmp/still-NAME.json
+  local name=$1; shift
+  "$ARPSIM" run -q "$@" --scene "$SCENE" --walk "$WALK" --speed 0 --motion rotate --rate 30 --threshold-deg "$THETA" --frames 121 \
+    --every 0 --error-every 20 --truth-face-size "$STILL_TRUTH" --truth-supersample 2 --report "$tmp/still-$name.json" > /dev/null
+}
+still default
+still plan --config "$tmp/plan.json"
+echo "| configuration | memories | face | display memory, hardware MiB | modelled peak MiB | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for name in default plan; do
-  jq -r --arg n "$name" '(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000 - .host.error.wall_seconds) as $pipe |
+  jq -r --arg n "$name" --slurpfile still "$tmp/still-$name.json" '(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000 - .host.error.wall_seconds) as $pipe |
     "| \($n) | \(.config.memory.count) every \(.config.memory.update_frames) x \(.config.memory.update_ratio)^m | \(.config.memory.face_size) | " +
     "\(.footprint.display_memory_bytes_hardware / 1048576 * 10 | round / 10) | \(.footprint.display_memory_bytes_peak / 1048576 * 10 | round / 10) | " +
     "\(.host.host_wall_ms_per_frame * 10 | round / 10) | \(.simulation.pixel_clocks / $pipe / 1e4 | round / 100) | \(.host.triangles_per_s | round) | " +
-    "\(.host.error.mean_psnr_db * 100 | round / 100) | \(.host.error.worst_share_showing_another_object * 10000 | round / 10000) |"' "$tmp/run-$name.json"
+    "\(.host.error.mean_psnr_db * 100 | round / 100) | \(.host.error.worst_share_showing_another_object * 10000 | round / 10000) | " +
+    "\($still[0].host.error.mean_psnr_db * 100 | round / 100) |"' "$tmp/run-$name.json"
 done

@@ -48,6 +48,7 @@ struct OutputSpec {
   std::string vcd_signals = "all";          // --vcd-signals: all, or control (no register data fields)
   int64_t error_every = 10;      // --error-every (walks)
   int truth_face_size = 0;       // --truth-face-size: the truth's face size (0: the run's own)
+  int truth_supersample = 1;     // --truth-supersample: the truth's pixel as the mean of N x N samples over it
   std::string tear_image, tear_at;
 };
 

@@ -102,6 +102,15 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (o.truth_face_size != 0 && (o.error_every <= 0 || h.walk.empty()))
     throw InputError("--truth-face-size", std::to_string(o.truth_face_size),
                      "needs --walk and --error-every > 0 (it sizes the truth the error is measured against)");
+  if (o.truth_supersample != 1 && (o.error_every <= 0 || h.walk.empty()))
+    throw InputError("--truth-supersample", std::to_string(o.truth_supersample),
+                     "needs --walk and --error-every > 0 (it samples the truth the error is measured against)");
+  if (o.truth_supersample < 1 || o.truth_supersample > 4)
+    throw InputError("--truth-supersample", std::to_string(o.truth_supersample), "must be 1 .. 4 samples a pixel across");
+  if (o.truth_supersample > 1 && s.config.timing.fields_per_frame != 1)
+    throw InputError("--truth-supersample", std::to_string(o.truth_supersample),
+                     "needs a progressive display (display.fields_per_frame 1): an interlaced one would take a pixel's "
+                     "rows of samples in different fields");
   if (o.truth_face_size != 0) {  // its range (the key's) before what it would cost
     dp::ArpConfig t = s.config;
     set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);
@@ -689,6 +698,7 @@ RunSummary Session::run() {
     ps.frames = spec_.frames;
     ps.every = o.error_every;
     ps.truth_face_size = o.truth_face_size;
+    ps.supersample = o.truth_supersample;
     ps.tear_image = o.tear_image;
     ps.tear_at = o.tear_at;
     probe_ = std::make_unique<TruthProbe>(ps);

@@ -44,11 +44,27 @@ dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
   return c;
 }
 
+// The truth's image pipeline at n times the display's resolution over the same field: every active and blanking
+// count n times, the pixel clock n^2 times (the same frame and line times: each row of n x n samples is taken
+// within its display line, in n lines of 1/n its time), the lens centre's offset n times.
+dp::ArpConfig supersampled(const dp::ArpConfig& truth, int n) {
+  dp::ArpConfig c = truth;
+  dp::VideoTimingConfig& t = c.timing;
+  for (int* v : {&t.h_active, &t.h_front_porch, &t.h_sync, &t.h_back_porch, &t.v_active, &t.v_front_porch, &t.v_sync,
+                 &t.v_back_porch})
+    *v *= n;
+  t.pixel_clock_hz *= int64_t{n} * n;
+  c.lens.center_offset_px *= n;
+  return c;
+}
+
 }  // namespace
 
 TruthProbe::TruthProbe(const TruthProbeSetup& s)
     : s_(s),
       truth_cfg_(truth_config(*s.config, s.truth_face_size)),
+      truth_image_cfg_(supersampled(truth_cfg_, s.supersample)),
+      timing_(s.config->timing),
       lens_(s.config->lens, s.config->timing, s.config->widths.vec_frac),
       rot_(s.config->widths),
       addr_(s.config->widths, s.config->memory.face_size),
@@ -74,7 +90,7 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
   }
   if (!own_truth_) truth_lens_.emplace(truth_cfg_.lens, truth_cfg_.timing, truth_cfg_.widths.vec_frac);
   truth_mem_ = std::make_unique<dp::DisplayMemorySet>(truth_cfg_.memory, c.timing.eyes);
-  truth_model_ = std::make_unique<FunctionalModel>(truth_cfg_);
+  truth_model_ = std::make_unique<FunctionalModel>(truth_image_cfg_);
 }
 
 TruthProbe::~TruthProbe() = default;
@@ -85,7 +101,7 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
   const dp::DisplayMemorySet& mem = *s_.memories;
   const host::HostSimulation& hostsim = *s_.host;
   const host::Scene& scene = *s_.scene;
-  const dp::VideoTiming& t = truth_model_->timing();
+  const dp::VideoTiming& t = timing_;
   const double tm = static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame) + t.frame_cycles() / 2)) * 1e-12;
   const dp::Quat& hq = stream[stream.index_at(static_cast<int64_t>(std::llround(tm * 1e12)))].q;
   const glm::dquat q(hq.w, hq.x, hq.y, hq.z);
@@ -100,6 +116,7 @@ void TruthProbe::measure(const HmdFrame& f, int64_t frame, nlohmann::json& out) 
   RenderOptions tro;
   tro.threads = s_.threads;
   truth_model_->render(*truth_mem_, stream, frame, truth, tro);
+  if (s_.supersample > 1) truth = host::area_mean(truth, s_.supersample);
   const host::ImageError ie = host::image_error(f, truth);
   // Tracked points: each object's centre, where its memory's image shows it against where it is.
   const glm::dvec3 eye_now = host::eye_position(s_.walk->position(tm), q, 0, c.timing.eyes, s_.ipd_m);
@@ -215,6 +232,7 @@ nlohmann::json TruthProbe::summary() const {
     }
   return {{"frames_measured", psnrs_.size()},
           {"truth_face_size", truth_cfg_.memory.face_size},
+          {"truth_supersample", s_.supersample},
           {"frames_identical_to_truth", static_cast<int64_t>(psnrs_.size()) - differing},
           {"mean_psnr_db", psnrs_.empty() ? 0.0 : differing ? mean / static_cast<double>(differing) : 999.0},
           {"worst_psnr_db", psnrs_.empty() ? 0.0 : worst},

@@ -18,6 +18,7 @@
 #include "host/error/TearImage.hpp"
 #include "host/motion/WalkPath.hpp"
 #include "host/priority/HostSimulation.hpp"
+#include "rtl_model/datapath/VideoTiming.hpp"
 #include "host/regions/Segmentation.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
@@ -39,6 +40,7 @@ struct TruthProbeSetup {
   int threads = 0;
   int64_t first_frame = 0, frames = 1, every = 1;  // the frames measured: first + k * every
   int truth_face_size = 0;  // 0: the truth reads as the run does; N: one reference at face size N (TruthProbe.cpp)
+  int supersample = 1;      // the truth's pixels: the mean of N x N samples over each (its pipeline at N x the resolution)
   std::string tear_image, tear_at;                 // --tear-image, --tear-at FRAME:EYE:X:Y
 };
 
@@ -64,7 +66,9 @@ class TruthProbe {
   };
   TruthProbeSetup s_;
   TearAt tear_at_;
-  dp::ArpConfig truth_cfg_;
+  dp::ArpConfig truth_cfg_;        // the truth's memory and arithmetic, at the run's display (what each pixel addresses)
+  dp::ArpConfig truth_image_cfg_;  // the same at N x the display's resolution (its image; = truth_cfg_ at N = 1)
+  dp::VideoTiming timing_;         // the run's
   std::unique_ptr<dp::DisplayMemorySet> truth_mem_;
   std::unique_ptr<FunctionalModel> truth_model_;
   dp::LensVectorTable lens_;

@@ -154,6 +154,22 @@ TEST(FrameError, PsnrAndDisplacement) {
   EXPECT_EQ(displacement_rad({0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}), 0.0);
 }
 
+// The mean of each n x n block, channel by channel, rounded to the nearest code (halves up): worked by hand.
+TEST(FrameError, AreaMeanAveragesEachBlockOfSamplesChannelByChannel) {
+  HmdFrame fine;
+  fine.resize(4, 2, 1, false);
+  // Left block: red 10, 11, 12, 14 (mean 11.75 -> 12); green 0, 0, 0, 1 (0.25 -> 0); blue 255 x 4.
+  // Right block: red 1, 2, 0, 0 (0.75 -> 1); green 1, 1, 0, 0 (0.5 -> 1, a half rounds up); blue 0.
+  const uint32_t px[2][4] = {{0x0a00ff, 0x0b00ff, 0x010100, 0x020100}, {0x0c00ff, 0x0e01ff, 0x000000, 0x000000}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) fine.pixels[fine.index(0, x, y)] = px[y][x];
+  const HmdFrame out = area_mean(fine, 2);
+  ASSERT_EQ(out.width, 2);
+  ASSERT_EQ(out.height, 1);
+  EXPECT_EQ(out.pixels[0], 0x0c00ffu);
+  EXPECT_EQ(out.pixels[1], 0x010100u);
+}
+
 // When objects change memory: only at frames where the memories are due
 // anyway. Walking away from a row of balls, objects go to slower memories and
 // every memory renders exactly on its schedule, no more (moves used to force

@@ -57,6 +57,10 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
                   "With --walk: the face size of the truth the error is measured against (0: the run's own memory.face_size). "
                   "A fixed size compares runs whose faces differ: each against the same truth")
       ->capture_default_str();
+  cmd->add_option("--truth-supersample", o.truth_supersample,
+                  "With --walk: the truth's pixel is the mean of N x N samples over it (its pipeline at N x the display's "
+                  "resolution, 1 .. 4), an area-sampled image rather than one sample at the pixel's centre")
+      ->capture_default_str();
   cmd->add_option("--host-csv", o.host_csv, "With --walk: CSV, one row per display memory (rates, load); needs --report");
   cmd->add_option("--tear-image", o.tear_image,
                   "--regions: write a magnified view (8x) of the 48x32 window with the most crack pixels: displayed | truth | "

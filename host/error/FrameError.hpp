@@ -21,6 +21,10 @@ struct ImageError {
 
 ImageError image_error(const HmdFrame& shown, const HmdFrame& reference);
 
+// A frame n times as wide and as high brought to its own size: each pixel's channels the mean of the n x n
+// pixels over it, rounded to the nearest code (halves up). Photon times are not kept.
+HmdFrame area_mean(const HmdFrame& fine, int n);
+
 // Angle (radians) between two directions from eyes to a point seen then and now.
 double displacement_rad(const glm::dvec3& eye_then, const glm::dvec3& point_then, const glm::dvec3& eye_now,
                         const glm::dvec3& point_now);
