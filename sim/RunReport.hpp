@@ -26,6 +26,9 @@ struct RunSummary {
   bool cycle_accurate = false;
   int64_t underflows = 0, late_discarded = 0, swaps = 0;
   int64_t pixel_clocks = 0;
+  // What was modelled (the report's footprint): SystemC modules elaborated (0 at the functional level), display
+  // memory allocated at its peak and what the configuration's hardware holds, banks, texels the host stored.
+  int64_t systemc_modules = 0, memory_bytes_peak = 0, memory_bytes_hardware = 0, memory_banks = 0, texels_written = 0;
   double wall_seconds = 0;
   int64_t images = 0;
   std::string out_dir, vcd, gtkw;

@@ -745,6 +745,11 @@ RunSummary Session::run() {
   s.underflows = res.underflows;
   s.late_discarded = res.late_discarded;
   s.swaps = res.swaps;
+  s.systemc_modules = res.modules;
+  s.memory_bytes_peak = static_cast<int64_t>(std::max(memory_peak_bytes_, memories_.bytes_allocated()));
+  s.memory_bytes_hardware = display_memory_bytes(spec_.config);
+  s.memory_banks = memories_.eyes() * memories_.count();
+  s.texels_written = memories_.texels_written();
   s.pixel_clocks = res.end_cycle - res.first_cycle;
   s.wall_seconds = res.wall_seconds;
   s.images = images_;
@@ -819,13 +824,17 @@ RunSummary Session::run() {
   r["cube_map"] = memory_source_;
   r["images"] = images_;
   // What was modelled: the display memories' storage (sparse tiles, both buffers) against what the
-  // configuration's hardware holds (the faces present of every memory, double-buffered), and what the host
-  // drew on faces the configuration leaves out.
-  r["footprint"] = {{"display_memory_bytes_peak", std::max(memory_peak_bytes_, memories_.bytes_allocated())},
+  // configuration's hardware holds (the faces present of every memory, double-buffered), what the host
+  // drew on faces the configuration leaves out and stored on the others, the banks (eyes x memories) and the
+  // SystemC modules elaborated.
+  r["footprint"] = {{"display_memory_bytes_peak", s.memory_bytes_peak},
                     {"display_memory_tiles_at_end", memories_.tiles_allocated()},
                     {"display_memory_faces", spec_.config.memory.faces_present()},
                     {"texels_lost_on_absent_faces", memories_.writes_lost()},
-                    {"display_memory_bytes_hardware", display_memory_bytes(spec_.config)}};
+                    {"texels_written", s.texels_written},
+                    {"display_memory_banks", s.memory_banks},
+                    {"systemc_modules", s.systemc_modules},
+                    {"display_memory_bytes_hardware", s.memory_bytes_hardware}};
   if (trace_summary_) {
     const tracker::MotionSummary& m = *trace_summary_;
     r["trace"] = {{"samples", m.samples},           {"rate_hz", m.rate_hz()},       {"gaps", m.gaps},

@@ -14,6 +14,7 @@
 
 #include "TestSupport.hpp"
 #include "host/cubemap/ImageFiles.hpp"
+#include "rtl_model/datapath/ArpConfig.hpp"
 #include "rtl_model/verilated/VerilatedUnits.hpp"
 
 using arp::test::run_command;
@@ -61,6 +62,19 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
   EXPECT_EQ(rep["detailed"]["fifos"].size(), 7u);
   EXPECT_EQ(rep["detailed"]["pipeline"]["orientation_lead_cycles"], 14);
   EXPECT_FALSE(rep["lt"]["fifos_modelled"].get<bool>());
+  // What each level modelled: the calibration pattern stores memory 0's six faces of each eye once (2 x 6 x
+  // 128^2 texels) in 2 x 4 banks at every level; the functional level elaborates no SystemC module, the
+  // fast ones a model and the tracker interface, the detailed one a module per stage, the video timing
+  // generator, the tracker interface, its two clocks and the top.
+  for (const std::string level : {"functional", "lt", "cycle", "detailed"}) {
+    const auto& fp = rep[level]["footprint"];
+    EXPECT_EQ(fp["texels_written"], 2 * 6 * 128 * 128) << level;
+    EXPECT_EQ(fp["display_memory_banks"], 2 * 4) << level;
+  }
+  EXPECT_EQ(rep["functional"]["footprint"]["systemc_modules"], 0);
+  EXPECT_EQ(rep["lt"]["footprint"]["systemc_modules"], 2);
+  EXPECT_EQ(rep["cycle"]["footprint"]["systemc_modules"], 2);
+  EXPECT_EQ(rep["detailed"]["footprint"]["systemc_modules"], arp::dp::kStageCount + 1 + 1 + 2 + 1);
   // The detailed level's old name still selects it.
   const auto alias = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0" + kSmall + " --report " + d.file("alias.json"));
   ASSERT_EQ(alias.status, 0) << alias.output;

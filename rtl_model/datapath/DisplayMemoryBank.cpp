@@ -69,6 +69,7 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
     return;
   }
   const uint64_t word = (uint64_t{depth} << 32) | color;
+  ++written_;
   const int tx = x >> kTileShift, ty = y >> kTileShift, lx = x & (kTile - 1), ly = y & (kTile - 1);
   put(face, tx, ty, lx, ly, word);
   // The texel also stands in the aprons of the tiles to its left, above, and above-left.
@@ -144,6 +145,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
   lost_ += lost;  // last: a failed allocation above leaves the count as it was
+  written_ += stored;
   return stored;
 }
 
@@ -214,6 +216,12 @@ size_t DisplayMemorySet::bytes_allocated() const {
   size_t s = 0;
   for (const auto& b : banks_) s += b->bytes_allocated();
   return s;
+}
+
+int64_t DisplayMemorySet::texels_written() const {
+  int64_t n = 0;
+  for (const auto& b : banks_) n += b->texels_written();
+  return n;
 }
 
 int64_t DisplayMemorySet::writes_lost() const {

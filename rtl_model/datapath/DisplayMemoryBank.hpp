@@ -96,6 +96,7 @@ class DisplayMemoryBank {
   // OpenMP regions). Misuse -- a word with no tile -- is a std::logic_error, after the tiles before it.
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
+  int64_t texels_written() const { return written_; }  // texels stored through the host port, ever
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -149,6 +150,7 @@ class DisplayMemoryBank {
   std::vector<uint64_t> empty_tile_;   // what tile 0 reads as before a buffer has a pool
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   int64_t lost_ = 0;
+  int64_t written_ = 0;
   std::array<Buffer, 2> buffers_;
   int front_ = 0, back_ = 1;
   bool committed_ = false;
@@ -170,6 +172,7 @@ class DisplayMemorySet {
   size_t bytes_allocated() const;
   size_t tiles_allocated() const;  // written tiles, every bank
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
+  int64_t texels_written() const;  // texels stored through the host port, every bank, ever
 
  private:
   MemoryFormat fmt_;

@@ -49,6 +49,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The SystemC modules under these objects, at any depth (what the run elaborated).
+int64_t count_modules(const std::vector<sc_object*>& objects) {
+  int64_t n = 0;
+  for (const sc_object* o : objects) n += (dynamic_cast<const sc_module*>(o) ? 1 : 0) + count_modules(o->get_child_objects());
+  return n;
+}
+
 void check_inputs(const stage::TimedInputs& in, bool timed) {
   const auto issues = timed ? dp::validate_timed(in.config) : dp::validate(in.config);
   if (!issues.empty()) throw InputError("configuration", issues.front().key, issues.front().reason);
@@ -181,6 +188,7 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
       w = lt->window();
       break;
   }
+  r.modules = count_modules(sc_get_top_level_objects());
   const dp::PipelineSchedule sched = ArpStages::schedule(in.config);
   r.first_cycle = w.first_cycle;
   r.end_cycle = w.end_cycle;

@@ -63,6 +63,7 @@ struct TimedResult {
   int64_t evaluated_cycles = 0;            // of those, the ones the cycle-accurate levels evaluated (clock gating skips the rest)
   int64_t evaluated_host_cycles = 0;       // host clocks evaluated (gated while the write port is idle)
   int64_t issue_lead = 0, orientation_lead = 0;
+  int64_t modules = 0;  // SystemC modules elaborated (the functional level: none)
   double wall_seconds = 0;
   double cycles_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(end_cycle - first_cycle) / wall_seconds : 0.0;
