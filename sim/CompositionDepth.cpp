@@ -9,8 +9,9 @@
 
 namespace arp::sim {
 
-int CompositionDepth::narrowest(int min_bits, double bound) const {
-  int w = kMaxBits;
+int CompositionDepth::narrowest(int min_bits, int max_bits, double bound) const {
+  if (share(max_bits) > bound) return 0;
+  int w = max_bits;
   while (w > min_bits && share(w - 1) <= bound) --w;
   return w;
 }

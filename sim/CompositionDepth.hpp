@@ -26,8 +26,9 @@ struct CompositionDepth {
   double share(int bits) const {
     return composed ? static_cast<double>(wrong[static_cast<size_t>(bits)]) / static_cast<double>(composed) : 0.0;
   }
-  // The narrowest width from `min_bits` whose share, and every wider width's, is at most `bound`.
-  int narrowest(int min_bits, double bound) const;
+  // The narrowest width from `min_bits` whose share, and every wider width's up to `max_bits`, is at most
+  // `bound`; 0 when even `max_bits` exceeds it.
+  int narrowest(int min_bits, int max_bits, double bound) const;
 };
 
 // Adds one point: memory_of[i] is object i's memory (0 .. memories - 1), the scene rendered at time t from

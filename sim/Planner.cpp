@@ -126,6 +126,12 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
   return m;
 }
 
+// The sample index of the j-th of `points` rendered points, evenly spread over `samples` (the first and the last
+// included).
+size_t rendered_sample(size_t j, size_t points, size_t samples) {
+  return points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
+}
+
 // Texels each object fills (passing the depth test) per update at each sample (k * objects + i), for one
 // eye: the whole scene rendered from the walk's point at face size S, by the run's own renderer, at
 // kFillPoints samples evenly spread over the motion; every other sample interpolates the two around it.
@@ -133,11 +139,6 @@ MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
 // (fewer occluders drawn before it: host::CubeFaceRenderer draws in scene order), so for any ladder each
 // rendered point's figure is a lower bound; the samples between are not rendered, and their figures are
 // an estimate, not a bound (an object that comes close between two rendered points is under-counted).
-// The sample index of the j-th of `points` rendered points, evenly spread over `samples` (the first and the last
-// included).
-size_t rendered_sample(size_t j, size_t points, size_t samples) {
-  return points == 1 ? 0 : (j * (samples - 1) + (points - 1) / 2) / (points - 1);
-}
 
 struct FillSamples {
   std::vector<double> texels;  // k * objects + i
@@ -205,6 +206,18 @@ std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPat
   return out;
 }
 
+// The run's priority rule for a ladder of `count` memories, memory 0 every `first` frames, each next one
+// `ratio` times slower, at theta_t.
+host::PriorityConfig ladder_priority(int count, int first, int ratio, double hz, double threshold_rad) {
+  dp::MemoryConfig mc;
+  mc.count = count;
+  mc.update_frames = first;
+  mc.update_ratio = ratio;
+  host::PriorityConfig pc = host::PriorityConfig::of(mc, hz);
+  pc.threshold_rad = threshold_rad;
+  return pc;
+}
+
 // A ladder's load over the motion, by the run's own rule (PriorityScheduler::assign).
 LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
                        double threshold_rad, int count, int first, int ratio, const std::vector<double>& validity_s,
@@ -214,13 +227,7 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   L.update_frames = first;
   L.update_ratio = ratio;
   L.objects.assign(static_cast<size_t>(count), 0.0);
-  dp::MemoryConfig mc;
-  mc.count = count;
-  mc.update_frames = first;
-  mc.update_ratio = ratio;
-  host::PriorityConfig pc = host::PriorityConfig::of(mc, hz);
-  pc.threshold_rad = threshold_rad;
-  host::PriorityScheduler sched(scene, pc, 1);
+  host::PriorityScheduler sched(scene, ladder_priority(count, first, ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size();
   int64_t late = 0;
   for (size_t k = 0; k < ms.t.size(); ++k) {
@@ -259,13 +266,7 @@ CompositionDepth measure_composition(const host::Scene& scene, const host::WalkP
                                      double hz, double threshold_rad, const LadderLoad& L, int S,
                                      const std::function<void(double)>& progress) {
   CompositionDepth out;
-  dp::MemoryConfig mc;
-  mc.count = L.count;
-  mc.update_frames = L.update_frames;
-  mc.update_ratio = L.update_ratio;
-  host::PriorityConfig pc = host::PriorityConfig::of(mc, hz);
-  pc.threshold_rad = threshold_rad;
-  host::PriorityScheduler sched(scene, pc, 1);
+  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t samples = ms.t.size(), points = std::min<size_t>(samples, kFillPoints);
   std::vector<int> memory_of(scene.objects.size());
   for (size_t k = 0, j = 0; k < samples && j < points; ++k) {
@@ -502,7 +503,7 @@ Plan make_plan(const PlanRequest& r) {
            std::to_string(r.base.memory.color_bits() + r.base.memory.depth_bits);
   };
   if (p.planned.count == 1) {
-    p.config.memory.depth_bits = min_depth_bits();
+    p.config.memory.depth_bits = depth_bits_for(1, r.base);
     p.choices.push_back({"memory.depth_bits", std::to_string(p.config.memory.depth_bits),
                          "one memory: the composition unit has nothing to compare, and the depth code only marks a texel "
                          "written (its reserved value \"empty\", at any width), so the narrowest allowed; " + texel_bits()});
@@ -510,9 +511,16 @@ Plan make_plan(const PlanRequest& r) {
     p.composition = measure_composition(scene, walk, ms, hz, p.threshold_rad, p.planned, S,
                                         [&](double f) { progress(0.99 + 0.01 * f, "measuring the depth code"); });
     const int base_bits = r.base.memory.depth_bits;
+    // The default bound is the starting width's own share: never wider than it. A bound given may call for
+    // any width; none meeting it is refused, naming the best.
     p.depth_error_bound = r.depth_error.value_or(p.composition.share(base_bits));
-    p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), p.depth_error_bound);
-    if (!r.depth_error) p.config.memory.depth_bits = std::min(p.config.memory.depth_bits, base_bits);
+    const int top = r.depth_error ? CompositionDepth::kMaxBits : base_bits;
+    p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
+    if (p.config.memory.depth_bits == 0)
+      throw InputError("--depth-error", fmt("%g", p.depth_error_bound),
+                       "no depth code composes the planned " + std::to_string(p.planned.count) +
+                           " memories within it: the best achievable is " + fmt("%.3g", p.composition.share(top)) + " at " +
+                           std::to_string(top) + " bits (surfaces of different memories at the same distance tie at any width)");
     const int w = p.config.memory.depth_bits;
     std::string why = std::to_string(p.planned.count) + " memories composed by depth code (the smallest wins, a tie goes to the "
                       "lower memory), measured at " + std::to_string(p.composition.points) +
@@ -655,7 +663,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   for (const LadderLoad& L : p.ladders) {
     dp::ArpConfig c = p.config;
     c.memory.count = L.count;
-    const bool planned = L.count == p.planned.count && L.update_ratio == p.planned.update_ratio;
+    const bool planned =
+        L.count == p.planned.count && L.update_frames == p.planned.update_frames && L.update_ratio == p.planned.update_ratio;
     c.memory.depth_bits = planned ? p.config.memory.depth_bits : depth_bits_for(L.count, r.base);
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));

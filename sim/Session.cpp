@@ -1,6 +1,7 @@
 #include "Session.hpp"
 
 #include "BankRenderer.hpp"
+#include "ConfigFile.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -111,6 +112,10 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     throw InputError("--truth-supersample", std::to_string(o.truth_supersample),
                      "needs a progressive display (display.fields_per_frame 1): an interlaced one would take a pixel's "
                      "rows of samples in different fields");
+  if (o.truth_supersample > 1)  // the truth's display at N x, within every key's range, before anything runs
+    config::check(truth_image_config(s.config, o.truth_supersample),
+                  "--truth-supersample " + std::to_string(o.truth_supersample) + " (the truth at " +
+                      std::to_string(o.truth_supersample) + " x the display's resolution)");
   if (o.truth_face_size != 0) {  // its range (the key's) before what it would cost
     dp::ArpConfig t = s.config;
     set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);

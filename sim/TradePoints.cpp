@@ -26,7 +26,7 @@ std::string number_id(double v) {
   return b;
 }
 
-// The datapath widths of the trade. The first six are the RTL's width
+// The datapath widths of the trade. The first seven are the RTL's width
 // configurations (rtl_model/hdl/configurations.txt), with the latencies and
 // memory format those are synthesized with, so the cost column holds
 // synthesis figures for them (tests/TradeoffTest checks every one matches);

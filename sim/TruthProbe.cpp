@@ -44,10 +44,9 @@ dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
   return c;
 }
 
-// The truth's image pipeline at n times the display's resolution over the same field: every active and blanking
-// count n times, the pixel clock n^2 times (the same frame and line times: each row of n x n samples is taken
-// within its display line, in n lines of 1/n its time), the lens centre's offset n times.
-dp::ArpConfig supersampled(const dp::ArpConfig& truth, int n) {
+}  // namespace
+
+dp::ArpConfig truth_image_config(const dp::ArpConfig& truth, int n) {
   dp::ArpConfig c = truth;
   dp::VideoTimingConfig& t = c.timing;
   for (int* v : {&t.h_active, &t.h_front_porch, &t.h_sync, &t.h_back_porch, &t.v_active, &t.v_front_porch, &t.v_sync,
@@ -58,12 +57,10 @@ dp::ArpConfig supersampled(const dp::ArpConfig& truth, int n) {
   return c;
 }
 
-}  // namespace
-
 TruthProbe::TruthProbe(const TruthProbeSetup& s)
     : s_(s),
       truth_cfg_(truth_config(*s.config, s.truth_face_size)),
-      truth_image_cfg_(supersampled(truth_cfg_, s.supersample)),
+      truth_image_cfg_(truth_image_config(truth_cfg_, s.supersample)),
       timing_(s.config->timing),
       lens_(s.config->lens, s.config->timing, s.config->widths.vec_frac),
       rot_(s.config->widths),

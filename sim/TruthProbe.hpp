@@ -44,6 +44,13 @@ struct TruthProbeSetup {
   std::string tear_image, tear_at;                 // --tear-image, --tear-at FRAME:EYE:X:Y
 };
 
+// The truth's image pipeline at n times the display's resolution over the same field: every active and
+// blanking count n times and the pixel clock n^2 times, so the frame and each display line keep their time
+// (the n rows of samples of a display line are taken within it, each in 1/n of its time: up to a line,
+// 32 us at the default display, from the instant the run takes the pixel's sample), and the lens centre's
+// offset n times. At n = 1, `truth` itself.
+dp::ArpConfig truth_image_config(const dp::ArpConfig& truth, int n);
+
 class TruthProbe {
  public:
   // InputError for a --tear-at that this run will not measure or that falls outside the image.

@@ -137,6 +137,8 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
   const Plan p = make_plan(r);
   EXPECT_GT(p.config.memory.count, 1);
   // No two of the balls are ever seen in one direction: nothing is composed, and a tie can never be wrong.
+  EXPECT_EQ(p.composition.points, p.fill_points);  // (measured, not left at nothing)
+  EXPECT_GT(p.composition.points, 0);
   EXPECT_EQ(p.composition.composed, 0);
   EXPECT_EQ(p.config.memory.depth_bits, 1);
   LadderLoad one;
@@ -183,14 +185,15 @@ TEST(CompositionDepth, TiesBelowTheWidthTheDistanceRatioNeedsAndOnlyWhereTheNear
   EXPECT_EQ(wrong_way.wrong[2], square);
   EXPECT_GT(wrong_way.wrong[needed - 1], 0);
   for (int w = needed; w <= CompositionDepth::kMaxBits; ++w) EXPECT_EQ(wrong_way.wrong[static_cast<size_t>(w)], 0) << w;
-  EXPECT_EQ(wrong_way.narrowest(1, 0.0), needed);
-  EXPECT_EQ(wrong_way.narrowest(1, 1.0), 1);
+  EXPECT_EQ(wrong_way.narrowest(1, 32, 0.0), needed);
+  EXPECT_EQ(wrong_way.narrowest(1, 32, 1.0), 1);
+  EXPECT_EQ(wrong_way.narrowest(1, needed - 1, 0.0), 0) << "no width up to the top meets the bound";
 
   CompositionDepth right_way;
   add_composition_depth(s, {0, 1}, 2, 0.0, {0, 0, 0}, 128, right_way);
   EXPECT_EQ(right_way.composed, square);
   for (int w = 1; w <= CompositionDepth::kMaxBits; ++w) EXPECT_EQ(right_way.wrong[static_cast<size_t>(w)], 0) << w;
-  EXPECT_EQ(right_way.narrowest(1, 0.0), 1);
+  EXPECT_EQ(right_way.narrowest(1, 32, 0.0), 1);
 }
 
 // A loose bound gives narrower widths than a tight one, and the harness, run afresh on the plan,
@@ -583,6 +586,9 @@ TEST(PlanCli, ANearBallBeforeAFarWallComposesRightWithAOneBitDepthCode) {
   EXPECT_EQ(c.memory.depth_bits, 1);
   const std::string md = read_text(d.file("plan.md"));
   EXPECT_NE(md.find("every nearer surface is in a faster memory"), std::string::npos) << md;
+  const auto at = md.find(" texels where two or more memories hold a surface");  // the ball is seen against the wall
+  ASSERT_NE(at, std::string::npos) << md;
+  EXPECT_GT(std::stoll(md.substr(md.rfind(' ', at - 1) + 1)), 1000) << md;
   nlohmann::json rep[2];
   for (int wide = 0; wide < 2; ++wide) {
     const std::string j = d.file("r" + std::to_string(wide) + ".json");

@@ -538,9 +538,15 @@ TEST(TimedRunCli, AnAreaSampledTruthMeasuresFinerFacesBetter) {
   EXPECT_GT(fine, coarse + 5) << "finer faces, closer to the truth (31.0 and 39.1 dB when written)";
   EXPECT_GT(fine, fine_centre) << "an area, not a point (39.1 and 38.0 dB when written)";
   EXPECT_LT(fine, fine_centre + 3);
+  // The same with the lens centre moved toward the nose: the truth's offset scales with its samples.
+  const double off = psnr(" --set memory.face_size=512 --set lens.center_offset_px=40 --truth-supersample 2", "e.json");
+  const double off_centre = psnr(" --set memory.face_size=512 --set lens.center_offset_px=40", "f.json");
+  EXPECT_GT(off, off_centre);
+  EXPECT_LT(off, off_centre + 3);
   EXPECT_EQ(load(d.file("b.json"))["host"]["error"]["truth_supersample"], 2);
   for (const std::string bad : {" --walk gallery --truth-supersample 5", " --walk gallery --error-every 0 --truth-supersample 2",
-                                 " --truth-supersample 2", " --walk gallery --truth-supersample 2 --set display.fields_per_frame=2"}) {
+                                 " --truth-supersample 2", " --walk gallery --truth-supersample 2 --set display.fields_per_frame=2",
+                                 " --walk gallery --truth-supersample 4 --set display.h_active=2448"}) {
     const auto r = run_command(kArpsim + " run -q --scene gallery --frames 1" + bad);
     EXPECT_EQ(r.status, 2) << bad << "\n" << r.output;
     EXPECT_NE(r.output.find("--truth-supersample"), std::string::npos) << r.output;

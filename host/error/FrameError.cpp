@@ -12,17 +12,14 @@ HmdFrame area_mean(const HmdFrame& fine, int n) {
   out.frame_index = fine.frame_index;
   out.resize(fine.width / n, fine.height / n, fine.eyes, false);
   const int bits = fine.display_bits;
-  const uint32_t mask = (1u << bits) - 1;
   const uint32_t nn = static_cast<uint32_t>(n * n);
   for (int e = 0; e < out.eyes; ++e)
     for (int y = 0; y < out.height; ++y)
       for (int x = 0; x < out.width; ++x) {
         uint32_t sum[3] = {0, 0, 0};
         for (int j = 0; j < n; ++j)
-          for (int i = 0; i < n; ++i) {
-            const uint32_t p = fine.pixels[fine.index(e, n * x + i, n * y + j)];
-            for (int c = 0; c < 3; ++c) sum[c] += (p >> ((2 - c) * bits)) & mask;
-          }
+          for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) sum[c] += fine.channel(e, n * x + i, n * y + j, c);
         uint32_t p = 0;
         for (int c = 0; c < 3; ++c) p |= ((2 * sum[c] + nn) / (2 * nn)) << ((2 - c) * bits);
         out.pixels[out.index(e, x, y)] = p;

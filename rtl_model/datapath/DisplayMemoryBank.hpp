@@ -96,7 +96,7 @@ class DisplayMemoryBank {
   // OpenMP regions). Misuse -- a word with no tile -- is a std::logic_error, after the tiles before it.
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
-  int64_t texels_written() const { return written_; }  // texels stored through the host port, ever
+  int64_t texels_written() const { return written_; }  // texels stored (write, write_face, reserve_faces), ever
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -172,7 +172,7 @@ class DisplayMemorySet {
   size_t bytes_allocated() const;
   size_t tiles_allocated() const;  // written tiles, every bank
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
-  int64_t texels_written() const;  // texels stored through the host port, every bank, ever
+  int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
 
  private:
   MemoryFormat fmt_;

@@ -439,7 +439,7 @@ void bench_comp(const HdlConfig& cfg, int mutant, const std::function<void()>& b
     std::vector<uint64_t> w(static_cast<size_t>(n), word(color(rng), empty));
     w[static_cast<size_t>(k)] = word(color(rng), std::min<uint32_t>(5, empty - 1));  // (written at any width)
     words.push_back(w);
-    for (uint32_t d : {0u, empty - 1, 7u}) {
+    for (uint32_t d : {0u, empty - 1, std::min(7u, empty - 1)}) {
       std::vector<uint64_t> t(static_cast<size_t>(n));
       for (auto& x : t) x = word(color(rng), d);
       words.push_back(t);
