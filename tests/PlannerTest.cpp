@@ -424,6 +424,12 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   EXPECT_EQ(fp["display_memory_bytes_hardware"], hw);
   EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 6 * hw_bits / 8);
   EXPECT_EQ(fp["texels_lost_on_absent_faces"], 0);
+  // The texels the host stored: the ball's, the same with the whole cube, at most one face of each eye for
+  // each of the 3 frames' renders and the one before them.
+  const int64_t written = fp["texels_written"].get<int64_t>();
+  EXPECT_GT(written, 0);
+  EXPECT_EQ(rep[1]["footprint"]["texels_written"], written);
+  EXPECT_LE(written, 4 * 2 * S * S);
   // What was allocated: the ball's tiles (33 x 33 words of 8 bytes each, at least one an eye) within the peak.
   const int64_t tiles = fp["display_memory_tiles_at_end"].get<int64_t>();
   EXPECT_GE(tiles, 2);
