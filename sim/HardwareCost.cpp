@@ -234,4 +234,25 @@ int64_t display_memory_bytes(const dp::ArpConfig& c) {
   return int64_t{c.timing.eyes} * c.memory.count * 2 * c.memory.faces_present() * S * S * bits / 8;
 }
 
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<BankTiles>& banks) {
+  const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
+  const int64_t tpr = (c.memory.face_size + dp::DisplayMemoryBank::kTile - 1) / dp::DisplayMemoryBank::kTile;
+  int64_t total_bits = 0;
+  for (const BankTiles& b : banks) {
+    total_bits += 2 * b.texels * bits;
+    int entry = 0;  // bits numbering tiles 1 .. n and 0 for "absent"
+    while ((int64_t{1} << entry) <= b.tiles) ++entry;
+    total_bits += int64_t{c.memory.faces_present()} * tpr * tpr * entry;
+  }
+  return (total_bits + 7) / 8;
+}
+
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
+  std::vector<BankTiles> banks;
+  for (int e = 0; e < m.eyes(); ++e)
+    for (int k = 0; k < m.count(); ++k)
+      banks.push_back({m.bank(e, k).tiles_ever_written(), m.bank(e, k).texels_in_tiles_ever_written()});
+  return display_memory_bytes_tiled(c, banks);
+}
+
 }  // namespace arp::sim

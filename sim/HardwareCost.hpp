@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rtl_model/datapath/ArpConfig.hpp"
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
 
 namespace arp::sim {
 
@@ -45,6 +46,15 @@ std::string hardware_cost_source();
 // The hardware's display memory in bytes for a configuration: eyes x memories x two buffers (front
 // and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits.
 int64_t display_memory_bytes(const dp::ArpConfig& c);
+// The same display memories holding only the tiles a run drew on (DisplayMemoryBank::tiles_ever_written):
+// both buffers of those tiles' texels, and per bank one tile table for both buffers (an entry per tile of
+// each face present, wide enough to number the bank's tiles and "absent") -- what a tile-sparse memory sized
+// for that run would hold. Bytes, rounded up.
+struct BankTiles {
+  int64_t tiles = 0, texels = 0;  // a bank's tiles and their texels (a face's last row and column of tiles may be partial)
+};
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<BankTiles>& banks);
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m);  // the tiles it drew on
 
 // The most memory the model can take for a configuration: every display memory's tiles written (eyes x
 // memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces

@@ -15,6 +15,7 @@
 #include "host/priority/RenderCost.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/render/DepthCode.hpp"
+#include "host/render/FaceFootprint.hpp"
 #include "host/render/FaceFrustum.hpp"
 #include "host/scene/Gallery.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
@@ -276,6 +277,68 @@ CompositionDepth measure_composition(const host::Scene& scene, const host::WalkP
     add_composition_depth(scene, memory_of, L.count, ms.t[k], walk.position(ms.t[k]), S, out);
     ++j;
     progress(static_cast<double>(j) / static_cast<double>(points));
+  }
+  return out;
+}
+
+// The tiles each planned memory can ever be drawn on over the motion (TileBound in Planner.hpp). Each object is
+// in the memory the run's priority rule puts it in (the scheduler replayed over every sample) or, while it
+// waits to move, in one it was put in within the slowest memory's period before (it moves when both memories
+// re-render together: at the latest by then; twice that is taken); at every sample its box's texels on every
+// present face (host::object_face_rect, for an eye within `margin` of the walk's point) go to each of those
+// memories.
+TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
+                      double threshold_rad, const LadderLoad& L, const dp::MemoryConfig& mc, double margin, double near_m) {
+  constexpr int kTile = dp::DisplayMemoryBank::kTile, kShift = dp::DisplayMemoryBank::kTileShift;
+  const int S = mc.face_size, tpr = (S + kTile - 1) / kTile;
+  TileBound out;
+  out.tiles_per_row = tpr;
+  out.present.assign(static_cast<size_t>(L.count), {});
+  for (auto& m : out.present)
+    for (size_t f = 0; f < 6; ++f)
+      if (mc.faces[f]) m[f].assign(static_cast<size_t>(tpr) * static_cast<size_t>(tpr), 0);
+  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
+  const size_t n = scene.objects.size(), samples = ms.t.size();
+  std::vector<std::array<glm::dvec3, 2>> box(n);
+  for (size_t i = 0; i < n; ++i) box[i] = host::mesh_box(*scene.objects[i].mesh);
+  std::vector<int> desired(samples * n);
+  for (size_t k = 0; k < samples; ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    for (size_t i = 0; i < n; ++i) desired[k * n + i] = sched.belongs_in(i);
+  }
+  const double wait_s = 2.0 * static_cast<double>(dp::update_period_frames(L.update_frames, L.update_ratio, L.count - 1)) / hz;
+  size_t first = 0;  // the earliest sample within wait_s before sample k
+  for (size_t k = 0; k < samples; ++k) {
+    while (ms.t[first] < ms.t[k] - wait_s - 1e-9) ++first;
+    const glm::dvec3 head = walk.position(ms.t[k]);
+    for (size_t i = 0; i < n; ++i) {
+      int lo = desired[k * n + i], hi = lo;
+      for (size_t j = first; j < k; ++j) {
+        lo = std::min(lo, desired[j * n + i]);
+        hi = std::max(hi, desired[j * n + i]);
+      }
+      for (int f = 0; f < 6; ++f) {
+        if (!mc.faces[static_cast<size_t>(f)]) continue;
+        const host::TexelRect rc = host::object_face_rect(scene.objects[i], box[i], ms.t[k], head, margin, f, S, near_m);
+        if (rc.empty()) continue;
+        for (int m = lo; m <= hi; ++m) {
+          std::vector<uint8_t>& mask = out.present[static_cast<size_t>(m)][static_cast<size_t>(f)];
+          for (int ty = rc.y0 >> kShift; ty <= rc.y1 >> kShift; ++ty)
+            for (int tx = rc.x0 >> kShift; tx <= rc.x1 >> kShift; ++tx) mask[static_cast<size_t>(ty * tpr + tx)] = 1;
+        }
+      }
+    }
+  }
+  for (const auto& m : out.present) {
+    BankTiles b;
+    for (const auto& face : m)
+      for (size_t k = 0; k < face.size(); ++k)
+        if (face[k]) {
+          const int tx = static_cast<int>(k) % tpr, ty = static_cast<int>(k) / tpr;
+          ++b.tiles;
+          b.texels += int64_t{std::min(kTile, S - tx * kTile)} * std::min(kTile, S - ty * kTile);
+        }
+    out.per_memory.push_back(b);
   }
   return out;
 }
@@ -594,6 +657,29 @@ Plan make_plan(const PlanRequest& r) {
                                    "left out of every memory, " +
                                    std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
                                    "loses those texels and says so"});
+  // 5. The tiles of each memory any of its objects can be drawn on over the motion: what a tile-sparse display
+  // memory (a tile table per bank, and only those tiles' storage) needs for this scene and motion.
+  progress(0.97, "bounding the tiles drawn on");
+  p.tiles = bound_tiles(scene, walk, ms, hz, p.threshold_rad, p.planned, p.config.memory, margin, near_m);
+  {
+    std::vector<BankTiles> banks;
+    for (int e = 0; e < p.config.timing.eyes; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
+    p.memory_bytes_tiled = display_memory_bytes_tiled(p.config, banks);
+    const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
+    std::string per;
+    for (size_t m = 0; m < p.tiles.per_memory.size(); ++m)
+      per += (m ? ", " : "") + std::to_string(p.tiles.per_memory[m].tiles);
+    p.choices.push_back(
+        {"(tiles drawn on: not a key)", per + " of " + std::to_string(whole) + " tiles a memory",
+         "each memory's objects' boxes (grown as for the faces above) projected on every face present at every point of "
+         "the motion, an object counted in every memory it is put in within twice the slowest memory's period: a "
+         "tile-sparse display memory holding only these tiles (and a tile table per bank) needs " +
+             fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " MiB against " +
+             fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) +
+             " MiB for whole faces; a run reports the tiles it drew on (footprint.display_memory_tiles_drawn_on), within these"});
+  }
+  p.not_decided.push_back("the tiles as keys: the model allocates the tiles a run draws on, whatever the plan bounds, and a "
+                          "run's report states the tile-sparse hardware figure for what it drew (footprint.display_memory_bytes_hardware_tiled)");
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
                           " points of the motion rendered for it: each other point interpolates the two around it, so an "
@@ -654,6 +740,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
   s += "| display memory (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
+  s += "| display memory, tile-sparse (the tiles drawn on, bound over the motion, MiB) | | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
   s += "\nMean objects in each planned memory:";
   for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "

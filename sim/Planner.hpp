@@ -65,6 +65,19 @@ struct LadderLoad {
   std::vector<double> objects;    // mean objects in each memory
 };
 
+// The tiles of each planned memory that any of its objects can be drawn on over the motion (a bound for an
+// eye within half the default distance between the eyes of the walk's point, at the motion's samples).
+struct TileBound {
+  int tiles_per_row = 0;
+  // [memory][face]: row-major by tile, 1 where reachable; empty for a face the plan leaves out.
+  std::vector<std::array<std::vector<uint8_t>, 6>> present;
+  std::vector<BankTiles> per_memory;  // one eye's bank of each memory
+  bool reachable(int memory, int face, int tx, int ty) const {
+    const auto& m = present[static_cast<size_t>(memory)][static_cast<size_t>(face)];
+    return !m.empty() && m[static_cast<size_t>(ty * tiles_per_row + tx)] != 0;
+  }
+};
+
 struct Plan {
   dp::ArpConfig config;
   std::vector<PlanChoice> choices;
@@ -91,6 +104,9 @@ struct Plan {
   double depth_error_bound = 0;
   // Display memory as hardware (eyes x memories x 2 buffers x 6 faces x S^2 x texel bits)
   int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
+  // The tiles drawn on (a tile-sparse display memory's storage and tile tables, every eye)
+  TileBound tiles;
+  int64_t memory_bytes_tiled = 0;
 };
 
 // InputError for a bad request (no scene, a bound no widths meet -- naming the best achievable).

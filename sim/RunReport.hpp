@@ -29,6 +29,7 @@ struct RunSummary {
   // What was modelled (the report's footprint): SystemC modules elaborated (0 at the functional level), display
   // memory allocated at its peak and what the configuration's hardware holds, banks, texels the host stored.
   int64_t systemc_modules = 0, memory_bytes_peak = 0, memory_bytes_hardware = 0, memory_banks = 0, texels_written = 0;
+  int64_t memory_bytes_hardware_tiled = 0;  // the hardware holding only the tiles drawn on (display_memory_bytes_tiled)
   double wall_seconds = 0;
   int64_t images = 0;
   std::string out_dir, vcd, gtkw;

@@ -753,6 +753,7 @@ RunSummary Session::run() {
   s.systemc_modules = res.modules;
   s.memory_bytes_peak = static_cast<int64_t>(std::max(memory_peak_bytes_, memories_.bytes_allocated()));
   s.memory_bytes_hardware = display_memory_bytes(spec_.config);
+  s.memory_bytes_hardware_tiled = display_memory_bytes_tiled(spec_.config, memories_);
   s.memory_banks = memories_.eyes() * memories_.count();
   s.texels_written = memories_.texels_written();
   s.pixel_clocks = res.end_cycle - res.first_cycle;
@@ -832,6 +833,8 @@ RunSummary Session::run() {
   // configuration's hardware holds (the faces present of every memory, double-buffered), what the host
   // drew on faces the configuration leaves out and stored on the others, the banks (eyes x memories) and the
   // SystemC modules elaborated.
+  nlohmann::json tiles_drawn_on = nlohmann::json::array();  // per memory, every eye's bank
+  for (int k = 0; k < memories_.count(); ++k) tiles_drawn_on.push_back(memories_.tiles_ever_written(k));
   r["footprint"] = {{"display_memory_bytes_peak", s.memory_bytes_peak},
                     {"display_memory_tiles_at_end", memories_.tiles_allocated()},
                     {"display_memory_faces", spec_.config.memory.faces_present()},
@@ -839,7 +842,9 @@ RunSummary Session::run() {
                     {"texels_written", s.texels_written},
                     {"display_memory_banks", s.memory_banks},
                     {"systemc_modules", s.systemc_modules},
-                    {"display_memory_bytes_hardware", s.memory_bytes_hardware}};
+                    {"display_memory_bytes_hardware", s.memory_bytes_hardware},
+                    {"display_memory_tiles_drawn_on", tiles_drawn_on},
+                    {"display_memory_bytes_hardware_tiled", s.memory_bytes_hardware_tiled}};
   if (trace_summary_) {
     const tracker::MotionSummary& m = *trace_summary_;
     r["trace"] = {{"samples", m.samples},           {"rate_hz", m.rate_hz()},       {"gaps", m.gaps},

@@ -50,6 +50,8 @@ class Session {
   // The frames simulated at the timed level (--detail; default: every frame).
   const stage::FrameWindows& timed_frames() const { return timed_frames_; }
   const std::string& motion_source() const { return motion_source_; }
+  // The display memories (after run(): as the run left them, with the tiles it drew on).
+  const dp::DisplayMemorySet& memories() const { return memories_; }
   const std::string& memory_source() const { return memory_source_; }
   // What the motion looks like, for the command to print before the run: a
   // trace's summary over the run's window and its warnings (empty otherwise).

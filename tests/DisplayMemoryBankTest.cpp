@@ -277,6 +277,37 @@ TEST(DisplayMemoryBank, FaceSizesThatAreNotMultiplesOfTheTile) {
   EXPECT_EQ(b.read(5, 35, 36), f.empty_word());
 }
 
+// The tiles drawn on are those whose own texels were written, ever, texel by texel or a face at a time:
+// not a tile allocated only for its apron (a texel on its right neighbour's left column), and not undone by
+// clearing the back buffer; a face's last tiles count the texels they hold.
+TEST(DisplayMemoryBank, TheTilesDrawnOnAreThoseWhoseOwnTexelsWereWritten) {
+  MemoryFormat f;
+  f.face_size = 100;  // 4 tiles a row, the last 4 texels wide
+  for (const bool whole_face : {false, true}) {
+    DisplayMemoryBank b{f};
+    const std::vector<std::array<int, 2>> texels{{32, 0}, {99, 99}, {64, 64}};
+    std::vector<uint64_t> face(100 * 100, ~uint64_t{0});
+    for (const auto& [x, y] : texels) {
+      if (whole_face) face[static_cast<size_t>(y * 100 + x)] = (uint64_t{5} << 32) | 7;
+      else b.write(1, x, y, 7, 5);
+    }
+    if (whole_face) b.write_face(1, face.data(), ~uint64_t{0});
+    // Allocated: (1,0) and its left neighbour (0,0) for the apron; (3,3); (2,2) with (1,2), (2,1), (1,1).
+    EXPECT_EQ(b.tiles_allocated(), 7u) << whole_face;
+    EXPECT_EQ(b.tiles_ever_written(), 3) << whole_face;
+    EXPECT_TRUE(b.tile_ever_written(1, 1, 0));
+    EXPECT_FALSE(b.tile_ever_written(1, 0, 0));
+    EXPECT_TRUE(b.tile_ever_written(1, 3, 3));
+    EXPECT_TRUE(b.tile_ever_written(1, 2, 2));
+    EXPECT_FALSE(b.tile_ever_written(1, 1, 1));
+    EXPECT_FALSE(b.tile_ever_written(0, 1, 0));  // another face
+    EXPECT_EQ(b.texels_in_tiles_ever_written(), 1024 + 4 * 4 + 1024);
+    b.clear_back();
+    EXPECT_EQ(b.tiles_allocated(), 0u);
+    EXPECT_EQ(b.tiles_ever_written(), 3);
+  }
+}
+
 TEST(MemoryFormat, ColourPackingAndRounding) {
   MemoryFormat f;
   f.red_bits = 5;

@@ -13,11 +13,13 @@
 #include "rtl_model/datapath/VideoTiming.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/render/DepthCode.hpp"
+#include "host/render/FaceFootprint.hpp"
 #include "host/scene/Primitives.hpp"
 #include "host/scene/SceneFile.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
 #include "sim/ConfigFile.hpp"
 #include "sim/Planner.hpp"
+#include "sim/Session.hpp"
 #include "sim/TradeMeasure.hpp"
 
 namespace arp::sim {
@@ -605,6 +607,137 @@ TEST(PlanCli, ANearBallBeforeAFarWallComposesRightWithAOneBitDepthCode) {
     rep[wide] = test::load_json(j);
   }
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
+}
+
+// host::object_face_rect against the renderer: every texel an object covers on a face, drawn from the eye or
+// from anywhere within the margin of it, lies in the rectangle; for a box square to the faces and wholly in
+// front of one, the rectangle is the box's outline to within the texel it is grown by and a rounding.
+TEST(FaceFootprint, AnObjectsTexelsLieInItsRectangleFromAnyEyeWithinTheMargin) {
+  constexpr int S = 64;
+  const double near_m = host::DepthCode{}.near_m;
+  struct Case {
+    glm::dvec3 size, position;
+    double yaw_deg;
+    bool square_in_front;  // an unrotated box wholly in front of face -Z, within it
+  };
+  const std::vector<Case> cases{{{1.0, 2.0, 0.5}, {0.3, -0.2, -3.0}, 0, true},
+                                {{1.0, 2.0, 0.5}, {2.0, 1.0, -2.0}, 30, false},     // on a corner: three faces
+                                {{0.2, 1.0, 6.0}, {1.5, 0.0, 0.0}, 0, false},       // beside the eye, through the +-Z near planes
+                                {{0.4, 0.4, 0.4}, {0.0, 0.0, -0.3}, 45, false}};    // near
+  host::CubeFaceRenderer renderer;
+  int outside_without_margin = 0;
+  for (const Case& c : cases) {
+    host::Scene scene;
+    host::SceneObject& o = host::add_object(scene, "box", std::make_shared<host::Mesh>(host::make_box(c.size)), c.position, {});
+    o.rotation_deg = {c.yaw_deg, 0, 0};
+    const auto box = host::mesh_box(*o.mesh);
+    const double margin = 0.03;
+    std::vector<glm::dvec3> eyes{glm::dvec3(0.0)};
+    for (int k = 0; k < 8; ++k) eyes.push_back({k & 1 ? margin : -margin, k & 2 ? margin : -margin, k & 4 ? margin : -margin});
+    int drawn = 0;
+    for (size_t e = 0; e < eyes.size(); ++e) {
+      std::vector<host::FaceImage> faces;
+      renderer.render_faces(scene, {}, 0.0, eyes[e], S, faces);
+      for (int f = 0; f < 6; ++f) {
+        const host::TexelRect r = host::object_face_rect(o, box, 0.0, glm::dvec3(0.0), e ? margin : 0.0, f, S, near_m);
+        const host::TexelRect tight = host::object_face_rect(o, box, 0.0, glm::dvec3(0.0), 0.0, f, S, near_m);
+        host::TexelRect seen{S, S, -1, -1};
+        for (int y = 0; y < S; ++y)
+          for (int x = 0; x < S; ++x) {
+            const auto& ids = faces[static_cast<size_t>(f)].object;  // (empty: nothing reached the face)
+            if (ids.empty() || ids[static_cast<size_t>(y * S + x)] == 0) continue;
+            ++drawn;
+            seen = {std::min(seen.x0, x), std::min(seen.y0, y), std::max(seen.x1, x), std::max(seen.y1, y)};
+            ASSERT_TRUE(x >= r.x0 && x <= r.x1 && y >= r.y0 && y <= r.y1)
+                << "case at " << c.position.x << "," << c.position.z << " eye " << e << " face " << f << " texel " << x << "," << y;
+            if (x < tight.x0 || x > tight.x1 || y < tight.y0 || y > tight.y1) ++outside_without_margin;
+          }
+        if (c.square_in_front && e == 0) {
+          if (f != 5) {
+            EXPECT_TRUE(r.empty() && seen.empty()) << f;
+            continue;
+          }
+          EXPECT_GE(seen.x0 - r.x0, 1);
+          EXPECT_LE(seen.x0 - r.x0, 2);
+          EXPECT_GE(r.x1 - seen.x1, 1);
+          EXPECT_LE(r.x1 - seen.x1, 2);
+          EXPECT_GE(seen.y0 - r.y0, 1);
+          EXPECT_LE(seen.y0 - r.y0, 2);
+          EXPECT_GE(r.y1 - seen.y1, 1);
+          EXPECT_LE(r.y1 - seen.y1, 2);
+        }
+      }
+    }
+    EXPECT_GT(drawn, 0);
+  }
+  EXPECT_GT(outside_without_margin, 0);  // the eyes' offsets draw where the margin-less rectangle does not reach
+}
+
+// The plan's tiles drawn on bound a run's: a row of balls near and far beside a walk, planned into several
+// memories, run over the whole walk with the plan -- every tile any bank's objects were drawn on is within
+// the plan's bound for that memory, and the bound is a small part of the faces.
+TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
+  TempDir d;
+  std::string objs;
+  for (int i = 0; i < 5; ++i)
+    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
+            std::to_string(-1.5 * (i + 1)) + "]}";
+  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3]]})");
+  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
+  r.threshold_deg = 0.5;
+  r.size_widths = false;
+  const Plan p = make_plan(r);
+  ASSERT_GT(p.config.memory.count, 1);
+  RunSpec spec;
+  spec.config = p.config;
+  spec.memories.scene = d.file("row.json");
+  spec.host.walk = d.file("walk.json");
+  spec.frames = static_cast<int64_t>(std::ceil(3.0 * dp::VideoTiming(p.config.timing).refresh_hz()));
+  spec.out.out_dir = d.file("run");
+  spec.out.every = 0;
+  spec.out.error_every = 0;
+  Session session(spec);
+  session.run();
+  const dp::DisplayMemorySet& mem = session.memories();
+  const int tpr = p.tiles.tiles_per_row;
+  ASSERT_EQ(mem.bank(0, 0).tiles_per_row(), tpr);
+  int64_t drawn = 0, bound = 0;
+  std::vector<int64_t> drawn_in(static_cast<size_t>(p.config.memory.count), 0);
+  for (int m = 0; m < p.config.memory.count; ++m) {
+    bound += p.tiles.per_memory[static_cast<size_t>(m)].tiles;
+    for (int e = 0; e < mem.eyes(); ++e)
+      for (int f = 0; f < 6; ++f)
+        for (int ty = 0; ty < tpr; ++ty)
+          for (int tx = 0; tx < tpr; ++tx)
+            if (mem.bank(e, m).tile_ever_written(f, tx, ty)) {
+              ++drawn;
+              ++drawn_in[static_cast<size_t>(m)];
+              EXPECT_TRUE(p.tiles.reachable(m, f, tx, ty)) << "memory " << m << " eye " << e << " face " << f << " tile " << tx << "," << ty;
+            }
+  }
+  int used = 0;
+  for (const int64_t n : drawn_in) used += n > 0 ? 1 : 0;
+  EXPECT_GT(used, 1);  // objects were drawn in several memories
+  EXPECT_GT(drawn, 0);
+  EXPECT_LT(bound, p.config.memory.count * p.config.memory.faces_present() * tpr * tpr / 4);
+  EXPECT_LE(bound * mem.eyes(), 4 * drawn);  // and not loose: within 4x what the run drew on
+  // The plan's hardware figure for those tiles, by the formula a run's report uses.
+  std::vector<BankTiles> banks;
+  for (int e = 0; e < 2; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
+  EXPECT_EQ(p.memory_bytes_tiled, display_memory_bytes_tiled(p.config, banks));
+  EXPECT_LT(p.memory_bytes_tiled, p.memory_bytes_planned / 4);
+}
+
+// A tile-sparse memory's bytes in closed form: the default texel is 24 + 16 bits; a bank with tiles of
+// 1024, 1024 and 16 texels holds them twice (both buffers), and one table of 6 faces x 16 x 16 entries of
+// 2 bits (numbers 1 .. 3, and 0 for absent); a bank with none holds nothing.
+TEST(Planner, ATileSparseMemorysBytesAreItsTilesTwiceAndOneTable) {
+  const dp::ArpConfig c;
+  ASSERT_EQ(c.memory.face_size, 512);
+  const int64_t bits = 2 * (1024 + 1024 + 16) * 40 + 6 * 16 * 16 * 2;
+  EXPECT_EQ(display_memory_bytes_tiled(c, {{3, 2064}, {0, 0}}), (bits + 7) / 8);
+  EXPECT_EQ(display_memory_bytes_tiled(c, {{4, 2064}}), (2 * 2064 * 40 + 6 * 16 * 16 * 3 + 7) / 8);  // 4 needs 3 bits
 }
 
 }  // namespace

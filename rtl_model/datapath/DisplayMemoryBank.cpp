@@ -72,10 +72,40 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   ++written_;
   const int tx = x >> kTileShift, ty = y >> kTileShift, lx = x & (kTile - 1), ly = y & (kTile - 1);
   put(face, tx, ty, lx, ly, word);
+  mark_ever(face, tx, ty);
   // The texel also stands in the aprons of the tiles to its left, above, and above-left.
   if (lx == 0 && tx > 0) put(face, tx - 1, ty, kTile, ly, word);
   if (ly == 0 && ty > 0) put(face, tx, ty - 1, lx, kTile, word);
   if (lx == 0 && ly == 0 && tx > 0 && ty > 0) put(face, tx - 1, ty - 1, kTile, kTile, word);
+}
+
+void DisplayMemoryBank::mark_ever(int face, int tx, int ty) {
+  auto& e = ever_[static_cast<size_t>(face)];
+  if (e.empty()) e.assign(static_cast<size_t>(tiles_per_row_) * static_cast<size_t>(tiles_per_row_), 0);
+  e[static_cast<size_t>(ty * tiles_per_row_ + tx)] = 1;
+}
+
+bool DisplayMemoryBank::own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  return any_written(words, tx, ty, kTile, skip);
+}
+
+int64_t DisplayMemoryBank::tiles_ever_written() const {
+  int64_t n = 0;
+  for (const auto& e : ever_)
+    for (const uint8_t b : e) n += b;
+  return n;
+}
+
+int64_t DisplayMemoryBank::texels_in_tiles_ever_written() const {
+  const int S = fmt_.face_size;
+  int64_t n = 0;
+  for (const auto& e : ever_)
+    if (!e.empty())
+      for (int ty = 0; ty < tiles_per_row_; ++ty)
+        for (int tx = 0; tx < tiles_per_row_; ++tx)
+          if (e[static_cast<size_t>(ty * tiles_per_row_ + tx)])
+            n += int64_t{std::min(kTile, S - tx * kTile)} * std::min(kTile, S - ty * kTile);
+  return n;
 }
 
 int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t skip) {
@@ -90,8 +120,14 @@ int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t 
 // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
 // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
 bool DisplayMemoryBank::window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  return any_written(words, tx, ty, kTile + 1, skip);
+}
+
+// Whether any word of the S x S face `words` in the `side` x `side` texels from tile (tx, ty)'s first, within
+// the face, is not `skip`.
+bool DisplayMemoryBank::any_written(const uint64_t* words, int tx, int ty, int side, uint64_t skip) const {
   const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
-  const int w = std::min(kTile + 1, S - x0), h = std::min(kTile + 1, S - y0);
+  const int w = std::min(side, S - x0), h = std::min(side, S - y0);
   for (int ly = 0; ly < h; ++ly) {
     const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
     bool any = false;
@@ -144,6 +180,14 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   const size_t need = std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords;
   if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
+  // The tiles whose own texels this writes, once (a tile already marked is not looked at again).
+  for (size_t f = 0; f < 6; ++f) {
+    if (!words[f] || !fmt_.present[f] || count[f] == 0) continue;
+    for (int ty = 0; ty < tiles_per_row_; ++ty)
+      for (int tx = 0; tx < tiles_per_row_; ++tx)
+        if (!tile_ever_written(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip))
+          mark_ever(static_cast<int>(f), tx, ty);
+  }
   lost_ += lost;  // last: a failed allocation above leaves the count as it was
   written_ += stored;
   return stored;
@@ -227,6 +271,18 @@ int64_t DisplayMemorySet::texels_written() const {
 int64_t DisplayMemorySet::writes_lost() const {
   int64_t n = 0;
   for (const auto& b : banks_) n += b->writes_lost();
+  return n;
+}
+
+int64_t DisplayMemorySet::tiles_ever_written(int memory) const {
+  int64_t n = 0;
+  for (int e = 0; e < eyes_; ++e) n += bank(e, memory).tiles_ever_written();
+  return n;
+}
+
+int64_t DisplayMemorySet::texels_in_tiles_ever_written() const {
+  int64_t n = 0;
+  for (const auto& b : banks_) n += b->texels_in_tiles_ever_written();
   return n;
 }
 

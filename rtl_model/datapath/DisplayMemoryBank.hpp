@@ -97,6 +97,15 @@ class DisplayMemoryBank {
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
   int64_t texels_written() const { return written_; }  // texels stored (write, write_face, reserve_faces), ever
+  // The tiles whose own 32 x 32 texels (not the apron) were ever written, in either buffer: what a
+  // display memory holding only the tiles this run draws on would need (a tile written only through its
+  // apron is the model's copy of its neighbour's edge, not storage of its own).
+  bool tile_ever_written(int face, int tx, int ty) const {
+    const auto& e = ever_[static_cast<size_t>(face)];
+    return !e.empty() && e[static_cast<size_t>(ty * tiles_per_row_ + tx)] != 0;
+  }
+  int64_t tiles_ever_written() const;
+  int64_t texels_in_tiles_ever_written() const;  // their texels (a face's last row and column of tiles may be partial)
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -144,6 +153,10 @@ class DisplayMemoryBank {
   // Whether any word of the S x S face `words` in tile (tx, ty)'s window (its texels and apron) is not `skip`.
   bool window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
   void put(int face, int tx, int ty, int lx, int ly, uint64_t word);
+  void mark_ever(int face, int tx, int ty);
+  // Whether any of the S x S face `words`' own texels of tile (tx, ty) (no apron) is not `skip`.
+  bool own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
+  bool any_written(const uint64_t* words, int tx, int ty, int side, uint64_t skip) const;
 
   MemoryFormat fmt_;
   int tiles_per_row_;
@@ -151,6 +164,7 @@ class DisplayMemoryBank {
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   int64_t lost_ = 0;
   int64_t written_ = 0;
+  std::array<std::vector<uint8_t>, 6> ever_;  // per face, row-major by tile: 1 once its own texels were written
   std::array<Buffer, 2> buffers_;
   int front_ = 0, back_ = 1;
   bool committed_ = false;
@@ -173,6 +187,8 @@ class DisplayMemorySet {
   size_t tiles_allocated() const;  // written tiles, every bank
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
   int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
+  int64_t tiles_ever_written(int memory) const;  // DisplayMemoryBank::tiles_ever_written, memory's banks (every eye)
+  int64_t texels_in_tiles_ever_written() const;  // every bank
 
  private:
   MemoryFormat fmt_;

@@ -1,0 +1,31 @@
+// Which texels of a cube face an object can cover: a conservative rectangle, from its mesh's box, for
+// eyes anywhere within a margin of a point. What `arpsim plan` bounds a tile-sparse display memory with
+// (the tiles any object of a memory can reach over the motion), tested against the renderer's own texels.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <array>
+
+#include "host/scene/Scene.hpp"
+
+namespace arp::host {
+
+// Texels [x0, x1] x [y0, y1] of a face, inclusive; empty when x1 < x0.
+struct TexelRect {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  bool empty() const { return x1 < x0 || y1 < y0; }
+};
+
+// The model frame's axis-aligned box of a mesh's vertices: {min, max} (both 0 for no vertices).
+std::array<glm::dvec3, 2> mesh_box(const Mesh& m);
+
+// The texels of face f (S x S, FaceFrustum's convention) that object o, at time t, can cover for an eye
+// anywhere within `margin_m` of `eye` (per coordinate): its model box placed at t, the world box around
+// that grown by the margin, clipped at the near distance of the face's frustum and projected; the
+// rectangle around the projection, one texel wider each side (a snapped vertex moves the outline by up to
+// a texel). Conservative: the renderer writes no texel of the face outside it (an animated object only at
+// t itself). `box`: mesh_box(*o.mesh), passed in so that callers over many times compute it once.
+TexelRect object_face_rect(const SceneObject& o, const std::array<glm::dvec3, 2>& box, double t_s, const glm::dvec3& eye,
+                           double margin_m, int face, int S, double near_m);
+
+}  // namespace arp::host
