@@ -465,6 +465,23 @@ Plan make_plan(const PlanRequest& r) {
                              std::to_string(p.harness_runs) + " harness runs"});
   }
 
+  // Faces any object reaches over the motion, by the renderers' own test (host::sphere_meets_face) with each
+  // bound grown by what the samples do not see: an eye is up to half the distance between the eyes from the
+  // walk's point, and the head moves up to a sample step between samples. (An animated object's own motion
+  // between samples is not covered beyond that: the samples are display frames, or at most kMaxSamples.)
+  const double near_m = host::DepthCode{}.near_m;
+  const double margin = 0.5 * MemoryContents{}.ipd_m + walk.speed() * ms.step_s;
+  for (const double t : ms.t) {
+    const glm::dvec3 head = walk.position(t);
+    for (const host::SceneObject& o : scene.objects) {
+      const host::Sphere b = o.world_bound(t);
+      for (int f = 0; f < 6; ++f)
+        if (host::sphere_meets_face(b.center - head, b.radius + margin, f, near_m)) p.faces_reached[static_cast<size_t>(f)] = true;
+    }
+  }
+  for (int f = 0; f < 6; ++f) p.config.memory.faces[static_cast<size_t>(f)] = p.faces_reached[static_cast<size_t>(f)] ? 1 : 0;
+  if (scene.objects.empty()) p.config.memory.faces = {1, 1, 1, 1, 1, 1};  // nothing to place: keep the plain cube (background only)
+
   // 3. Display memories: the ladder of update periods with the least host load, in as few memories as
   // come within the tolerance of the least.
   progress(0.96, "choosing the display memories");
@@ -529,6 +546,35 @@ Plan make_plan(const PlanRequest& r) {
   }
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [](const LadderLoad& L) { return L.engine_busy > 1; }),
                    candidates.end());
+  // Only the ladders within the memory limit (--memory-limit; by default the starting configuration's display
+  // memory): a ladder's hardware figure at the planned face size and faces, with the depth code it would
+  // start from (the planned ladder's may narrow after, never widen). None: an error naming the least.
+  auto ladder_bytes = [&](const LadderLoad& L) {
+    dp::ArpConfig c = p.config;
+    c.memory.count = L.count;
+    c.memory.depth_bits = depth_bits_for(L.count, r.base);
+    return display_memory_bytes(c);
+  };
+  // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
+  // size takes more than the starting configuration, the limit is that ladder's.)
+  const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(r.base)) / 1048576.0);
+  if (!(limit_mib >= 0) || !std::isfinite(limit_mib)) throw InputError("--memory-limit", fmt("%g", limit_mib), "must be 0 (none) or more, MiB");
+  if (limit_mib > 0) {
+    p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
+    const auto least = *std::min_element(candidates.begin(), candidates.end(),
+                                         [&](const LadderLoad& a, const LadderLoad& b) { return ladder_bytes(a) < ladder_bytes(b); });
+    if (!r.memory_limit_mib) p.memory_limit_bytes = std::max(p.memory_limit_bytes, ladder_bytes(least));
+    if (ladder_bytes(least) > p.memory_limit_bytes)
+      throw InputError("--memory-limit", r.memory_limit_mib ? fmt("%g", limit_mib) : "",
+                       std::string(r.memory_limit_mib ? "" : "the display memory of " + r.base_source + ", " + fmt("%.1f", limit_mib) + " MiB: ") +
+                           "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
+                           fmt("%.1f", static_cast<double>(ladder_bytes(least)) / 1048576.0) + " MiB (" + ladder_text(least) + ")");
+    const size_t before = candidates.size();
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                    [&](const LadderLoad& L) { return ladder_bytes(L) > p.memory_limit_bytes; }),
+                     candidates.end());
+    p.ladders_over_limit = static_cast<int>(before - candidates.size());
+  }
   p.best = *std::min_element(candidates.begin(), candidates.end(),
                              [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
   p.planned = p.best;
@@ -611,7 +657,17 @@ Plan make_plan(const PlanRequest& r) {
                                                             : std::string("re-rendering is never (nothing moves)")) +
                       ", so memory 0 updates every " + std::to_string(first) + " (at most the motion's frames, at least a second's)" +
                       "; of " + std::to_string(candidates.size()) + " ladders (1 .. " +
-                      std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4) the least host load is " +
+                      std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4" +
+                      (p.memory_limit_bytes > 0 ? ", the engine can carry, within " +
+                                                      fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
+                                                      " MiB of display memory (--memory-limit" +
+                                                      (r.memory_limit_mib ? std::string(")")
+                                                       : p.memory_limit_bytes > display_memory_bytes(r.base)
+                                                           ? ": the least any ladder takes at this face size, more than " + r.base_source + "'s)"
+                                                           : ": " + r.base_source + "'s)") +
+                                                      (p.ladders_over_limit > 0 ? ", " + std::to_string(p.ladders_over_limit) + " more left out for their memory" : std::string())
+                                                : std::string(", the engine can carry")) +
+                      ") the least host load is " +
                       fmt("%.3g", p.best.triangles_per_s) + " triangles/s (" + ladder_text(p.best) + "); " +
                       ladder_text(p.planned) + " is the fewest within " + fmt("%.0f", 100 * r.load_tolerance) +
                       " % of it: " + fmt("%.3g", p.planned.triangles_per_s) + " triangles/s, against " +
@@ -630,22 +686,7 @@ Plan make_plan(const PlanRequest& r) {
                                      : "0: one texel at the planned face size (" + fmt("%.4f", rad_to_deg(p.threshold_rad)) +
                                            " deg), the theta_t the memories were sized for"});
 
-  // 4. Faces any object reaches over the motion, by the renderers' own test (host::sphere_meets_face) with each
-  // bound grown by what the samples do not see: an eye is up to half the distance between the eyes from the
-  // walk's point, and the head moves up to a sample step between samples. (An animated object's own motion
-  // between samples is not covered beyond that: the samples are display frames, or at most kMaxSamples.)
-  const double near_m = host::DepthCode{}.near_m;
-  const double margin = 0.5 * MemoryContents{}.ipd_m + walk.speed() * ms.step_s;
-  for (const double t : ms.t) {
-    const glm::dvec3 head = walk.position(t);
-    for (const host::SceneObject& o : scene.objects) {
-      const host::Sphere b = o.world_bound(t);
-      for (int f = 0; f < 6; ++f)
-        if (host::sphere_meets_face(b.center - head, b.radius + margin, f, near_m)) p.faces_reached[static_cast<size_t>(f)] = true;
-    }
-  }
-  for (int f = 0; f < 6; ++f) p.config.memory.faces[static_cast<size_t>(f)] = p.faces_reached[static_cast<size_t>(f)] ? 1 : 0;
-  if (scene.objects.empty()) p.config.memory.faces = {1, 1, 1, 1, 1, 1};  // nothing to place: keep the plain cube (background only)
+  // 4. Faces (worked out before the memories, whose hardware size they set).
   const int present = p.config.memory.faces_present();
   p.choices.push_back(
       {"memory.faces", face_list(p.config.memory.faces),

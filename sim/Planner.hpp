@@ -38,6 +38,9 @@ struct PlanRequest {
   std::optional<double> threshold_deg;  // theta_t (0: one texel at the planned face size; unset: base's memory.threshold_deg)
   std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"
   double load_tolerance = 0.10;        // a memory more must save more than this share of the host's load
+  // The most hardware display memory a ladder may take, MiB (whole faces present, both buffers, every eye;
+  // unset: what the starting configuration takes; 0: no limit).
+  std::optional<double> memory_limit_mib;
   bool size_widths = true;             // false: keep the starting configuration's datapath widths (--keep-widths)
   // The share of composed texels (two or more memories hold a surface) the depth code may compose from the
   // wrong memory, with several memories (unset: what the starting configuration's width measures).
@@ -104,6 +107,8 @@ struct Plan {
   double depth_error_bound = 0;
   // Display memory as hardware (eyes x memories x 2 buffers x 6 faces x S^2 x texel bits)
   int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
+  int64_t memory_limit_bytes = 0;         // the limit a ladder was held to (0: none)
+  int ladders_over_limit = 0;             // ladders the engine could carry, left out for their memory
   // The tiles drawn on (a tile-sparse display memory's storage and tile tables, every eye)
   TileBound tiles;
   int64_t memory_bytes_tiled = 0;

@@ -154,6 +154,51 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
     }
 }
 
+// The ladders are held to the display-memory limit (by default the starting configuration's): the row of
+// balls, planned into several memories, gets one when the limit is one memory's hardware (2 eyes x 2
+// buffers x the faces present x S^2 x (24 + 1) bits), and is refused, naming the least, below it.
+TEST(Planner, TheMemoriesAreHeldToTheMemoryLimit) {
+  TempDir d;
+  std::string objs;
+  for (int i = 0; i < 6; ++i)
+    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
+            std::to_string(-std::pow(3.0, i + 1)) + "]}";
+  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -2]]})");
+  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
+  r.threshold_deg = 1;
+  r.size_widths = false;
+  const Plan free = make_plan(r);
+  ASSERT_GT(free.config.memory.count, 1);
+  EXPECT_EQ(free.memory_limit_bytes, 2 * 4 * 2 * 6 * int64_t{512} * 512 * 40 / 8);  // the default configuration's 120 MiB
+  const int64_t S = free.config.memory.face_size, faces = free.config.memory.faces_present();
+  const int64_t one = 2 * 1 * 2 * faces * S * S * 25 / 8, two = 2 * 2 * 2 * faces * S * S * 40 / 8;
+  for (const int64_t limit : {one, two - 1}) {
+    r.memory_limit_mib = static_cast<double>(limit) / 1048576.0;
+    const Plan p = make_plan(r);
+    EXPECT_EQ(p.config.memory.count, 1) << limit;
+    EXPECT_LE(p.memory_bytes_planned, limit);
+    EXPECT_GT(p.ladders_over_limit, 0);
+  }
+  r.memory_limit_mib = static_cast<double>(two) / 1048576.0;
+  EXPECT_LE(make_plan(r).config.memory.count, 2);
+  r.memory_limit_mib = static_cast<double>(one - 1) / 1048576.0;
+  const InputError e = test::error_of([&] { make_plan(r); });
+  EXPECT_NE(std::string(e.what()).find("--memory-limit"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("the least takes"), std::string::npos) << e.what();
+  r.memory_limit_mib = -1;
+  EXPECT_NE(std::string(test::error_of([&] { make_plan(r); }).what()).find("--memory-limit"), std::string::npos);
+  r.memory_limit_mib = 0;  // no limit
+  EXPECT_EQ(make_plan(r).config.memory.count, free.config.memory.count);
+  // By default the limit holds the ladder, not the face size: a starting configuration smaller than one
+  // memory at the planned face size limits the plan to the smallest ladder.
+  r.memory_limit_mib.reset();
+  r.base.memory.face_size = 16;  // its 4 memories: 2 x 4 x 2 x 6 x 16^2 x 40 bits, under one memory at the planned size
+  const Plan small = make_plan(r);
+  EXPECT_EQ(small.config.memory.count, 1);
+  EXPECT_EQ(small.memory_limit_bytes, one);
+}
+
 // Two memories composed by depth code, in closed form. A 3 m square 2 m ahead of the eye in memory 1, in
 // front of a wall 2.2 m ahead in memory 0: along any ray the wall is 1.1x as far, so the codes of a
 // logarithmic depth code with M = 2^w - 2 steps over ln(far / near) are ln(1.1) M / ln(far / near) steps

@@ -59,6 +59,9 @@ Runner add_plan_command(CLI::App& app) {
                   "A display memory more must cut the host's load by more than this share of the least load")
       ->capture_default_str();
   cmd->add_option_function<double>(
+      "--memory-limit", [a](double v) { a->req.memory_limit_mib = v; },
+      "The most hardware display memory a ladder of memories may take, MiB (default: the starting configuration's; 0: no limit)");
+  cmd->add_option_function<double>(
       "--depth-error", [a](double v) { a->req.depth_error = v; },
       "With several memories: the share of the texels two or more memories hold that the depth code may compose from the "
       "wrong memory (default: what the starting configuration's width measures)");
