@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <fstream>
 
 #include "TestSupport.hpp"
@@ -40,6 +41,21 @@ PlanRequest request(const std::string& scene, const std::string& walk = "gallery
   r.base = small_display();
   r.memories.scene = scene;
   r.walk = walk;
+  return r;
+}
+
+// A row of 0.5 m balls 2 m to the right of a straight walk along -z (row.json, walk.json in `d`): ball i at
+// z(i), the walk `length` metres at 1 m/s. Planned at theta_t (the starting widths kept).
+PlanRequest ball_row(TempDir& d, int balls, const std::function<double(int)>& z, double length, double threshold_deg) {
+  std::string objs;
+  for (int i = 0; i < balls; ++i)
+    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
+            std::to_string(z(i)) + "]}";
+  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, )" + std::to_string(-length) + "]]}");
+  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
+  r.threshold_deg = threshold_deg;
+  r.size_widths = false;
   return r;
 }
 
@@ -126,16 +142,8 @@ TEST(Planner, AFaceOnlyAnEyeSeesIsKept) {
 // Objects near the walk need every frame, objects far away far less: several memories pay.
 TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
   TempDir d;
-  std::string objs;
-  for (int i = 0; i < 6; ++i) {
-    const double z = -std::pow(3.0, i + 1);  // 3 m .. 729 m ahead
-    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
-            std::to_string(z) + "]}";
-  }
-  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
-  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -2]]})");
-  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
-  r.threshold_deg = 1;
+  PlanRequest r = ball_row(d, 6, [](int i) { return -std::pow(3.0, i + 1); }, 2, 1);  // 3 m .. 729 m ahead
+  r.size_widths = true;
   const Plan p = make_plan(r);
   EXPECT_GT(p.config.memory.count, 1);
   // No two of the balls are ever seen in one direction: nothing is composed, and a tie can never be wrong.
@@ -159,15 +167,7 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
 // buffers x the faces present x S^2 x (24 + 1) bits), and is refused, naming the least, below it.
 TEST(Planner, TheMemoriesAreHeldToTheMemoryLimit) {
   TempDir d;
-  std::string objs;
-  for (int i = 0; i < 6; ++i)
-    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
-            std::to_string(-std::pow(3.0, i + 1)) + "]}";
-  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
-  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -2]]})");
-  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
-  r.threshold_deg = 1;
-  r.size_widths = false;
+  PlanRequest r = ball_row(d, 6, [](int i) { return -std::pow(3.0, i + 1); }, 2, 1);
   const Plan free = make_plan(r);
   ASSERT_GT(free.config.memory.count, 1);
   EXPECT_EQ(free.memory_limit_bytes, 2 * 4 * 2 * 6 * int64_t{512} * 512 * 40 / 8);  // the default configuration's 120 MiB
@@ -723,15 +723,7 @@ TEST(FaceFootprint, AnObjectsTexelsLieInItsRectangleFromAnyEyeWithinTheMargin) {
 // the plan's bound for that memory, and the bound is a small part of the faces.
 TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
   TempDir d;
-  std::string objs;
-  for (int i = 0; i < 5; ++i)
-    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.5, "position": [2, 1.6, )" +
-            std::to_string(-1.5 * (i + 1)) + "]}";
-  write(d.file("row.json"), R"({"name": "row", "objects": [)" + objs + "]}");
-  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3]]})");
-  PlanRequest r = request(d.file("row.json"), d.file("walk.json"));
-  r.threshold_deg = 0.5;
-  r.size_widths = false;
+  const PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
   const Plan p = make_plan(r);
   ASSERT_GT(p.config.memory.count, 1);
   RunSpec spec;
