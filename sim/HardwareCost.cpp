@@ -207,7 +207,7 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
   const int64_t available = available_memory_bytes();
   if (available <= 0) return;  // not known: nothing to compare with
   auto memories = [&](int64_t S, int count, int faces) {
-    const int64_t tiles = (S + dp::DisplayMemoryBank::kTile - 1) / dp::DisplayMemoryBank::kTile;
+    const int64_t tiles = dp::DisplayMemoryBank::tiles_per_row_of(static_cast<int>(S));
     return int64_t{c.timing.eyes} * count * 2 * (faces * tiles * tiles + 1) * dp::DisplayMemoryBank::kTileWords * 8;
   };
   auto renderer = [](int64_t S) { return 6 * S * S * (36 + 8) + 2 * S * S * 8; };
@@ -234,25 +234,25 @@ int64_t display_memory_bytes(const dp::ArpConfig& c) {
   return int64_t{c.timing.eyes} * c.memory.count * 2 * c.memory.faces_present() * S * S * bits / 8;
 }
 
-int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<BankTiles>& banks) {
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles) {
+  constexpr int64_t kTile = dp::DisplayMemoryBank::kTile;
   const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
-  const int64_t tpr = (c.memory.face_size + dp::DisplayMemoryBank::kTile - 1) / dp::DisplayMemoryBank::kTile;
+  const int64_t tpr = dp::DisplayMemoryBank::tiles_per_row_of(c.memory.face_size);
   int64_t total_bits = 0;
-  for (const BankTiles& b : banks) {
-    total_bits += 2 * b.texels * bits;
+  for (const int64_t n : tiles) {
+    total_bits += 2 * n * kTile * kTile * bits;
     int entry = 0;  // bits numbering tiles 1 .. n and 0 for "absent"
-    while ((int64_t{1} << entry) <= b.tiles) ++entry;
+    while ((int64_t{1} << entry) <= n) ++entry;
     total_bits += int64_t{c.memory.faces_present()} * tpr * tpr * entry;
   }
   return (total_bits + 7) / 8;
 }
 
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
-  std::vector<BankTiles> banks;
+  std::vector<int64_t> tiles;
   for (int e = 0; e < m.eyes(); ++e)
-    for (int k = 0; k < m.count(); ++k)
-      banks.push_back({m.bank(e, k).tiles_ever_written(), m.bank(e, k).texels_in_tiles_ever_written()});
-  return display_memory_bytes_tiled(c, banks);
+    for (int k = 0; k < m.count(); ++k) tiles.push_back(m.bank(e, k).tiles_ever_written());
+  return display_memory_bytes_tiled(c, tiles);
 }
 
 }  // namespace arp::sim

@@ -46,15 +46,13 @@ std::string hardware_cost_source();
 // The hardware's display memory in bytes for a configuration: eyes x memories x two buffers (front
 // and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits.
 int64_t display_memory_bytes(const dp::ArpConfig& c);
-// The same display memories holding only the tiles a run drew on (DisplayMemoryBank::tiles_ever_written):
-// both buffers of those tiles' texels, and per bank one tile table for both buffers (an entry per tile of
-// each face present, wide enough to number the bank's tiles and "absent") -- what a tile-sparse memory sized
-// for that run would hold. Bytes, rounded up.
-struct BankTiles {
-  int64_t tiles = 0, texels = 0;  // a bank's tiles and their texels (a face's last row and column of tiles may be partial)
-};
-int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<BankTiles>& banks);
-int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m);  // the tiles it drew on
+// The same display memories holding only some 32 x 32 tiles (`tiles`: how many, bank by bank): both buffers
+// of those tiles, every one a whole tile slot (a face's last row and column of tiles are partial when S is
+// not a multiple of 32, but a tile table addresses equal slots), and per bank one tile table for both
+// buffers (an entry per tile of each face present, wide enough to number the bank's tiles and "absent") --
+// what a tile-sparse memory holding them needs. Bytes, rounded up.
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles);
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m);  // the tiles it drew on (tiles_ever_written)
 
 // The most memory the model can take for a configuration: every display memory's tiles written (eyes x
 // memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces

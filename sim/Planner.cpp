@@ -284,16 +284,18 @@ CompositionDepth measure_composition(const host::Scene& scene, const host::WalkP
 // The tiles each planned memory can ever be drawn on over the motion (TileBound in Planner.hpp). Each object is
 // in the memory the run's priority rule puts it in (the scheduler replayed over every sample) or, while it
 // waits to move, in one it was put in within the slowest memory's period before (it moves when both memories
-// re-render together: at the latest by then; twice that is taken); at every sample its box's texels on every
-// present face (host::object_face_rect, for an eye within `margin` of the walk's point) go to each of those
-// memories.
+// re-render together: at the latest by then; twice that is taken, and the window wraps round, as a run past
+// the walk's end goes round it again); at every sample its box's texels on every present face
+// (host::object_face_rect) go to each of those memories, for an eye within `margin` of the walk's point and
+// the object grown by as far as its own animation moves it in a sample step (a render falls between samples).
 TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
                       double threshold_rad, const LadderLoad& L, const dp::MemoryConfig& mc, double margin, double near_m) {
-  constexpr int kTile = dp::DisplayMemoryBank::kTile, kShift = dp::DisplayMemoryBank::kTileShift;
-  const int S = mc.face_size, tpr = (S + kTile - 1) / kTile;
+  constexpr int kShift = dp::DisplayMemoryBank::kTileShift;
+  const int S = mc.face_size, tpr = dp::DisplayMemoryBank::tiles_per_row_of(S);
+  const size_t M = static_cast<size_t>(L.count);
   TileBound out;
   out.tiles_per_row = tpr;
-  out.present.assign(static_cast<size_t>(L.count), {});
+  out.present.assign(M, {});
   for (auto& m : out.present)
     for (size_t f = 0; f < 6; ++f)
       if (mc.faces[f]) m[f].assign(static_cast<size_t>(tpr) * static_cast<size_t>(tpr), 0);
@@ -306,39 +308,42 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
     sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
     for (size_t i = 0; i < n; ++i) desired[k * n + i] = sched.belongs_in(i);
   }
+  // The waiting window in samples, and how many samples of it put each object in each memory (sliding).
   const double wait_s = 2.0 * static_cast<double>(dp::update_period_frames(L.update_frames, L.update_ratio, L.count - 1)) / hz;
-  size_t first = 0;  // the earliest sample within wait_s before sample k
+  const size_t W = samples == 0 ? 0 : std::min(samples - 1, ms.step_s > 0 ? static_cast<size_t>(std::ceil(wait_s / ms.step_s)) : samples - 1);
+  std::vector<int> in_window(n * M, 0);
+  auto at = [&](size_t k, size_t back) { return ((k + samples - back % samples) % samples) * n; };  // sample k - back, round the walk
+  for (size_t d = 1; d <= W && samples > 0; ++d)
+    for (size_t i = 0; i < n; ++i) ++in_window[i * M + static_cast<size_t>(desired[at(0, d) + i])];
   for (size_t k = 0; k < samples; ++k) {
-    while (ms.t[first] < ms.t[k] - wait_s - 1e-9) ++first;
+    for (size_t i = 0; i < n; ++i) ++in_window[i * M + static_cast<size_t>(desired[k * n + i])];  // the window: k - W .. k
     const glm::dvec3 head = walk.position(ms.t[k]);
     for (size_t i = 0; i < n; ++i) {
-      int lo = desired[k * n + i], hi = lo;
-      for (size_t j = first; j < k; ++j) {
-        lo = std::min(lo, desired[j * n + i]);
-        hi = std::max(hi, desired[j * n + i]);
-      }
+      size_t lo = 0, hi = M - 1;
+      while (in_window[i * M + lo] == 0) ++lo;
+      while (in_window[i * M + hi] == 0) --hi;
+      const host::SceneObject& o = scene.objects[i];
+      const host::Sphere b = o.world_bound(ms.t[k]);
+      const double moves = (std::abs(deg_to_rad(o.animation.spin_deg_per_s)) * (glm::length(b.center - o.position_at(ms.t[k])) + b.radius) +
+                            (o.animation.path.size() >= 2 ? o.animation.path_speed : 0.0)) * ms.step_s;
       for (int f = 0; f < 6; ++f) {
         if (!mc.faces[static_cast<size_t>(f)]) continue;
-        const host::TexelRect rc = host::object_face_rect(scene.objects[i], box[i], ms.t[k], head, margin, f, S, near_m);
+        const host::TexelRect rc = host::object_face_rect(o, box[i], ms.t[k], head, margin + moves, f, S, near_m);
         if (rc.empty()) continue;
-        for (int m = lo; m <= hi; ++m) {
-          std::vector<uint8_t>& mask = out.present[static_cast<size_t>(m)][static_cast<size_t>(f)];
+        for (size_t m = lo; m <= hi; ++m) {
+          std::vector<uint8_t>& mask = out.present[m][static_cast<size_t>(f)];
           for (int ty = rc.y0 >> kShift; ty <= rc.y1 >> kShift; ++ty)
             for (int tx = rc.x0 >> kShift; tx <= rc.x1 >> kShift; ++tx) mask[static_cast<size_t>(ty * tpr + tx)] = 1;
         }
       }
     }
+    for (size_t i = 0; i < n; ++i) --in_window[i * M + static_cast<size_t>(desired[at(k, W) + i])];  // leaves the window
   }
   for (const auto& m : out.present) {
-    BankTiles b;
+    int64_t tiles = 0;
     for (const auto& face : m)
-      for (size_t k = 0; k < face.size(); ++k)
-        if (face[k]) {
-          const int tx = static_cast<int>(k) % tpr, ty = static_cast<int>(k) / tpr;
-          ++b.tiles;
-          b.texels += int64_t{std::min(kTile, S - tx * kTile)} * std::min(kTile, S - ty * kTile);
-        }
-    out.per_memory.push_back(b);
+      for (const uint8_t t : face) tiles += t;
+    out.per_memory.push_back(tiles);
   }
   return out;
 }
@@ -558,16 +563,15 @@ Plan make_plan(const PlanRequest& r) {
   // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
   // size takes more than the starting configuration, the limit is that ladder's.)
   const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(r.base)) / 1048576.0);
-  if (!(limit_mib >= 0) || !std::isfinite(limit_mib)) throw InputError("--memory-limit", fmt("%g", limit_mib), "must be 0 (none) or more, MiB");
+  if (!(limit_mib >= 0) || !(limit_mib <= 1e9)) throw InputError("--memory-limit", fmt("%g", limit_mib), "must be 0 (none) .. 1e9 MiB");
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
     const auto least = *std::min_element(candidates.begin(), candidates.end(),
                                          [&](const LadderLoad& a, const LadderLoad& b) { return ladder_bytes(a) < ladder_bytes(b); });
     if (!r.memory_limit_mib) p.memory_limit_bytes = std::max(p.memory_limit_bytes, ladder_bytes(least));
-    if (ladder_bytes(least) > p.memory_limit_bytes)
-      throw InputError("--memory-limit", r.memory_limit_mib ? fmt("%g", limit_mib) : "",
-                       std::string(r.memory_limit_mib ? "" : "the display memory of " + r.base_source + ", " + fmt("%.1f", limit_mib) + " MiB: ") +
-                           "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
+    if (ladder_bytes(least) > p.memory_limit_bytes)  // (only a limit given: the default is at least the least's)
+      throw InputError("--memory-limit", fmt("%g", limit_mib),
+                       "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
                            fmt("%.1f", static_cast<double>(ladder_bytes(least)) / 1048576.0) + " MiB (" + ladder_text(least) + ")");
     const size_t before = candidates.size();
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
@@ -623,13 +627,23 @@ Plan make_plan(const PlanRequest& r) {
     // The default bound is the starting width's own share: never wider than it. A bound given may call for
     // any width; none meeting it is refused, naming the best.
     p.depth_error_bound = r.depth_error.value_or(p.composition.share(base_bits));
-    const int top = r.depth_error ? CompositionDepth::kMaxBits : base_bits;
+    int top = r.depth_error ? CompositionDepth::kMaxBits : base_bits;
+    // Never wider than the memory limit allows (the ladder was held to it at the starting width).
+    while (p.memory_limit_bytes > 0 && top > base_bits) {
+      dp::ArpConfig c = p.config;
+      c.memory.depth_bits = top;
+      if (display_memory_bytes(c) <= p.memory_limit_bytes) break;
+      --top;
+    }
     p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
     if (p.config.memory.depth_bits == 0)
       throw InputError("--depth-error", fmt("%g", p.depth_error_bound),
                        "no depth code composes the planned " + std::to_string(p.planned.count) +
                            " memories within it: the best achievable is " + fmt("%.3g", p.composition.share(top)) + " at " +
-                           std::to_string(top) + " bits (surfaces of different memories at the same distance tie at any width)");
+                           std::to_string(top) + " bits" +
+                           (top < (r.depth_error ? CompositionDepth::kMaxBits : base_bits)
+                                ? " (a wider code would take more display memory than the limit, --memory-limit)"
+                                : " (surfaces of different memories at the same distance tie at any width)"));
     const int w = p.config.memory.depth_bits;
     std::string why = std::to_string(p.planned.count) + " memories composed by depth code (the smallest wins, a tie goes to the "
                       "lower memory), measured at " + std::to_string(p.composition.points) +
@@ -703,21 +717,23 @@ Plan make_plan(const PlanRequest& r) {
   progress(0.97, "bounding the tiles drawn on");
   p.tiles = bound_tiles(scene, walk, ms, hz, p.threshold_rad, p.planned, p.config.memory, margin, near_m);
   {
-    std::vector<BankTiles> banks;
+    std::vector<int64_t> banks;  // every eye's bank of each memory: the same bound
     for (int e = 0; e < p.config.timing.eyes; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
     p.memory_bytes_tiled = display_memory_bytes_tiled(p.config, banks);
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
     std::string per;
-    for (size_t m = 0; m < p.tiles.per_memory.size(); ++m)
-      per += (m ? ", " : "") + std::to_string(p.tiles.per_memory[m].tiles);
+    for (size_t m = 0; m < p.tiles.per_memory.size(); ++m) per += (m ? ", " : "") + std::to_string(p.tiles.per_memory[m]);
     p.choices.push_back(
-        {"(tiles drawn on: not a key)", per + " of " + std::to_string(whole) + " tiles a memory",
-         "each memory's objects' boxes (grown as for the faces above) projected on every face present at every point of "
-         "the motion, an object counted in every memory it is put in within twice the slowest memory's period: a "
-         "tile-sparse display memory holding only these tiles (and a tile table per bank) needs " +
+        {"(tiles drawn on: not a key)", per + " of " + std::to_string(whole) + " tiles, each eye's bank of each memory",
+         "each memory's objects' boxes (grown as for the faces above, and by how far an animated object moves in a sample "
+         "step) projected on every face present at every point of the motion, an object counted in every memory it is "
+         "put in within twice the slowest memory's period: a tile-sparse display memory holding only these tiles (whole "
+         "32 x 32 slots, and a tile table per bank) needs " +
              fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " MiB against " +
              fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) +
-             " MiB for whole faces; a run reports the tiles it drew on (footprint.display_memory_tiles_drawn_on), within these"});
+             " MiB for whole faces. A run of this plan, with the default distance between the eyes, object-level priority "
+             "(no --baseline, --regions) and the planned theta_t, draws within these; its report gives the tiles it drew on, "
+             "every eye's banks together (footprint.display_memory_tiles_drawn_on)"});
   }
   p.not_decided.push_back("the tiles as keys: the model allocates the tiles a run draws on, whatever the plan bounds, and a "
                           "run's report states the tile-sparse hardware figure for what it drew (footprint.display_memory_bytes_hardware_tiled)");

@@ -74,7 +74,7 @@ struct TileBound {
   int tiles_per_row = 0;
   // [memory][face]: row-major by tile, 1 where reachable; empty for a face the plan leaves out.
   std::vector<std::array<std::vector<uint8_t>, 6>> present;
-  std::vector<BankTiles> per_memory;  // one eye's bank of each memory
+  std::vector<int64_t> per_memory;  // tiles of one eye's bank of each memory (each eye's is bounded alike)
   bool reachable(int memory, int face, int tx, int ty) const {
     const auto& m = present[static_cast<size_t>(memory)][static_cast<size_t>(face)];
     return !m.empty() && m[static_cast<size_t>(ty * tiles_per_row + tx)] != 0;

@@ -17,7 +17,7 @@ uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
 
 DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f)
     : fmt_(f),
-      tiles_per_row_((f.face_size + kTile - 1) / kTile),
+      tiles_per_row_(tiles_per_row_of(f.face_size)),
       empty_tile_(kTileWords, f.empty_word()),
       empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {}
 
@@ -85,26 +85,10 @@ void DisplayMemoryBank::mark_ever(int face, int tx, int ty) {
   e[static_cast<size_t>(ty * tiles_per_row_ + tx)] = 1;
 }
 
-bool DisplayMemoryBank::own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
-  return any_written(words, tx, ty, kTile, skip);
-}
-
 int64_t DisplayMemoryBank::tiles_ever_written() const {
   int64_t n = 0;
   for (const auto& e : ever_)
     for (const uint8_t b : e) n += b;
-  return n;
-}
-
-int64_t DisplayMemoryBank::texels_in_tiles_ever_written() const {
-  const int S = fmt_.face_size;
-  int64_t n = 0;
-  for (const auto& e : ever_)
-    if (!e.empty())
-      for (int ty = 0; ty < tiles_per_row_; ++ty)
-        for (int tx = 0; tx < tiles_per_row_; ++tx)
-          if (e[static_cast<size_t>(ty * tiles_per_row_ + tx)])
-            n += int64_t{std::min(kTile, S - tx * kTile)} * std::min(kTile, S - ty * kTile);
   return n;
 }
 
@@ -120,14 +104,27 @@ int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t 
 // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
 // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
 bool DisplayMemoryBank::window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
-  return any_written(words, tx, ty, kTile + 1, skip);
+  return own_written(words, tx, ty, skip) || apron_written(words, tx, ty, skip);
 }
 
-// Whether any word of the S x S face `words` in the `side` x `side` texels from tile (tx, ty)'s first, within
-// the face, is not `skip`.
-bool DisplayMemoryBank::any_written(const uint64_t* words, int tx, int ty, int side, uint64_t skip) const {
+// Whether any word of tile (tx, ty)'s apron -- texel column x0 + 32 (rows y0 .. y0 + 32) and row y0 + 32
+// (columns x0 .. x0 + 31), within the face -- is not `skip`.
+bool DisplayMemoryBank::apron_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
   const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
-  const int w = std::min(side, S - x0), h = std::min(side, S - y0);
+  const size_t row = static_cast<size_t>(S);
+  if (x0 + kTile < S)
+    for (int y = y0; y <= std::min(y0 + kTile, S - 1); ++y)
+      if (words[static_cast<size_t>(y) * row + static_cast<size_t>(x0 + kTile)] != skip) return true;
+  if (y0 + kTile < S)
+    for (int x = x0; x < std::min(x0 + kTile, S); ++x)
+      if (words[static_cast<size_t>(y0 + kTile) * row + static_cast<size_t>(x)] != skip) return true;
+  return false;
+}
+
+// Whether any word of the S x S face `words` among tile (tx, ty)'s own texels (no apron) is not `skip`.
+bool DisplayMemoryBank::own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
+  const int w = std::min(kTile, S - x0), h = std::min(kTile, S - y0);
   for (int ly = 0; ly < h; ++ly) {
     const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
     bool any = false;
@@ -160,6 +157,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   }
   int64_t stored = 0, lost = 0;
   std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
+  std::vector<std::array<int, 3>> drawn;  // (face, tx, ty) of the tiles whose own texels are written for the first time
   for (size_t f = 0; f < 6; ++f) {
     if (!words[f]) continue;
     if (!fmt_.present[f]) {
@@ -167,11 +165,17 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
       continue;
     }
     stored += count[f];
+    if (count[f] == 0) continue;
     const int32_t* table = index(back_, static_cast<int>(f));
     for (int ty = 0; ty < tiles_per_row_; ++ty)
-      for (int tx = 0; tx < tiles_per_row_; ++tx)
-        if (table[ty * tiles_per_row_ + tx] == 0 && window_written(words[f], tx, ty, skip))
-          fresh.push_back({static_cast<int>(f), tx, ty});
+      for (int tx = 0; tx < tiles_per_row_; ++tx) {
+        const bool unallocated = table[ty * tiles_per_row_ + tx] == 0, unmarked = !tile_ever_written(static_cast<int>(f), tx, ty);
+        if (!unallocated && !unmarked) continue;
+        // Its own texels once; the apron (the next tile's first column and row) only if they are all skipped.
+        const bool own = own_written(words[f], tx, ty, skip);
+        if (own && unmarked) drawn.push_back({static_cast<int>(f), tx, ty});
+        if (unallocated && (own || apron_written(words[f], tx, ty, skip))) fresh.push_back({static_cast<int>(f), tx, ty});
+      }
   }
   // One growth for all the tiles (growing a quarter a tile copied the pool about four times over): exact
   // into an empty pool (a render's, after clear_back), by at least a quarter into a used one (repeated calls
@@ -180,14 +184,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   const size_t need = std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords;
   if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
-  // The tiles whose own texels this writes, once (a tile already marked is not looked at again).
-  for (size_t f = 0; f < 6; ++f) {
-    if (!words[f] || !fmt_.present[f] || count[f] == 0) continue;
-    for (int ty = 0; ty < tiles_per_row_; ++ty)
-      for (int tx = 0; tx < tiles_per_row_; ++tx)
-        if (!tile_ever_written(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip))
-          mark_ever(static_cast<int>(f), tx, ty);
-  }
+  for (const auto& t : drawn) mark_ever(t[0], t[1], t[2]);
   lost_ += lost;  // last: a failed allocation above leaves the count as it was
   written_ += stored;
   return stored;
@@ -277,12 +274,6 @@ int64_t DisplayMemorySet::writes_lost() const {
 int64_t DisplayMemorySet::tiles_ever_written(int memory) const {
   int64_t n = 0;
   for (int e = 0; e < eyes_; ++e) n += bank(e, memory).tiles_ever_written();
-  return n;
-}
-
-int64_t DisplayMemorySet::texels_in_tiles_ever_written() const {
-  int64_t n = 0;
-  for (const auto& b : banks_) n += b->texels_in_tiles_ever_written();
   return n;
 }
 

@@ -69,6 +69,8 @@ class DisplayMemoryBank {
   static constexpr int kTileWords = kTileStride * kTileStride;     // 1089 words a stored tile
   // Word of local texel (lx, ly), 0 <= lx, ly <= 32 (32: the apron).
   static constexpr int tile_word(int lx, int ly) { return ly * kTileStride + lx; }
+  // Tiles a row (and column) of a face of S x S texels: the last may be partial.
+  static constexpr int tiles_per_row_of(int face_size) { return (face_size + kTile - 1) / kTile; }
 
   explicit DisplayMemoryBank(const MemoryFormat& f);
   DisplayMemoryBank(const DisplayMemoryBank&) = delete;
@@ -105,7 +107,6 @@ class DisplayMemoryBank {
     return !e.empty() && e[static_cast<size_t>(ty * tiles_per_row_ + tx)] != 0;
   }
   int64_t tiles_ever_written() const;
-  int64_t texels_in_tiles_ever_written() const;  // their texels (a face's last row and column of tiles may be partial)
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -156,7 +157,7 @@ class DisplayMemoryBank {
   void mark_ever(int face, int tx, int ty);
   // Whether any of the S x S face `words`' own texels of tile (tx, ty) (no apron) is not `skip`.
   bool own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
-  bool any_written(const uint64_t* words, int tx, int ty, int side, uint64_t skip) const;
+  bool apron_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
 
   MemoryFormat fmt_;
   int tiles_per_row_;
@@ -188,7 +189,6 @@ class DisplayMemorySet {
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
   int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
   int64_t tiles_ever_written(int memory) const;  // DisplayMemoryBank::tiles_ever_written, memory's banks (every eye)
-  int64_t texels_in_tiles_ever_written() const;  // every bank
 
  private:
   MemoryFormat fmt_;
