@@ -367,6 +367,8 @@ Plan make_plan(const PlanRequest& r) {
   if (r.walk.empty())
     throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
+  if (r.memory_limit_mib && !(*r.memory_limit_mib >= 0 && *r.memory_limit_mib <= 1e9))
+    throw InputError("--memory-limit", fmt("%g", *r.memory_limit_mib), "must be 0 (none) .. 1e9 MiB");
   if (r.depth_error && !(*r.depth_error >= 0 && *r.depth_error <= 1))
     throw InputError("--depth-error", "", "must be a share of the composed texels, 0 .. 1");
   config::check(r.base, r.base_source);
@@ -563,7 +565,6 @@ Plan make_plan(const PlanRequest& r) {
   // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
   // size takes more than the starting configuration, the limit is that ladder's.)
   const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(r.base)) / 1048576.0);
-  if (!(limit_mib >= 0) || !(limit_mib <= 1e9)) throw InputError("--memory-limit", fmt("%g", limit_mib), "must be 0 (none) .. 1e9 MiB");
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
     const auto least = *std::min_element(candidates.begin(), candidates.end(),
@@ -774,6 +775,30 @@ Plan make_plan(const PlanRequest& r) {
   return p;
 }
 
+host::RgbImage plan_tiles_image(const Plan& p) {
+  const int tpr = p.tiles.tiles_per_row, rows = static_cast<int>(p.tiles.present.size());
+  const int face_px = tpr * kTilePixels, gap = kTilePixels;
+  host::RgbImage img(gap + 6 * (face_px + gap), gap + rows * (face_px + gap));
+  for (int m = 0; m < rows; ++m)
+    for (int f = 0; f < 6; ++f) {
+      const bool present = !p.tiles.present[static_cast<size_t>(m)][static_cast<size_t>(f)].empty();
+      for (int ty = 0; ty < tpr; ++ty)
+        for (int tx = 0; tx < tpr; ++tx) {
+          const bool in = present && p.tiles.reachable(m, f, tx, ty);
+          const uint8_t c[3] = {static_cast<uint8_t>(!present ? 90 : in ? 235 : 45), static_cast<uint8_t>(!present ? 0 : in ? 225 : 45),
+                                static_cast<uint8_t>(!present ? 0 : in ? 160 : 45)};
+          for (int y = 0; y < kTilePixels; ++y)
+            for (int x = 0; x < kTilePixels; ++x) {
+              uint8_t* px = img.px(gap + f * (face_px + gap) + tx * kTilePixels + x, gap + m * (face_px + gap) + ty * kTilePixels + y);
+              px[0] = c[0];
+              px[1] = c[1];
+              px[2] = c[2];
+            }
+        }
+    }
+  return img;
+}
+
 std::string plan_config_text(const Plan& p) { return config::to_json(p.config).dump(2) + "\n"; }
 
 std::string plan_markdown(const Plan& p, const PlanRequest& r) {
@@ -799,6 +824,9 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
   s += "| display memory, tile-sparse (the tiles drawn on, bound over the motion, MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
+  s += "\nThe tiles each memory can be drawn on are pictured beside this file (`.tiles.png`): a row for each memory, "
+       "fastest at the top, of its faces +X -X +Y -Y +Z -Z, " + std::to_string(kTilePixels) + " pixels a tile; light: can be "
+       "drawn on, dark grey: cannot, dark red: a face left out.\n";
   s += "\nMean objects in each planned memory:";
   for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "

@@ -24,6 +24,7 @@
 #include "CompositionDepth.hpp"
 #include "HardwareCost.hpp"
 #include "RunSpec.hpp"
+#include "host/cubemap/CubeMapImages.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
 
 namespace arp::sim {
@@ -121,5 +122,11 @@ Plan make_plan(const PlanRequest& r);
 std::string plan_config_text(const Plan& p);
 // The human-readable account: each choice with its reason, the figures, what is not decided.
 std::string plan_markdown(const Plan& p, const PlanRequest& r);
+// The tile bound as a picture (`plan` writes it beside plan.md): a row for each memory, fastest at the top,
+// of its six faces +X -X +Y -Y +Z -Z left to right, kTilePixels a tile and kTilePixels between faces and rows,
+// each face as the display memory stores it (texel row 0 at the top). A tile the memory can be drawn on is
+// light, one it cannot dark grey, a face the plan leaves out dark red.
+constexpr int kTilePixels = 4;
+host::RgbImage plan_tiles_image(const Plan& p);
 
 }  // namespace arp::sim

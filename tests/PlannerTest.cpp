@@ -796,6 +796,31 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
   EXPECT_LT(bound, p.config.memory.count * p.config.memory.faces_present() * tpr * tpr / 4);
   EXPECT_LE(bound * mem.eyes(), 4 * drawn);  // and not loose: within 4x what the run drew on
   EXPECT_LT(p.memory_bytes_tiled, p.memory_bytes_planned / 2);
+  // The picture: a row of six faces for each memory, a reachable tile light and another dark.
+  const host::RgbImage img = plan_tiles_image(p);
+  const int face_px = tpr * kTilePixels;
+  ASSERT_EQ(img.width, kTilePixels + 6 * (face_px + kTilePixels));
+  ASSERT_EQ(img.height, kTilePixels + p.config.memory.count * (face_px + kTilePixels));
+  int light = 0, dark = 0;
+  for (int m = 0; m < p.config.memory.count; ++m)
+    for (int f = 0; f < 6; ++f)
+      for (int ty = 0; ty < tpr; ++ty)
+        for (int tx = 0; tx < tpr; ++tx) {
+          const uint8_t* px = img.px(kTilePixels + f * (face_px + kTilePixels) + tx * kTilePixels + 1,
+                                     kTilePixels + m * (face_px + kTilePixels) + ty * kTilePixels + 2);
+          const bool face_kept = p.config.memory.faces[static_cast<size_t>(f)] != 0;
+          if (!face_kept) {
+            EXPECT_EQ(px[1], 0);
+          } else if (p.tiles.reachable(m, f, tx, ty)) {
+            EXPECT_GT(px[0], 200);
+            ++light;
+          } else {
+            EXPECT_LT(px[0], 60);
+            ++dark;
+          }
+        }
+  EXPECT_EQ(light, bound);
+  EXPECT_GT(dark, 0);
 }
 
 // A tile-sparse memory's bytes in closed form: the default texel is 24 + 16 bits; a bank with 3 tiles holds

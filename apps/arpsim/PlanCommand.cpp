@@ -7,6 +7,7 @@
 #include "Commands.hpp"
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
+#include "host/cubemap/ImageFiles.hpp"
 #include "sim/Planner.hpp"
 
 namespace arp::app {
@@ -25,7 +26,8 @@ int run_plan(PlanArgs& a) {
   r.base = a.cfg.resolve();
   r.base_source = (a.cfg.file.empty() ? std::string("the default configuration") : a.cfg.file) + (a.cfg.sets.empty() ? "" : " with --set");
   const std::string md = std::filesystem::path(a.out).replace_extension(".md").string();
-  check_output_paths({{"--out", a.out}, {"--out's account", md}},
+  const std::string tiles = std::filesystem::path(a.out).replace_extension(".tiles.png").string();
+  check_output_paths({{"--out", a.out}, {"--out's account", md}, {"--out's tile picture", tiles}},
                      {{"--config", a.cfg.file}, {"--walk", r.walk == "gallery" ? "" : r.walk},
                       {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}});
   ProgressLine progress("plan", !a.quiet);
@@ -35,7 +37,9 @@ int run_plan(PlanArgs& a) {
   const std::string text = sim::plan_markdown(p, r);
   write_text_atomic(a.out, sim::plan_config_text(p));
   write_text_atomic(md, text);
-  std::printf("%s\narpsim plan: %s and %s written; run with --config %s\n", text.c_str(), a.out.c_str(), md.c_str(), a.out.c_str());
+  host::write_rgb8(tiles, sim::plan_tiles_image(p));
+  std::printf("%s\narpsim plan: %s, %s and %s (the tiles each memory can be drawn on) written; run with --config %s\n", text.c_str(),
+              a.out.c_str(), md.c_str(), tiles.c_str(), a.out.c_str());
   return 0;
 }
 
