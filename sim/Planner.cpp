@@ -824,7 +824,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
   s += "| display memory, tile-sparse (the tiles drawn on, bound over the motion, MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
-  s += "\nThe tiles each memory can be drawn on are pictured beside this file (`.tiles.png`): a row for each memory, "
+  s += "\nThe tiles each memory can be drawn on are pictured in the `.tiles.png` `arpsim plan` writes beside this file: a row for each memory, "
        "fastest at the top, of its faces +X -X +Y -Y +Z -Z, " + std::to_string(kTilePixels) + " pixels a tile; light: can be "
        "drawn on, dark grey: cannot, dark red: a face left out.\n";
   s += "\nMean objects in each planned memory:";

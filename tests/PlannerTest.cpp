@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <fstream>
 
@@ -491,6 +492,7 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   ASSERT_EQ(r.status, 0) << r.output;
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
+  EXPECT_TRUE(std::filesystem::is_regular_file(d.file("plan.tiles.png")));  // the tile picture beside the plan
   const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
   nlohmann::json rep[2];
   for (int whole = 0; whole < 2; ++whole) {
@@ -796,12 +798,20 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
   EXPECT_LT(bound, p.config.memory.count * p.config.memory.faces_present() * tpr * tpr / 4);
   EXPECT_LE(bound * mem.eyes(), 4 * drawn);  // and not loose: within 4x what the run drew on
   EXPECT_LT(p.memory_bytes_tiled, p.memory_bytes_planned / 2);
+  // The plan's tile-sparse figure in closed form: for each eye's bank of each memory, both buffers of its
+  // tiles' 32 x 32 slots and a table of an entry per tile of each face present, wide enough for 0 .. tiles.
+  int64_t bits = 0;
+  for (int e = 0; e < 2; ++e)
+    for (const int64_t t : p.tiles.per_memory)
+      bits += 2 * t * 1024 * (24 + p.config.memory.depth_bits) +
+              int64_t{p.config.memory.faces_present()} * tpr * tpr * static_cast<int64_t>(std::ceil(std::log2(static_cast<double>(t) + 1)));
+  EXPECT_EQ(p.memory_bytes_tiled, (bits + 7) / 8);
   // The picture: a row of six faces for each memory, a reachable tile light and another dark.
   const host::RgbImage img = plan_tiles_image(p);
   const int face_px = tpr * kTilePixels;
   ASSERT_EQ(img.width, kTilePixels + 6 * (face_px + kTilePixels));
   ASSERT_EQ(img.height, kTilePixels + p.config.memory.count * (face_px + kTilePixels));
-  int light = 0, dark = 0;
+  int light = 0, dark = 0, left_out = 0;
   for (int m = 0; m < p.config.memory.count; ++m)
     for (int f = 0; f < 6; ++f)
       for (int ty = 0; ty < tpr; ++ty)
@@ -810,7 +820,9 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
                                      kTilePixels + m * (face_px + kTilePixels) + ty * kTilePixels + 2);
           const bool face_kept = p.config.memory.faces[static_cast<size_t>(f)] != 0;
           if (!face_kept) {
+            EXPECT_EQ(px[0], 90);
             EXPECT_EQ(px[1], 0);
+            ++left_out;
           } else if (p.tiles.reachable(m, f, tx, ty)) {
             EXPECT_GT(px[0], 200);
             ++light;
@@ -821,6 +833,7 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
         }
   EXPECT_EQ(light, bound);
   EXPECT_GT(dark, 0);
+  EXPECT_GT(left_out, 0);  // (the balls are ahead and to the right: faces are left out)
 }
 
 // A tile-sparse memory's bytes in closed form: the default texel is 24 + 16 bits; a bank with 3 tiles holds

@@ -35,9 +35,10 @@ int run_plan(PlanArgs& a) {
   const sim::Plan p = sim::make_plan(r);
   progress.finish();
   const std::string text = sim::plan_markdown(p, r);
-  write_text_atomic(a.out, sim::plan_config_text(p));
-  write_text_atomic(md, text);
+  // The picture and the account first, the configuration last: a failure leaves no new plan beside an old picture.
   host::write_rgb8(tiles, sim::plan_tiles_image(p));
+  write_text_atomic(md, text);
+  write_text_atomic(a.out, sim::plan_config_text(p));
   std::printf("%s\narpsim plan: %s, %s and %s (the tiles each memory can be drawn on) written; run with --config %s\n", text.c_str(),
               a.out.c_str(), md.c_str(), tiles.c_str(), a.out.c_str());
   return 0;
