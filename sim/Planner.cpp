@@ -251,6 +251,14 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
+// A ladder's hardware display memory: the configuration `c` (face size, faces) with its memories and a
+// depth code of `depth_bits`.
+int64_t ladder_memory_bytes(dp::ArpConfig c, const LadderLoad& L, int depth_bits) {
+  c.memory.count = L.count;
+  c.memory.depth_bits = depth_bits;
+  return display_memory_bytes(c);
+}
+
 // The narrowest depth code the parameter table allows.
 int min_depth_bits() { return static_cast<int>(dp::arp_parameters().find("memory.depth_bits")->int_min); }
 
@@ -556,12 +564,7 @@ Plan make_plan(const PlanRequest& r) {
   // Only the ladders within the memory limit (--memory-limit; by default the starting configuration's display
   // memory): a ladder's hardware figure at the planned face size and faces, with the depth code it would
   // start from (the planned ladder's may narrow after, never widen). None: an error naming the least.
-  auto ladder_bytes = [&](const LadderLoad& L) {
-    dp::ArpConfig c = p.config;
-    c.memory.count = L.count;
-    c.memory.depth_bits = depth_bits_for(L.count, r.base);
-    return display_memory_bytes(c);
-  };
+  auto ladder_bytes = [&](const LadderLoad& L) { return ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base)); };
   // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
   // size takes more than the starting configuration, the limit is that ladder's.)
   const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(r.base)) / 1048576.0);
@@ -834,15 +837,13 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | display memory, MiB |\n"
        "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const LadderLoad& L : p.ladders) {
-    dp::ArpConfig c = p.config;
-    c.memory.count = L.count;
     const bool planned =
         L.count == p.planned.count && L.update_frames == p.planned.update_frames && L.update_ratio == p.planned.update_ratio;
-    c.memory.depth_bits = planned ? p.config.memory.depth_bits : depth_bits_for(L.count, r.base);
+    const int64_t bytes = ladder_memory_bytes(p.config, L, planned ? p.config.memory.depth_bits : depth_bits_for(L.count, r.base));
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
-         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(display_memory_bytes(c)) / 1048576.0) +
+         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(bytes) / 1048576.0) +
          (planned ? " (planned)" : "") + " |\n";
   }
   if (p.composition.points > 0) {
