@@ -66,13 +66,19 @@ std::string format(const ParamValue& v) {
       for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + real_text(a[i]);
       return s + "]";
     }
+    std::string operator()(const std::vector<std::string>& a) const {
+      std::string s = "[";
+      for (size_t i = 0; i < a.size(); ++i) s += (i ? ", \"" : "\"") + a[i] + "\"";
+      return s + "]";
+    }
   } f;
   return std::visit(f, v);
 }
 
 std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                       const std::vector<std::string>& choices) {
+                       const std::vector<std::string>& choices, const std::string& alphabet) {
   switch (t) {
+    case ParamType::TextList: return "up to " + compact(imax) + " strings of " + alphabet;
     case ParamType::Integer:
     case ParamType::IntegerArray: return compact(imin) + " .. " + compact(imax);
     case ParamType::Real:
@@ -87,8 +93,21 @@ std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, dou
 }
 
 std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                        const std::vector<std::string>& choices, size_t array_size, const ParamValue& v) {
+                        const std::vector<std::string>& choices, size_t array_size, const std::string& alphabet,
+                        const ParamValue& v) {
   switch (t) {
+    case ParamType::TextList: {
+      const auto& a = std::get<std::vector<std::string>>(v);
+      if (static_cast<int64_t>(a.size()) > imax)
+        return "has " + std::to_string(a.size()) + " strings, at most " + std::to_string(imax) + " allowed";
+      for (size_t i = 0; i < a.size(); ++i) {
+        const size_t bad = a[i].find_first_not_of(alphabet);
+        if (bad != std::string::npos)
+          return "string " + std::to_string(i) + " has \"" + quoted(a[i].substr(bad, 1)) + "\" at character " + std::to_string(bad) +
+                 ": only " + alphabet + " allowed";
+      }
+      return "";
+    }
     case ParamType::Integer: {
       const int64_t x = std::get<int64_t>(v);
       if (x < imin || x > imax) return "is " + std::to_string(x) + ", must be in " + interval(imin, imax);
@@ -104,7 +123,7 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
       const std::string& s = std::get<std::string>(v);
       for (const auto& c : choices)
         if (c == s) return "";
-      return "is \"" + quoted(s) + "\", must be one of " + range_text(t, 0, 0, 0, 0, choices);
+      return "is \"" + quoted(s) + "\", must be one of " + range_text(t, 0, 0, 0, 0, choices, alphabet);
     }
     case ParamType::IntegerArray: {
       const auto& a = std::get<std::vector<int64_t>>(v);

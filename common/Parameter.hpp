@@ -52,10 +52,12 @@ std::string enum_choices(const EnumNames<E>& names) {  // "a, b, c"
   return s;
 }
 
-enum class ParamType { Integer, Real, Choice, IntegerArray, RealArray };
+// TextList: a list of strings of any length up to int_max, each of the characters in `alphabet` only (what
+// the strings mean is checked where the configuration is validated as a whole).
+enum class ParamType { Integer, Real, Choice, IntegerArray, RealArray, TextList };
 
 // A parameter's value as readers and writers see it.
-using ParamValue = std::variant<int64_t, double, std::string, std::vector<int64_t>, std::vector<double>>;
+using ParamValue = std::variant<int64_t, double, std::string, std::vector<int64_t>, std::vector<double>, std::vector<std::string>>;
 
 template <class Root>
 struct Parameter {
@@ -66,6 +68,7 @@ struct Parameter {
   double real_min = 0, real_max = 0;
   std::vector<std::string> choices;
   size_t array_size = 0;
+  std::string alphabet;  // TextList: the characters its strings may hold
   std::string unit, doc;
   std::function<ParamValue(const Root&)> get;
   // Stores a value already checked against the type and range above.
@@ -114,6 +117,21 @@ class ParameterTable {
     for (const auto& [e, n] : names) p.choices.push_back(n);
     p.get = [ref, names](const Root& r) { return ParamValue(enum_name(names, ref(r))); };
     p.set = [ref, names](Root& r, const ParamValue& v) { return enum_parse(names, std::get<std::string>(v), ref(r)); };
+    return add(std::move(p));
+  }
+
+  // A std::vector<std::string> of at most max_strings strings, each of `alphabet`'s characters only.
+  template <class Ref>
+  ParameterTable& text_list(std::string key, Ref ref, int64_t max_strings, std::string alphabet, std::string unit, std::string doc) {
+    Parameter<Root> p = base(std::move(key), ParamType::TextList, std::move(unit), std::move(doc));
+    p.int_min = 0;
+    p.int_max = max_strings;
+    p.alphabet = std::move(alphabet);
+    p.get = [ref](const Root& r) { return ParamValue(ref(r)); };
+    p.set = [ref](Root& r, const ParamValue& v) {
+      ref(r) = std::get<std::vector<std::string>>(v);
+      return true;
+    };
     return add(std::move(p));
   }
 
@@ -202,19 +220,20 @@ class ParameterTable {
 // Shared by every Parameter<Root>: range messages and value formatting.
 namespace param_detail {
 std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                        const std::vector<std::string>& choices, size_t array_size, const ParamValue& v);
+                        const std::vector<std::string>& choices, size_t array_size, const std::string& alphabet,
+                        const ParamValue& v);
 std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                       const std::vector<std::string>& choices);
+                       const std::vector<std::string>& choices, const std::string& alphabet);
 std::string format(const ParamValue& v);
 }  // namespace param_detail
 
 template <class Root>
 std::string Parameter<Root>::range_error(const ParamValue& v) const {
-  return param_detail::range_error(type, int_min, int_max, real_min, real_max, choices, array_size, v);
+  return param_detail::range_error(type, int_min, int_max, real_min, real_max, choices, array_size, alphabet, v);
 }
 template <class Root>
 std::string Parameter<Root>::range_text() const {
-  return param_detail::range_text(type, int_min, int_max, real_min, real_max, choices);
+  return param_detail::range_text(type, int_min, int_max, real_min, real_max, choices, alphabet);
 }
 template <class Root>
 std::string Parameter<Root>::format(const ParamValue& v) {

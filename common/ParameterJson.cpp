@@ -51,6 +51,22 @@ bool to_value(ParamType t, size_t n, const json& v, ParamValue& out, std::string
       out = x;
       return true;
     }
+    case ParamType::TextList: {
+      if (!v.is_array()) {
+        why = "must be an array of strings, got " + brief(v);
+        return false;
+      }
+      std::vector<std::string> list;
+      for (size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_string()) {
+          why = "element " + std::to_string(i) + " must be a string, got " + brief(v[i]);
+          return false;
+        }
+        list.push_back(v[i].get<std::string>());
+      }
+      out = list;
+      return true;
+    }
     case ParamType::Choice:
       if (!v.is_string()) return false;
       out = v.get<std::string>();

@@ -228,7 +228,30 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
                        " this machine has available: a smaller face size or fewer memories");
 }
 
+std::vector<int64_t> tiles_held(const dp::ArpConfig& c) {
+  std::vector<int64_t> per_memory;
+  bool sparse = false;
+  for (size_t k = 0; k < c.memory.tiles.size(); ++k) {
+    dp::TileMap map;
+    std::string why;
+    if (!dp::TileMap::parse(c.memory.tiles[k], c.memory.face_size, map, why))
+      throw std::invalid_argument("memory.tiles, memory " + std::to_string(k) + ": " + why);
+    int64_t n = 0;
+    for (int f = 0; f < 6; ++f) {
+      if (!c.memory.faces[static_cast<size_t>(f)]) continue;
+      n += map.tiles(f);
+      sparse |= !map.every_tile(f);
+    }
+    per_memory.push_back(n);
+  }
+  if (!sparse) return {};
+  std::vector<int64_t> banks;
+  for (int e = 0; e < c.timing.eyes; ++e) banks.insert(banks.end(), per_memory.begin(), per_memory.end());
+  return banks;
+}
+
 int64_t display_memory_bytes(const dp::ArpConfig& c) {
+  if (const std::vector<int64_t> held = tiles_held(c); !held.empty()) return display_memory_bytes_tiled(c, held);
   const int64_t S = c.memory.face_size;
   const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
   return int64_t{c.timing.eyes} * c.memory.count * 2 * c.memory.faces_present() * S * S * bits / 8;

@@ -804,6 +804,14 @@ RunSummary Session::run() {
                   lost, spec_.config.memory.absent_face_names().c_str());
     s.notes.push_back(b);
   }
+  if (const int64_t lost = memories_.writes_lost_off_tiles(); lost > 0) {
+    char b[400];
+    std::snprintf(b, sizeof b,
+                  "  warning: %" PRId64 " texels the host drew fell on tiles memory.tiles leaves out and were lost: the "
+                  "configuration was planned for another scene or motion (arpsim plan; footprint.texels_lost_off_tiles)",
+                  lost);
+    s.notes.push_back(b);
+  }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
@@ -831,7 +839,7 @@ RunSummary Session::run() {
   r["images"] = images_;
   // What was modelled: the display memories' storage (sparse tiles, both buffers) against what the
   // configuration's hardware holds (the faces present of every memory, double-buffered), what the host
-  // drew on faces the configuration leaves out and stored on the others, the banks (eyes x memories) and the
+  // drew on faces and tiles the configuration leaves out and stored on the others, the banks (eyes x memories) and the
   // SystemC modules elaborated.
   nlohmann::json tiles_drawn_on = nlohmann::json::array();  // per memory, every eye's bank
   for (int k = 0; k < memories_.count(); ++k) tiles_drawn_on.push_back(memories_.tiles_ever_written(k));
@@ -839,6 +847,7 @@ RunSummary Session::run() {
                     {"display_memory_tiles_at_end", memories_.tiles_allocated()},
                     {"display_memory_faces", spec_.config.memory.faces_present()},
                     {"texels_lost_on_absent_faces", memories_.writes_lost()},
+                    {"texels_lost_off_tiles", memories_.writes_lost_off_tiles()},
                     {"texels_written", s.texels_written},
                     {"display_memory_banks", s.memory_banks},
                     {"systemc_modules", s.systemc_modules},

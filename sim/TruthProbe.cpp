@@ -32,6 +32,7 @@ double mean_of(const std::vector<int64_t>& v) {
 dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
   dp::ArpConfig c = run;
   c.memory.count = 1;
+  c.memory.tiles.clear();  // it holds every tile: a reference, not the run's tile-sparse hardware
   if (face_size == 0) return c;
   const dp::ArpConfig builtin;
   c.widths = builtin.widths;

@@ -170,6 +170,21 @@ void expect_same_tiles(DisplayMemoryBank& a, DisplayMemoryBank& b, std::initiali
       for (int k = 0; k < DisplayMemoryBank::kTileWords; ++k) ASSERT_EQ(pa[k], pb[k]) << "face " << f << " tile " << t << " word " << k;
     }
 }
+// A sparse face of random texels (S^2 words, the rest empty), a 10 x 10 patch across the corner of four
+// tiles at (60, 60), and texel (32, 32) alone: a tile's (0, 0) only.
+std::vector<uint64_t> sparse_face(const MemoryFormat& fmt, unsigned seed) {
+  const int S = fmt.face_size;
+  std::mt19937 rng(seed);
+  std::vector<uint64_t> words(static_cast<size_t>(S) * static_cast<size_t>(S), fmt.empty_word());
+  for (int i = 0; i < 300; ++i) {
+    const int x = static_cast<int>(rng() % static_cast<unsigned>(S)), y = static_cast<int>(rng() % static_cast<unsigned>(S));
+    words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{rng() % 60000u} << 32) | (rng() & 0xFFFFFFu);
+  }
+  for (int y = 60; y < 70; ++y)
+    for (int x = 60; x < 70; ++x) words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{9} << 32) | 0x10203;
+  words[static_cast<size_t>(32) * static_cast<size_t>(S) + 32] = (uint64_t{4} << 32) | 7;
+  return words;
+}
 }  // namespace
 
 // write_face against write(): sparse random faces (isolated texels, tile borders, a patch across a corner)
@@ -181,15 +196,7 @@ TEST(DisplayMemoryBank, AWholeFaceIsWrittenAsTexelByTexel) {
     mc.face_size = S;
     const MemoryFormat fmt(mc);
     DisplayMemoryBank by_texel(fmt), by_face(fmt);
-    std::mt19937 rng(static_cast<unsigned>(S));
-    std::vector<uint64_t> words(static_cast<size_t>(S) * static_cast<size_t>(S), fmt.empty_word());
-    for (int i = 0; i < 300; ++i) {
-      const int x = static_cast<int>(rng() % static_cast<unsigned>(S)), y = static_cast<int>(rng() % static_cast<unsigned>(S));
-      words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{rng() % 60000u} << 32) | (rng() & 0xFFFFFFu);
-    }
-    for (int y = 60; y < 70; ++y)  // across the corner of four tiles
-      for (int x = 60; x < 70; ++x) words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{9} << 32) | 0x10203;
-    words[static_cast<size_t>(32) * static_cast<size_t>(S) + 32] = (uint64_t{4} << 32) | 7;  // a tile's (0, 0) only
+    const std::vector<uint64_t> words = sparse_face(fmt, static_cast<unsigned>(S));
     for (DisplayMemoryBank* b : {&by_texel, &by_face}) {
       b->write(3, 5, 5, 0x111111, 100);  // already there: another face, and this face
       b->write(2, 31, 31, 0x222222, 200);
@@ -305,6 +312,85 @@ TEST(DisplayMemoryBank, TheTilesDrawnOnAreThoseWhoseOwnTexelsWereWritten) {
     EXPECT_EQ(b.tiles_allocated(), 0u);
     EXPECT_EQ(b.tiles_ever_written(), 3);
   }
+}
+
+// A bank holding only some tiles (memory.tiles) stores what a bank holding every tile stores when the texels
+// on the tiles it does not hold are never drawn: the same tiles and words, aprons included (a held tile's
+// apron does not copy a neighbour it does not hold), written a face at a time or texel by texel. The texels
+// on those tiles are lost and counted. Held: a checkerboard of face 2's tiles, so every held tile's right
+// and bottom neighbours are not held and its bottom-right one is; face 3 whole.
+TEST(DisplayMemoryBank, ATileItDoesNotHoldIsLostAsIfNeverDrawn) {
+  for (const int S : {128, 100}) {
+    MemoryConfig mc;
+    mc.face_size = S;
+    const MemoryFormat fmt(mc);
+    TileMap map(S, true);
+    const int T = map.tiles_per_row();
+    for (int ty = 0; ty < T; ++ty)
+      for (int tx = 0; tx < T; ++tx) map.set(2, tx, ty, (tx + ty) % 2 == 1);
+    const std::vector<uint64_t> words = sparse_face(fmt, static_cast<unsigned>(S) + 1);
+    std::vector<uint64_t> kept = words;  // what a bank holding every tile is given instead
+    int64_t off = 0, on = 0;
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        uint64_t& w = kept[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)];
+        if (w == fmt.empty_word()) continue;
+        if ((x / 32 + y / 32) % 2 == 0) {
+          w = fmt.empty_word();
+          ++off;
+        } else {
+          ++on;
+        }
+      }
+    ASSERT_GT(off, 0);
+    DisplayMemoryBank by_face(fmt, map), by_texel(fmt, map), whole(fmt), whole_too(fmt);
+    EXPECT_EQ(by_face.write_face(2, words.data(), fmt.empty_word()), on);
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x)
+        if (const uint64_t w = words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)]; w != fmt.empty_word())
+          by_texel.write(2, x, y, texel_color(w), texel_depth(w));
+    for (DisplayMemoryBank* b : {&whole, &whole_too}) b->write_face(2, kept.data(), fmt.empty_word());
+    for (DisplayMemoryBank* b : {&by_face, &by_texel}) {
+      EXPECT_EQ(b->writes_lost_off_tiles(), off) << S;
+      EXPECT_EQ(b->texels_written(), on) << S;
+      EXPECT_EQ(b->writes_lost(), 0);
+      EXPECT_EQ(b->tiles_ever_written(), whole.tiles_ever_written()) << S;
+      EXPECT_EQ(b->tiles_allocated(), whole.tiles_allocated()) << S;
+    }
+    expect_same_tiles(by_face, whole, {2});
+    expect_same_tiles(by_texel, whole_too, {2});
+    EXPECT_EQ(by_face.read(2, 5, 5), fmt.empty_word());  // tile (0, 0): not held
+    // Held tile (1, 0) drawn on only through its apron, from its right neighbour (2, 0) and the one below,
+    // (1, 1), neither held: nothing is allocated.
+    std::vector<uint64_t> apron_only(static_cast<size_t>(S) * static_cast<size_t>(S), fmt.empty_word());
+    apron_only[5 * static_cast<size_t>(S) + 64] = (uint64_t{3} << 32) | 1;
+    apron_only[32 * static_cast<size_t>(S) + 40] = (uint64_t{3} << 32) | 2;
+    DisplayMemoryBank edges(fmt, map);
+    EXPECT_EQ(edges.write_face(2, apron_only.data(), fmt.empty_word()), 0);
+    EXPECT_EQ(edges.writes_lost_off_tiles(), 2);
+    EXPECT_EQ(edges.tiles_allocated(), 0u) << S;
+  }
+}
+
+// A memory set gives each memory's banks, every eye's, that memory's tiles.
+TEST(DisplayMemorySet, EachMemoryHoldsItsOwnTiles) {
+  MemoryConfig mc;
+  mc.count = 2;
+  mc.face_size = 64;
+  mc.tiles = {"1/-/-/-/-/-", "*/*/*/*/*/*"};
+  DisplayMemorySet set(mc, 2);
+  for (int e = 0; e < 2; ++e) {
+    EXPECT_TRUE(set.bank(e, 0).holds(0, 0, 0));
+    EXPECT_FALSE(set.bank(e, 0).holds(0, 1, 0));
+    EXPECT_FALSE(set.bank(e, 0).holds(5, 0, 0));
+    EXPECT_TRUE(set.bank(e, 1).holds(5, 1, 1));
+    set.bank(e, 0).write(0, 40, 3, 1, 1);  // tile (1, 0): lost
+    set.bank(e, 1).write(0, 40, 3, 1, 1);
+  }
+  EXPECT_EQ(set.writes_lost_off_tiles(), 2);
+  EXPECT_EQ(set.texels_written(), 2);
+  mc.tiles = {"*/*/*/*/*/*"};
+  EXPECT_THROW(DisplayMemorySet(mc, 1), std::invalid_argument);
 }
 
 TEST(MemoryFormat, ColourPackingAndRounding) {

@@ -91,6 +91,9 @@ struct MemoryConfig {
   // empty, the host's writes to it are lost and counted). `arpsim plan` leaves out the faces no object
   // of the scene reaches over the motion.
   std::array<int, 6> faces{1, 1, 1, 1, 1, 1};
+  // The 32 x 32 tiles each memory holds (dp::TileMap's text, one string per memory; none: every tile of every
+  // face present). `arpsim plan` writes the tiles its scene's motion can draw on.
+  std::vector<std::string> tiles{};
   // Object-level priority rendering (Regan & Pose): memory m is updated every
   // update_frames x update_ratio^m display frames (1, 2, 4, 8 by default).
   int update_frames = 1;

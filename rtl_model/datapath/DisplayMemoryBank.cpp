@@ -15,11 +15,17 @@ uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
   return pack_color(q(r8, red_bits), q(g8, green_bits), q(b8, blue_bits));
 }
 
-DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f)
+DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f, TileMap tiles)
     : fmt_(f),
       tiles_per_row_(tiles_per_row_of(f.face_size)),
+      tiles_(std::move(tiles)),
       empty_tile_(kTileWords, f.empty_word()),
-      empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {}
+      empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {
+  if (tiles_.tiles_per_row() != 0 && tiles_.tiles_per_row() != tiles_per_row_)
+    throw std::invalid_argument("DisplayMemoryBank: a tile map of " + std::to_string(tiles_.tiles_per_row()) +
+                                " tiles a row for faces of " + std::to_string(tiles_per_row_));
+  for (size_t face = 0; face < 6; ++face) tile_sparse_ |= fmt_.present[face] && !tiles_.every_tile(static_cast<int>(face));
+}
 
 int32_t DisplayMemoryBank::back_tile(int face, int tx, int ty) {
   Buffer& b = buffers_[back_];
@@ -69,8 +75,12 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
     return;
   }
   const uint64_t word = (uint64_t{depth} << 32) | color;
-  ++written_;
   const int tx = x >> kTileShift, ty = y >> kTileShift, lx = x & (kTile - 1), ly = y & (kTile - 1);
+  if (!holds(face, tx, ty)) {
+    ++lost_tiles_;
+    return;
+  }
+  ++written_;
   put(face, tx, ty, lx, ly, word);
   mark_ever(face, tx, ty);
   // The texel also stands in the aprons of the tiles to its left, above, and above-left.
@@ -103,22 +113,38 @@ int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t 
 
 // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
 // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
-bool DisplayMemoryBank::window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
-  return own_written(words, tx, ty, skip) || apron_written(words, tx, ty, skip);
+bool DisplayMemoryBank::window_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  return (holds(face, tx, ty) && own_written(words, tx, ty, skip)) || apron_written(face, words, tx, ty, skip);
 }
 
-// Whether any word of tile (tx, ty)'s apron -- texel column x0 + 32 (rows y0 .. y0 + 32) and row y0 + 32
-// (columns x0 .. x0 + 31), within the face -- is not `skip`.
-bool DisplayMemoryBank::apron_written(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+// Whether any word of tile (tx, ty)'s apron -- texel column x0 + 32 (rows y0 .. y0 + 31: the right
+// neighbour's; row y0 + 32: the bottom-right's) and row y0 + 32 (columns x0 .. x0 + 31: the bottom
+// neighbour's), within the face and of a tile the bank holds -- is not `skip`.
+bool DisplayMemoryBank::apron_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const {
   const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
   const size_t row = static_cast<size_t>(S);
-  if (x0 + kTile < S)
-    for (int y = y0; y <= std::min(y0 + kTile, S - 1); ++y)
+  const bool right = x0 + kTile < S, down = y0 + kTile < S;
+  if (right && holds(face, tx + 1, ty))
+    for (int y = y0; y < std::min(y0 + kTile, S); ++y)
       if (words[static_cast<size_t>(y) * row + static_cast<size_t>(x0 + kTile)] != skip) return true;
-  if (y0 + kTile < S)
+  if (right && down && holds(face, tx + 1, ty + 1) &&
+      words[static_cast<size_t>(y0 + kTile) * row + static_cast<size_t>(x0 + kTile)] != skip)
+    return true;
+  if (down && holds(face, tx, ty + 1))
     for (int x = x0; x < std::min(x0 + kTile, S); ++x)
       if (words[static_cast<size_t>(y0 + kTile) * row + static_cast<size_t>(x)] != skip) return true;
   return false;
+}
+
+int64_t DisplayMemoryBank::own_count(const uint64_t* words, int tx, int ty, uint64_t skip) const {
+  const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
+  const int w = std::min(kTile, S - x0), h = std::min(kTile, S - y0);
+  int64_t n = 0;
+  for (int ly = 0; ly < h; ++ly) {
+    const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
+    for (int lx = 0; lx < w; ++lx) n += row[lx] != skip;
+  }
+  return n;
 }
 
 // Whether any word of the S x S face `words` among tile (tx, ty)'s own texels (no apron) is not `skip`.
@@ -155,7 +181,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
     if (bad) throw std::out_of_range("depth code wider than the memory's depth format");
     count[f] = c;
   }
-  int64_t stored = 0, lost = 0;
+  int64_t stored = 0, lost = 0, lost_off = 0;
   std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
   std::vector<std::array<int, 3>> drawn;  // (face, tx, ty) of the tiles whose own texels are written for the first time
   for (size_t f = 0; f < 6; ++f) {
@@ -164,6 +190,14 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
       lost += count[f];
       continue;
     }
+    if (tile_sparse_ && !tiles_.every_tile(static_cast<int>(f)) && count[f] > 0)
+      for (int ty = 0; ty < tiles_per_row_; ++ty)  // the texels on tiles not held are lost
+        for (int tx = 0; tx < tiles_per_row_; ++tx)
+          if (!holds(static_cast<int>(f), tx, ty)) {
+            const int64_t off = own_count(words[f], tx, ty, skip);
+            count[f] -= off;
+            lost_off += off;
+          }
     stored += count[f];
     if (count[f] == 0) continue;
     const int32_t* table = index(back_, static_cast<int>(f));
@@ -172,9 +206,10 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
         const bool unallocated = table[ty * tiles_per_row_ + tx] == 0, unmarked = !tile_ever_written(static_cast<int>(f), tx, ty);
         if (!unallocated && !unmarked) continue;
         // Its own texels once; the apron (the next tile's first column and row) only if they are all skipped.
-        const bool own = own_written(words[f], tx, ty, skip);
+        const bool own = holds(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip);
         if (own && unmarked) drawn.push_back({static_cast<int>(f), tx, ty});
-        if (unallocated && (own || apron_written(words[f], tx, ty, skip))) fresh.push_back({static_cast<int>(f), tx, ty});
+        if (unallocated && (own || apron_written(static_cast<int>(f), words[f], tx, ty, skip)))
+          fresh.push_back({static_cast<int>(f), tx, ty});
       }
   }
   // One growth for all the tiles (growing a quarter a tile copied the pool about four times over): exact
@@ -185,7 +220,8 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
   for (const auto& t : drawn) mark_ever(t[0], t[1], t[2]);
-  lost_ += lost;  // last: a failed allocation above leaves the count as it was
+  lost_ += lost;  // last: a failed allocation above leaves the counts as they were
+  lost_tiles_ += lost_off;
   written_ += stored;
   return stored;
 }
@@ -200,20 +236,45 @@ void DisplayMemoryBank::store_face(int face, const uint64_t* words, uint64_t ski
     for (int tx = 0; tx < tiles_per_row_; ++tx) {
       const int32_t tile = table[ty * tiles_per_row_ + tx];
       if (tile == 0) {  // the shared empty tile: never written
-        if (window_written(words, tx, ty, skip))
+        if (window_written(face, words, tx, ty, skip))
           throw std::logic_error("DisplayMemoryBank::store_face: face " + std::to_string(face) + " tile (" + std::to_string(tx) +
                                  "," + std::to_string(ty) + ") was not reserved");
         continue;
       }
+      uint64_t* out = pool + static_cast<size_t>(tile) * kTileWords;
+      if (tile_sparse_ && !tiles_.every_tile(face)) {
+        store_window_held(face, words, tx, ty, skip, out);
+        continue;
+      }
       const int x0 = tx * kTile, y0 = ty * kTile;
       const int w = std::min(kTile + 1, S - x0), h = std::min(kTile + 1, S - y0);
-      uint64_t* out = pool + static_cast<size_t>(tile) * kTileWords;
       for (int ly = 0; ly < h; ++ly) {
         const uint64_t* row = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0);
         uint64_t* dst = out + tile_word(0, ly);
         for (int lx = 0; lx < w; ++lx) dst[lx] = row[lx] == skip ? dst[lx] : row[lx];  // a blend: vectorises
       }
     }
+}
+
+// The window's four parts -- own texels, the right neighbour's column, the bottom neighbour's row, the
+// bottom-right corner -- each copied only from a tile the bank holds.
+void DisplayMemoryBank::store_window_held(int face, const uint64_t* words, int tx, int ty, uint64_t skip, uint64_t* out) const {
+  const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
+  const int w = std::min(kTile, S - x0), h = std::min(kTile, S - y0);
+  const bool right = x0 + kTile < S, down = y0 + kTile < S;
+  const bool own = holds(face, tx, ty), col = right && holds(face, tx + 1, ty), row = down && holds(face, tx, ty + 1),
+             corner = right && down && holds(face, tx + 1, ty + 1);
+  auto copy = [&](int ly, int lx0, int n) {
+    const uint64_t* src = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0 + lx0);
+    uint64_t* dst = out + tile_word(lx0, ly);
+    for (int i = 0; i < n; ++i) dst[i] = src[i] == skip ? dst[i] : src[i];
+  };
+  for (int ly = 0; ly < h; ++ly) {
+    if (own) copy(ly, 0, w);
+    if (col) copy(ly, kTile, 1);
+  }
+  if (row) copy(kTile, 0, w);
+  if (corner) copy(kTile, kTile, 1);
 }
 
 void DisplayMemoryBank::clear_back() {
@@ -245,8 +306,16 @@ size_t DisplayMemoryBank::bytes_allocated() const {
   return bytes;
 }
 
-DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes) : fmt_(m), eyes_(eyes), count_(m.count) {
-  for (int i = 0; i < eyes * m.count; ++i) banks_.push_back(std::make_unique<DisplayMemoryBank>(fmt_));
+DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes) : fmt_(m), tiles_(m.tiles), eyes_(eyes), count_(m.count) {
+  if (!tiles_.empty() && static_cast<int>(tiles_.size()) != count_)
+    throw std::invalid_argument("memory.tiles has " + std::to_string(tiles_.size()) + " strings for " + std::to_string(count_) + " memories");
+  std::vector<TileMap> maps(static_cast<size_t>(count_));
+  for (size_t k = 0; k < tiles_.size(); ++k) {
+    std::string why;
+    if (!TileMap::parse(tiles_[k], m.face_size, maps[k], why)) throw std::invalid_argument("memory.tiles, memory " + std::to_string(k) + ": " + why);
+  }
+  for (int e = 0; e < eyes; ++e)
+    for (int k = 0; k < count_; ++k) banks_.push_back(std::make_unique<DisplayMemoryBank>(fmt_, maps[static_cast<size_t>(k)]));
 }
 
 void DisplayMemorySet::vblank() {
@@ -271,6 +340,12 @@ int64_t DisplayMemorySet::writes_lost() const {
   return n;
 }
 
+int64_t DisplayMemorySet::writes_lost_off_tiles() const {
+  int64_t n = 0;
+  for (const auto& b : banks_) n += b->writes_lost_off_tiles();
+  return n;
+}
+
 int64_t DisplayMemorySet::tiles_ever_written(int memory) const {
   int64_t n = 0;
   for (int e = 0; e < eyes_; ++e) n += bank(e, memory).tiles_ever_written();
@@ -288,7 +363,7 @@ bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
   const MemoryFormat want(c.memory);
   return mem.eyes() == c.timing.eyes && mem.count() == c.memory.count && f.face_size == want.face_size &&
          f.red_bits == want.red_bits && f.green_bits == want.green_bits && f.blue_bits == want.blue_bits &&
-         f.depth_bits == want.depth_bits;
+         f.depth_bits == want.depth_bits && mem.tiles_text() == c.memory.tiles;
 }
 
 bool DisplayMemoryBank::front_tiles_in_order() const {

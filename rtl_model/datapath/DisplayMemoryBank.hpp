@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "ArpConfig.hpp"
+#include "TileMap.hpp"
 
 namespace arp::dp {
 
@@ -72,7 +73,11 @@ class DisplayMemoryBank {
   // Tiles a row (and column) of a face of S x S texels: the last may be partial.
   static constexpr int tiles_per_row_of(int face_size) { return (face_size + kTile - 1) / kTile; }
 
-  explicit DisplayMemoryBank(const MemoryFormat& f);
+  // `tiles`: the tiles it holds (memory.tiles; default every tile). A texel drawn on a tile it does not hold is
+  // lost and counted (writes_lost_off_tiles), and so are its copies in its neighbours' aprons: such a tile reads
+  // empty, as in a tile-sparse memory without it. A tile not held may still be allocated here to carry the
+  // apron of a held neighbour (the model's copy of that neighbour's edge, not storage of its own).
+  explicit DisplayMemoryBank(const MemoryFormat& f, TileMap tiles = {});
   DisplayMemoryBank(const DisplayMemoryBank&) = delete;
   DisplayMemoryBank& operator=(const DisplayMemoryBank&) = delete;
 
@@ -80,7 +85,7 @@ class DisplayMemoryBank {
 
   // Host port (back buffer). Coordinates and codes are checked: out of range throws std::out_of_range.
   // A write to a face the format leaves out (memory.faces) is lost, as in hardware without that face,
-  // and counted (writes_lost).
+  // and counted (writes_lost); one to a tile the bank does not hold (memory.tiles) likewise (writes_lost_off_tiles).
   void write(int face, int x, int y, uint32_t color, uint32_t depth);
   uint64_t read_back(int face, int x, int y) const { return fetch(back_, face, x, y); }
   // A whole face at once (S x S words, row-major): every word but those equal to `skip` written as write()
@@ -98,6 +103,9 @@ class DisplayMemoryBank {
   // OpenMP regions). Misuse -- a word with no tile -- is a std::logic_error, after the tiles before it.
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
+  int64_t writes_lost_off_tiles() const { return lost_tiles_; }  // texels written to tiles not held on faces present, ever
+  const TileMap& tiles() const { return tiles_; }
+  bool holds(int face, int tx, int ty) const { return !tile_sparse_ || tiles_.has(face, tx, ty); }
   int64_t texels_written() const { return written_; }  // texels stored (write, write_face, reserve_faces), ever
   // The tiles whose own 32 x 32 texels (not the apron) were ever written, in either buffer: what a
   // display memory holding only the tiles this run draws on would need (a tile written only through its
@@ -152,18 +160,25 @@ class DisplayMemoryBank {
   // The pool number of tile (tx, ty) of a face in the back buffer, allocating it (with its apron) if new.
   int32_t back_tile(int face, int tx, int ty);
   // Whether any word of the S x S face `words` in tile (tx, ty)'s window (its texels and apron) is not `skip`.
-  bool window_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
+  // Words of tiles the bank does not hold count as skipped, here and below.
+  bool window_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const;
   void put(int face, int tx, int ty, int lx, int ly, uint64_t word);
   void mark_ever(int face, int tx, int ty);
   // Whether any of the S x S face `words`' own texels of tile (tx, ty) (no apron) is not `skip`.
   bool own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
-  bool apron_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
+  bool apron_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const;
+  int64_t own_count(const uint64_t* words, int tx, int ty, uint64_t skip) const;  // own texels not `skip'
+  // store_face's copy of one tile's window when the bank does not hold some of the tiles it draws from.
+  void store_window_held(int face, const uint64_t* words, int tx, int ty, uint64_t skip, uint64_t* out) const;
 
   MemoryFormat fmt_;
   int tiles_per_row_;
+  TileMap tiles_;
+  bool tile_sparse_ = false;  // some tile of a face present is not held
   std::vector<uint64_t> empty_tile_;   // what tile 0 reads as before a buffer has a pool
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   int64_t lost_ = 0;
+  int64_t lost_tiles_ = 0;
   int64_t written_ = 0;
   std::array<std::vector<uint8_t>, 6> ever_;  // per face, row-major by tile: 1 once its own texels were written
   std::array<Buffer, 2> buffers_;
@@ -175,7 +190,8 @@ class DisplayMemoryBank {
 // position), `count` banks. Memory 0 is the fastest-updated.
 class DisplayMemorySet {
  public:
-  DisplayMemorySet(const MemoryConfig& m, int eyes);
+  DisplayMemorySet(const MemoryConfig& m, int eyes);  // std::invalid_argument for a malformed memory.tiles
+  const std::vector<std::string>& tiles_text() const { return tiles_; }
   int eyes() const { return eyes_; }
   int count() const { return count_; }
   const MemoryFormat& format() const { return fmt_; }
@@ -187,17 +203,19 @@ class DisplayMemorySet {
   size_t bytes_allocated() const;
   size_t tiles_allocated() const;  // written tiles, every bank
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
+  int64_t writes_lost_off_tiles() const;  // texels written to tiles not held (memory.tiles), every bank
   int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
   int64_t tiles_ever_written(int memory) const;  // DisplayMemoryBank::tiles_ever_written, memory's banks (every eye)
 
  private:
   MemoryFormat fmt_;
+  std::vector<std::string> tiles_;  // memory.tiles
   int eyes_, count_;
   std::vector<std::unique_ptr<DisplayMemoryBank>> banks_;
 };
 
 // Whether a memory set is the one a configuration describes: its eyes,
-// memory count and format (what a frame renderer reads it with).
+// memory count, format (what a frame renderer reads it with) and tiles held.
 bool matches(const DisplayMemorySet& mem, const ArpConfig& c);
 
 }  // namespace arp::dp
