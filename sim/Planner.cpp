@@ -303,10 +303,7 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   const size_t M = static_cast<size_t>(L.count);
   TileBound out;
   out.tiles_per_row = tpr;
-  out.present.assign(M, {});
-  for (auto& m : out.present)
-    for (size_t f = 0; f < 6; ++f)
-      if (mc.faces[f]) m[f].assign(static_cast<size_t>(tpr) * static_cast<size_t>(tpr), 0);
+  out.maps.assign(M, dp::TileMap(S, false));
   host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size(), samples = ms.t.size();
   std::vector<std::array<glm::dvec3, 2>> box(n);
@@ -339,20 +336,14 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
         const host::TexelRect rc = host::object_face_rect(o, box[i], ms.t[k], head, margin + moves, f, S, near_m);
         if (rc.empty()) continue;
         for (size_t m = lo; m <= hi; ++m) {
-          std::vector<uint8_t>& mask = out.present[m][static_cast<size_t>(f)];
           for (int ty = rc.y0 >> kShift; ty <= rc.y1 >> kShift; ++ty)
-            for (int tx = rc.x0 >> kShift; tx <= rc.x1 >> kShift; ++tx) mask[static_cast<size_t>(ty * tpr + tx)] = 1;
+            for (int tx = rc.x0 >> kShift; tx <= rc.x1 >> kShift; ++tx) out.maps[m].set(f, tx, ty, true);
         }
       }
     }
     for (size_t i = 0; i < n; ++i) --in_window[i * M + static_cast<size_t>(desired[at(k, W) + i])];  // leaves the window
   }
-  for (const auto& m : out.present) {
-    int64_t tiles = 0;
-    for (const auto& face : m)
-      for (const uint8_t t : face) tiles += t;
-    out.per_memory.push_back(tiles);
-  }
+  for (const auto& m : out.maps) out.per_memory.push_back(m.tiles());
   return out;
 }
 
@@ -382,6 +373,11 @@ Plan make_plan(const PlanRequest& r) {
   config::check(r.base, r.base_source);
   Plan p;
   p.config = r.base;
+  // The tiles are planned anew (a plan started from a plan's configuration), and the starting configuration's
+  // memory weighed as whole faces, as every ladder is.
+  p.config.memory.tiles.clear();
+  dp::ArpConfig base_whole = r.base;
+  base_whole.memory.tiles.clear();
   auto progress = [&](double f, const std::string& w) {
     if (r.progress) r.progress(f, w);
   };
@@ -567,7 +563,7 @@ Plan make_plan(const PlanRequest& r) {
   auto ladder_bytes = [&](const LadderLoad& L) { return ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base)); };
   // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
   // size takes more than the starting configuration, the limit is that ladder's.)
-  const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(r.base)) / 1048576.0);
+  const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(base_whole)) / 1048576.0);
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
     const auto least = *std::min_element(candidates.begin(), candidates.end(),
@@ -680,7 +676,7 @@ Plan make_plan(const PlanRequest& r) {
                                                       fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
                                                       " MiB of display memory (--memory-limit" +
                                                       (r.memory_limit_mib ? std::string(")")
-                                                       : p.memory_limit_bytes > display_memory_bytes(r.base)
+                                                       : p.memory_limit_bytes > display_memory_bytes(base_whole)
                                                            ? ": the least any ladder takes at this face size, more than " + r.base_source + "'s)"
                                                            : ": " + r.base_source + "'s)") +
                                                       (p.ladders_over_limit > 0 ? ", " + std::to_string(p.ladders_over_limit) + " more left out for their memory" : std::string())
@@ -724,23 +720,31 @@ Plan make_plan(const PlanRequest& r) {
     std::vector<int64_t> banks;  // every eye's bank of each memory: the same bound
     for (int e = 0; e < p.config.timing.eyes; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
     p.memory_bytes_tiled = display_memory_bytes_tiled(p.config, banks);
+    p.memory_bytes_whole = display_memory_bytes(p.config);
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
     std::string per;
     for (size_t m = 0; m < p.tiles.per_memory.size(); ++m) per += (m ? ", " : "") + std::to_string(p.tiles.per_memory[m]);
+    const bool sparse = r.tile_sparse && p.memory_bytes_tiled < p.memory_bytes_whole;
+    if (sparse)
+      for (const dp::TileMap& m : p.tiles.maps) p.config.memory.tiles.push_back(m.text());
+    const std::string mib_tiled = fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0),
+                      mib_whole = fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0);
     p.choices.push_back(
-        {"(tiles drawn on: not a key)", per + " of " + std::to_string(whole) + " tiles, each eye's bank of each memory",
+        {"memory.tiles",
+         (sparse ? per + " of " + std::to_string(whole) + " tiles, each eye's bank of each memory"
+                 : "none: every tile of the faces present (" + per + " of " + std::to_string(whole) + " can be drawn on)"),
          "each memory's objects' boxes (grown as for the faces above, and by how far an animated object moves in a sample "
          "step) projected on every face present at every point of the motion, an object counted in every memory it is "
          "put in within twice the slowest memory's period: a tile-sparse display memory holding only these tiles (whole "
-         "32 x 32 slots, and a tile table per bank) needs " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " MiB against " +
-             fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) +
-             " MiB for whole faces. A run of this plan, with the default distance between the eyes, object-level priority "
-             "(no --baseline, --regions) and the planned theta_t, draws within these; its report gives the tiles it drew on, "
-             "every eye's banks together (footprint.display_memory_tiles_drawn_on)"});
+         "32 x 32 slots, and a tile table per bank) needs " + mib_tiled + " MiB against " + mib_whole + " MiB for whole faces" +
+             (sparse ? std::string(", so the memories hold only these tiles. ")
+                     : !r.tile_sparse ? std::string(": --whole-faces keeps every tile. ")
+                                      : std::string(": whole faces take less, so every tile is kept. ")) +
+             "A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
+             "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
+             "footprint.texels_lost_off_tiles, and the run warns); its report gives the tiles it drew on, every eye's banks "
+             "together (footprint.display_memory_tiles_drawn_on)"});
   }
-  p.not_decided.push_back("the tiles as keys: the model allocates the tiles a run draws on, whatever the plan bounds, and a "
-                          "run's report states the tile-sparse hardware figure for what it drew (footprint.display_memory_bytes_hardware_tiled)");
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
                           " points of the motion rendered for it: each other point interpolates the two around it, so an "
@@ -772,19 +776,19 @@ Plan make_plan(const PlanRequest& r) {
                            ", measured by rendering the scene at " + std::to_string(fill.points) +
                            " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)"});
   p.memory_bytes_planned = display_memory_bytes(p.config);
-  p.memory_bytes_base = display_memory_bytes(r.base);
+  p.memory_bytes_base = display_memory_bytes(base_whole);
   config::check(p.config, "the plan");
   progress(1.0, "planned");
   return p;
 }
 
 host::RgbImage plan_tiles_image(const Plan& p) {
-  const int tpr = p.tiles.tiles_per_row, rows = static_cast<int>(p.tiles.present.size());
+  const int tpr = p.tiles.tiles_per_row, rows = static_cast<int>(p.tiles.maps.size());
   const int face_px = tpr * kTilePixels, gap = kTilePixels;
   host::RgbImage img(gap + 6 * (face_px + gap), gap + rows * (face_px + gap));
   for (int m = 0; m < rows; ++m)
     for (int f = 0; f < 6; ++f) {
-      const bool present = !p.tiles.present[static_cast<size_t>(m)][static_cast<size_t>(f)].empty();
+      const bool present = p.config.memory.faces[static_cast<size_t>(f)] != 0;
       for (int ty = 0; ty < tpr; ++ty)
         for (int tx = 0; tx < tpr; ++tx) {
           const bool in = present && p.tiles.reachable(m, f, tx, ty);
@@ -823,10 +827,13 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += "| rendering engine busy, s a second | " + fmt("%.3g", p.base_ladder.engine_busy) + " | " + fmt("%.3g", p.planned.engine_busy) + " |\n";
   s += "| object-samples updated slower than they need | " + fmt("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
        fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
-  s += "| display memory (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
-  s += "| display memory, tile-sparse (the tiles drawn on, bound over the motion, MiB) | | " +
+  s += "| display memory, whole faces (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " |\n";
+  s += "| display memory, tile-sparse (the tiles the motion can draw on, MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
+  s += "| display memory as planned (" + std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") + ", hardware, MiB) | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
   s += "\nThe tiles each memory can be drawn on are pictured in the `.tiles.png` `arpsim plan` writes beside this file: a row for each memory, "
        "fastest at the top, of its faces +X -X +Y -Y +Z -Z, " + std::to_string(kTilePixels) + " pixels a tile; light: can be "
        "drawn on, dark grey: cannot, dark red: a face left out.\n";

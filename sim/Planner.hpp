@@ -46,6 +46,9 @@ struct PlanRequest {
   // The share of composed texels (two or more memories hold a surface) the depth code may compose from the
   // wrong memory, with several memories (unset: what the starting configuration's width measures).
   std::optional<double> depth_error;
+  // false (--whole-faces): every tile of the faces present (no memory.tiles), a display memory without a
+  // tile table; true: the tiles the motion can draw on where that takes less memory than whole faces.
+  bool tile_sparse = true;
   std::function<void(double, const std::string&)> progress;
 };
 
@@ -73,13 +76,11 @@ struct LadderLoad {
 // eye within half the default distance between the eyes of the walk's point, at the motion's samples).
 struct TileBound {
   int tiles_per_row = 0;
-  // [memory][face]: row-major by tile, 1 where reachable; empty for a face the plan leaves out.
-  std::vector<std::array<std::vector<uint8_t>, 6>> present;
+  // Per memory: the tiles reachable (none on a face the plan leaves out); the plan's memory.tiles when
+  // they take less memory than whole faces.
+  std::vector<dp::TileMap> maps;
   std::vector<int64_t> per_memory;  // tiles of one eye's bank of each memory (each eye's is bounded alike)
-  bool reachable(int memory, int face, int tx, int ty) const {
-    const auto& m = present[static_cast<size_t>(memory)][static_cast<size_t>(face)];
-    return !m.empty() && m[static_cast<size_t>(ty * tiles_per_row + tx)] != 0;
-  }
+  bool reachable(int memory, int face, int tx, int ty) const { return maps[static_cast<size_t>(memory)].has(face, tx, ty); }
 };
 
 struct Plan {
@@ -106,8 +107,10 @@ struct Plan {
   // Depth code (several memories): the planned ladder's composition at every width, and the bound used
   CompositionDepth composition;
   double depth_error_bound = 0;
-  // Display memory as hardware (eyes x memories x 2 buffers x 6 faces x S^2 x texel bits)
-  int64_t memory_bytes_planned = 0, memory_bytes_base = 0;
+  // Display memory as hardware: the planned configuration's (display_memory_bytes: tile-sparse where it
+  // lists tiles), the same memories as whole faces (eyes x memories x 2 buffers x faces present x S^2 x
+  // texel bits), and the starting configuration's as whole faces
+  int64_t memory_bytes_planned = 0, memory_bytes_whole = 0, memory_bytes_base = 0;
   int64_t memory_limit_bytes = 0;         // the limit a ladder was held to (0: none)
   int ladders_over_limit = 0;             // ladders the engine could carry, left out for their memory
   // The tiles drawn on (a tile-sparse display memory's storage and tile tables, every eye)

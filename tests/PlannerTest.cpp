@@ -123,7 +123,11 @@ TEST(Planner, OneFarObjectNeedsOneMemoryAndOneFace) {
   // (one memory: the narrowest depth code, a written flag).
   EXPECT_EQ(p.config.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
   const int64_t S = p.config.memory.face_size;
-  EXPECT_EQ(p.memory_bytes_planned, 2 * 1 * 2 * 1 * S * S * 25 / 8);
+  EXPECT_EQ(p.memory_bytes_whole, 2 * 1 * 2 * 1 * S * S * 25 / 8);
+  // The ball covers a few of that face's tiles: the memory holds only those, and takes less.
+  ASSERT_EQ(p.config.memory.tiles.size(), 1u);
+  EXPECT_EQ(p.memory_bytes_planned, p.memory_bytes_tiled);
+  EXPECT_LT(p.memory_bytes_planned, p.memory_bytes_whole / 10);
 }
 
 // An object that only an eye reaches a face with: seen from the walk's line the ball's bound is 1 cm
@@ -485,10 +489,11 @@ test::CommandResult plan_ball_and_walk(TempDir& d, const std::string& extra = ""
 
 // Elaboration follows the plan: the faces it leaves out are not in the memory -- the same frames, the
 // footprint smaller by their share (checked against the closed form and the tiles allocated) -- and a
-// run that draws on them (another scene) loses those texels and says so once.
+// run that draws on them (another scene) loses those texels and says so once. (Whole faces: the tiles
+// have a test of their own.)
 TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   TempDir d;
-  const auto r = plan_ball_and_walk(d);
+  const auto r = plan_ball_and_walk(d, " --whole-faces");
   ASSERT_EQ(r.status, 0) << r.output;
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
@@ -527,6 +532,73 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   ASSERT_NE(at, std::string::npos) << other.output;
   EXPECT_EQ(other.output.find(lost, at + 1), std::string::npos) << "said more than once: " << other.output;
   EXPECT_GT(test::load_json(d.file("g.json"))["footprint"]["texels_lost_on_absent_faces"].get<int64_t>(), 0);
+}
+
+void write_near_ball(TempDir& d);  // below
+
+// Tiles held, counted from memory.tiles' text independently of dp::TileMap: "*" every tile of a T x T face,
+// "-" none, otherwise the set bits of its hex digits.
+int64_t tiles_in_text(const std::string& text, int T) {
+  int64_t n = 0;
+  size_t pos = 0;
+  for (int f = 0; f < 6; ++f) {
+    const size_t end = text.find('/', pos);
+    const std::string field = text.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    if (field == "*") n += int64_t{T} * T;
+    else if (field != "-")
+      for (const char ch : field) n += __builtin_popcount(static_cast<unsigned>(std::stoi(std::string(1, ch), nullptr, 16)));
+    pos = end + 1;
+  }
+  return n;
+}
+
+// Elaboration follows the plan's tiles (memory.tiles): a run holds only them -- the same frames as holding
+// every tile, nothing lost, the hardware figure a tile-sparse memory of those tiles (closed form) -- and a
+// run that draws outside them (another scene) loses those texels and says so once.
+TEST(PlanCli, TheTilesAPlanLeavesOutAreNotModelled) {
+  TempDir d;
+  const auto r = plan_ball_and_walk(d);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const dp::ArpConfig c = config::load_file(d.file("plan.json"));
+  ASSERT_EQ(c.memory.tiles.size(), 1u);
+  const int T = (c.memory.face_size + 31) / 32;
+  const int64_t held = tiles_in_text(c.memory.tiles[0], T);
+  EXPECT_GT(held, 0);
+  EXPECT_LT(held, T * T);  // on the one face present, part of it
+  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.tiles | " + std::to_string(held) + " of " + std::to_string(T * T) + " tiles"),
+            std::string::npos) << read_text(d.file("plan.md"));
+  const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
+  nlohmann::json rep[2];
+  for (int every = 0; every < 2; ++every) {
+    const std::string j = d.file("t" + std::to_string(every) + ".json");
+    const auto o = run_command(run + " --scene " + d.file("far.json") + (every ? " --set memory.tiles=[]" : "") + " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    EXPECT_EQ(o.output.find("were lost"), std::string::npos) << o.output;
+    rep[every] = test::load_json(j);
+  }
+  EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
+  const nlohmann::json& fp = rep[0]["footprint"];
+  EXPECT_EQ(fp["texels_lost_off_tiles"], 0);
+  EXPECT_EQ(fp["texels_written"], rep[1]["footprint"]["texels_written"]);
+  // Two eyes' banks, each both buffers of its tiles' 32 x 32 slots and a tile table of an entry per tile of
+  // the face present, wide enough to number them and "absent".
+  const int64_t bits = 2 * (2 * held * 1024 * (24 + c.memory.depth_bits) +
+                            int64_t{T} * T * static_cast<int64_t>(std::floor(std::log2(static_cast<double>(held))) + 1));
+  EXPECT_EQ(fp["display_memory_bytes_hardware"], (bits + 7) / 8);
+  const int64_t S = c.memory.face_size;
+  EXPECT_EQ(rep[1]["footprint"]["display_memory_bytes_hardware"], 2 * 2 * S * S * (24 + c.memory.depth_bits) / 8);
+  write_near_ball(d);
+  const auto other = run_command(run + " --scene " + d.file("near.json") + " --report " + d.file("n.json"));
+  ASSERT_EQ(other.status, 0) << other.output;
+  const std::string lost = "fell on tiles memory.tiles leaves out";
+  const size_t at = other.output.find(lost);
+  ASSERT_NE(at, std::string::npos) << other.output;
+  EXPECT_EQ(other.output.find(lost, at + 1), std::string::npos) << "said more than once: " << other.output;
+  EXPECT_GT(test::load_json(d.file("n.json"))["footprint"]["texels_lost_off_tiles"].get<int64_t>(), 0);
+  // A hand edit that no longer fits the face size is refused naming the key.
+  const auto bad = run_command(run + " --scene " + d.file("far.json") + " --set memory.face_size=512");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("memory.tiles"), std::string::npos) << bad.output;
 }
 
 // The plan records the theta_t its memories were sized for (memory.threshold_deg): a run with the plan
@@ -640,7 +712,7 @@ TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
 // display memory of (24 + 1) / (24 + 16) the size (eyes x 2 buffers x faces x S^2 x texel bits).
 TEST(PlanCli, OneMemoryKeepsTheNarrowestDepthCodeAndShowsTheSameFrames) {
   TempDir d;
-  const auto r = plan_ball_and_walk(d);
+  const auto r = plan_ball_and_walk(d, " --whole-faces");
   ASSERT_EQ(r.status, 0) << r.output;
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.count, 1);
@@ -797,7 +869,11 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
   EXPECT_GT(drawn, 0);
   EXPECT_LT(bound, p.config.memory.count * p.config.memory.faces_present() * tpr * tpr / 4);
   EXPECT_LE(bound * mem.eyes(), 4 * drawn);  // and not loose: within 4x what the run drew on
-  EXPECT_LT(p.memory_bytes_tiled, p.memory_bytes_planned / 2);
+  EXPECT_LT(p.memory_bytes_tiled, p.memory_bytes_whole / 2);
+  // The run held only the plan's tiles (memory.tiles) and lost no texel for it.
+  ASSERT_EQ(p.config.memory.tiles.size(), static_cast<size_t>(p.config.memory.count));
+  EXPECT_EQ(mem.writes_lost_off_tiles(), 0);
+  EXPECT_EQ(p.memory_bytes_planned, p.memory_bytes_tiled);
   // The plan's tile-sparse figure in closed form: for each eye's bank of each memory, both buffers of its
   // tiles' 32 x 32 slots and a table of an entry per tile of each face present, wide enough for 0 .. tiles.
   int64_t bits = 0;
