@@ -2,7 +2,8 @@
 # A planned configuration against the hand default, side by side: `arpsim plan`
 # for a scene and its walk, then the same walk run with each (functional level,
 # the host simulated by priority, the error against the truth measured), and one
-# markdown row each: display memory (the hardware the configuration describes,
+# markdown row each: display memory (the hardware the configuration describes -- tile-sparse when the plan
+# lists memory.tiles --,
 # what a tile-sparse memory holding only the tiles the run drew on needs, and what the model allocated), the pipeline's simulated speed, the host's
 # rendering load, the image error against one truth for both (--truth-face-size TRUTH: the plan's face
 # and the default's differ, and each against a truth of its own size would not compare). Runs alternate (default, plan, ...) and the
@@ -46,13 +47,13 @@ still() {  # name, config args... -> $tmp/still-NAME.json
 }
 still default
 still plan --config "$tmp/plan.json"
-echo "| configuration | memories | face | display memory, hardware MiB | tile-sparse MiB (the tiles this run drew on) | modelled peak MiB | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| configuration | memories | face | display memory, hardware MiB | tile-sparse MiB (the tiles this run drew on) | modelled peak MiB | texels lost (absent faces, tiles) | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for name in default plan; do
   jq -r --arg n "$name" --slurpfile still "$tmp/still-$name.json" '(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000 - .host.error.wall_seconds) as $pipe |
     "| \($n) | \(.config.memory.count) every \(.config.memory.update_frames) x \(.config.memory.update_ratio)^m | \(.config.memory.face_size) | " +
     "\(.footprint.display_memory_bytes_hardware / 1048576 * 10 | round / 10) | \(.footprint.display_memory_bytes_hardware_tiled / 1048576 * 10 | round / 10) | " +
-    "\(.footprint.display_memory_bytes_peak / 1048576 * 10 | round / 10) | " +
+    "\(.footprint.display_memory_bytes_peak / 1048576 * 10 | round / 10) | \(.footprint.texels_lost_on_absent_faces + $still[0].footprint.texels_lost_on_absent_faces), \(.footprint.texels_lost_off_tiles + $still[0].footprint.texels_lost_off_tiles) | " +
     "\(.host.host_wall_ms_per_frame * 10 | round / 10) | \(.simulation.pixel_clocks / $pipe / 1e4 | round / 100) | \(.host.triangles_per_s | round) | " +
     "\(.host.error.mean_psnr_db * 100 | round / 100) | \(.host.error.worst_share_showing_another_object * 10000 | round / 10000) | " +
     "\($still[0].host.error.mean_psnr_db * 100 | round / 100) |"' "$tmp/run-$name.json"

@@ -228,46 +228,54 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
                        " this machine has available: a smaller face size or fewer memories");
 }
 
-std::vector<int64_t> tiles_held(const dp::ArpConfig& c) {
-  std::vector<int64_t> per_memory;
-  bool sparse = false;
-  for (size_t k = 0; k < c.memory.tiles.size(); ++k) {
-    dp::TileMap map;
-    std::string why;
-    if (!dp::TileMap::parse(c.memory.tiles[k], c.memory.face_size, map, why))
-      throw std::invalid_argument("memory.tiles, memory " + std::to_string(k) + ": " + why);
-    int64_t n = 0;
-    for (int f = 0; f < 6; ++f) {
-      if (!c.memory.faces[static_cast<size_t>(f)]) continue;
-      n += map.tiles(f);
-      sparse |= !map.every_tile(f);
-    }
-    per_memory.push_back(n);
-  }
-  if (!sparse) return {};
-  std::vector<int64_t> banks;
-  for (int e = 0; e < c.timing.eyes; ++e) banks.insert(banks.end(), per_memory.begin(), per_memory.end());
-  return banks;
-}
+namespace {
 
-int64_t display_memory_bytes(const dp::ArpConfig& c) {
-  if (const std::vector<int64_t> held = tiles_held(c); !held.empty()) return display_memory_bytes_tiled(c, held);
-  const int64_t S = c.memory.face_size;
-  const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
-  return int64_t{c.timing.eyes} * c.memory.count * 2 * c.memory.faces_present() * S * S * bits / 8;
-}
-
-int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles) {
+// One bank holding n tiles: both buffers of n whole 32 x 32 slots, and a tile table for both buffers -- an entry
+// per tile of each face present, wide enough to number tiles 1 .. n and 0 for "absent". Bits.
+int64_t tiled_bank_bits(const dp::ArpConfig& c, int64_t n) {
   constexpr int64_t kTile = dp::DisplayMemoryBank::kTile;
   const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
   const int64_t tpr = dp::DisplayMemoryBank::tiles_per_row_of(c.memory.face_size);
-  int64_t total_bits = 0;
-  for (const int64_t n : tiles) {
-    total_bits += 2 * n * kTile * kTile * bits;
-    int entry = 0;  // bits numbering tiles 1 .. n and 0 for "absent"
-    while ((int64_t{1} << entry) <= n) ++entry;
-    total_bits += int64_t{c.memory.faces_present()} * tpr * tpr * entry;
+  int entry = 0;
+  while ((int64_t{1} << entry) <= n) ++entry;
+  return 2 * n * kTile * kTile * bits + int64_t{c.memory.faces_present()} * tpr * tpr * entry;
+}
+
+}  // namespace
+
+int64_t tiles_held(const dp::ArpConfig& c, int memory) {
+  if (c.memory.tiles.empty()) return -1;
+  dp::TileMap map;
+  std::string why;
+  if (!dp::TileMap::parse(c.memory.tiles.at(static_cast<size_t>(memory)), c.memory.face_size, map, why))
+    throw std::invalid_argument("memory.tiles, memory " + std::to_string(memory) + ": " + why);
+  int64_t n = 0;
+  bool every = true;
+  for (int f = 0; f < 6; ++f) {
+    if (!c.memory.faces[static_cast<size_t>(f)]) continue;
+    n += map.tiles(f);
+    every = every && map.every_tile(f);
   }
+  return every ? -1 : n;
+}
+
+int64_t display_memory_bytes(const dp::ArpConfig& c) {
+  const int64_t S = c.memory.face_size;
+  const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
+  const int64_t whole_memory_bits = int64_t{c.timing.eyes} * 2 * c.memory.faces_present() * S * S * bits;
+  int64_t total_bits = 0;
+  bool sparse = false;
+  for (int k = 0; k < c.memory.count; ++k) {
+    const int64_t held = tiles_held(c, k);
+    sparse |= held >= 0;
+    total_bits += held < 0 ? whole_memory_bits : c.timing.eyes * tiled_bank_bits(c, held);
+  }
+  return sparse ? (total_bits + 7) / 8 : total_bits / 8;
+}
+
+int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles) {
+  int64_t total_bits = 0;
+  for (const int64_t n : tiles) total_bits += tiled_bank_bits(c, n);
   return (total_bits + 7) / 8;
 }
 

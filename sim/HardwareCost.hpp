@@ -44,13 +44,13 @@ HardwareCost hardware_cost(const dp::ArpConfig& c);
 std::string hardware_cost_source();
 
 // The hardware's display memory in bytes for a configuration: eyes x memories x two buffers (front
-// and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits; or, when memory.tiles
-// leaves out a tile of a face present in some memory, the tile-sparse memory holding the tiles it lists
-// (display_memory_bytes_tiled).
+// and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits -- where memory.tiles
+// leaves out a tile of a face present in a memory, that memory as a tile-sparse one holding the tiles it
+// lists (as display_memory_bytes_tiled; the total then rounded up to whole bytes).
 int64_t display_memory_bytes(const dp::ArpConfig& c);
-// Tiles each bank holds (eye by eye, memory by memory) under memory.tiles, on the faces present; empty
-// when no tile of a face present is left out (whole faces). The configuration must be valid.
-std::vector<int64_t> tiles_held(const dp::ArpConfig& c);
+// The tiles one memory's bank holds under memory.tiles on the faces present, or -1 when it holds every tile of
+// them (whole faces, no tile table). The configuration must be valid.
+int64_t tiles_held(const dp::ArpConfig& c, int memory);
 // The same display memories holding only some 32 x 32 tiles (`tiles`: how many, bank by bank): both buffers
 // of those tiles, every one a whole tile slot (a face's last row and column of tiles are partial when S is
 // not a multiple of 32, but a tile table addresses equal slots), and per bank one tile table for both

@@ -251,10 +251,11 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
-// A ladder's hardware display memory: the configuration `c` (face size, faces) with its memories and a
-// depth code of `depth_bits`.
+// A ladder's hardware display memory, as whole faces: the configuration `c` (face size, faces) with its
+// memories and a depth code of `depth_bits`.
 int64_t ladder_memory_bytes(dp::ArpConfig c, const LadderLoad& L, int depth_bits) {
   c.memory.count = L.count;
+  c.memory.tiles.clear();
   c.memory.depth_bits = depth_bits;
   return display_memory_bytes(c);
 }
@@ -721,25 +722,41 @@ Plan make_plan(const PlanRequest& r) {
     for (int e = 0; e < p.config.timing.eyes; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
     p.memory_bytes_tiled = display_memory_bytes_tiled(p.config, banks);
     p.memory_bytes_whole = display_memory_bytes(p.config);
+    // Memory by memory: only the tiles where that takes less than whole faces (a memory that can be drawn on
+    // nearly everywhere pays for whole 32 x 32 slots and a tile table for little), every tile otherwise.
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
-    std::string per;
-    for (size_t m = 0; m < p.tiles.per_memory.size(); ++m) per += (m ? ", " : "") + std::to_string(p.tiles.per_memory[m]);
-    const bool sparse = r.tile_sparse && p.memory_bytes_tiled < p.memory_bytes_whole;
-    if (sparse)
-      for (const dp::TileMap& m : p.tiles.maps) p.config.memory.tiles.push_back(m.text());
-    const std::string mib_tiled = fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0),
-                      mib_whole = fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0);
+    dp::ArpConfig one = p.config;
+    one.memory.count = 1;
+    const int64_t whole_one = display_memory_bytes(one) / p.config.timing.eyes;  // one eye's bank, whole faces
+    std::vector<std::string> texts;
+    std::string value;
+    bool any = false;
+    for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
+      const int64_t reach = p.tiles.per_memory[m], tiled_one = display_memory_bytes_tiled(p.config, {reach});
+      const bool sparse = r.tile_sparse && tiled_one < whole_one;
+      any |= sparse;
+      dp::TileMap held = p.tiles.maps[m];
+      if (!sparse)
+        for (int f = 0; f < 6; ++f)
+          for (int ty = 0; ty < p.tiles.tiles_per_row; ++ty)
+            for (int tx = 0; tx < p.tiles.tiles_per_row; ++tx) held.set(f, tx, ty, p.config.memory.faces[static_cast<size_t>(f)] != 0);
+      texts.push_back(held.text());
+      value += (m ? "; memory " : "memory ") + std::to_string(m) + ": " +
+               (sparse ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
+                       : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
+               " (" + fmt("%.1f", static_cast<double>(tiled_one) / 1048576.0) + " MiB an eye tile-sparse, " +
+               fmt("%.1f", static_cast<double>(whole_one) / 1048576.0) + " whole)";
+    }
+    if (any) p.config.memory.tiles = texts;
     p.choices.push_back(
-        {"memory.tiles",
-         (sparse ? per + " of " + std::to_string(whole) + " tiles, each eye's bank of each memory"
-                 : "none: every tile of the faces present (" + per + " of " + std::to_string(whole) + " can be drawn on)"),
+        {"memory.tiles", value,
          "each memory's objects' boxes (grown as for the faces above, and by how far an animated object moves in a sample "
          "step) projected on every face present at every point of the motion, an object counted in every memory it is "
-         "put in within twice the slowest memory's period: a tile-sparse display memory holding only these tiles (whole "
-         "32 x 32 slots, and a tile table per bank) needs " + mib_tiled + " MiB against " + mib_whole + " MiB for whole faces" +
-             (sparse ? std::string(", so the memories hold only these tiles. ")
-                     : !r.tile_sparse ? std::string(": --whole-faces keeps every tile. ")
-                                      : std::string(": whole faces take less, so every tile is kept. ")) +
+         "put in within twice the slowest memory's period: a memory holds only those tiles (whole 32 x 32 slots, and a "
+         "tile table for its bank) where that takes less than whole faces" +
+             (!r.tile_sparse ? std::string(" (--whole-faces: every tile everywhere)") : std::string()) + "; all memories " +
+             fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) + " MiB against " +
+             fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces. "
              "A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
              "footprint.texels_lost_off_tiles, and the run warns); its report gives the tiles it drew on, every eye's banks "

@@ -565,7 +565,7 @@ TEST(PlanCli, TheTilesAPlanLeavesOutAreNotModelled) {
   const int64_t held = tiles_in_text(c.memory.tiles[0], T);
   EXPECT_GT(held, 0);
   EXPECT_LT(held, T * T);  // on the one face present, part of it
-  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.tiles | " + std::to_string(held) + " of " + std::to_string(T * T) + " tiles"),
+  EXPECT_NE(read_text(d.file("plan.md")).find("| memory.tiles | memory 0: " + std::to_string(held) + " of " + std::to_string(T * T) + " tiles"),
             std::string::npos) << read_text(d.file("plan.md"));
   const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
   nlohmann::json rep[2];
