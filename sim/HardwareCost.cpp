@@ -279,6 +279,12 @@ int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int
   return (total_bits + 7) / 8;
 }
 
+bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles) {
+  const int64_t S = c.memory.face_size;
+  const int64_t whole_bits = 2 * int64_t{c.memory.faces_present()} * S * S * (int64_t{c.memory.color_bits()} + c.memory.depth_bits);
+  return tiled_bank_bits(c, tiles) < whole_bits;
+}
+
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
   std::vector<int64_t> tiles;
   for (int e = 0; e < m.eyes(); ++e)

@@ -727,13 +727,13 @@ Plan make_plan(const PlanRequest& r) {
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
     dp::ArpConfig one = p.config;
     one.memory.count = 1;
-    const int64_t whole_one = display_memory_bytes(one) / p.config.timing.eyes;  // one eye's bank, whole faces
+    const int64_t whole_one = display_memory_bytes(one) / p.config.timing.eyes;  // one eye's bank, whole faces (MiB shown)
     std::vector<std::string> texts;
     std::string value;
     bool any = false;
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
       const int64_t reach = p.tiles.per_memory[m], tiled_one = display_memory_bytes_tiled(p.config, {reach});
-      const bool sparse = r.tile_sparse && tiled_one < whole_one;
+      const bool sparse = r.tile_sparse && tiles_take_less(p.config, reach);
       any |= sparse;
       dp::TileMap held = p.tiles.maps[m];
       if (!sparse)

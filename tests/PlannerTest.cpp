@@ -167,6 +167,48 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
     }
 }
 
+int64_t tiles_in_text(const std::string& text, int T);  // below
+
+// Memory by memory: the row of balls, planned into several memories, inside a sphere of 20 m around the walk
+// that every face sees whole. The memory holding the sphere can be drawn on everywhere and keeps whole faces
+// (every tile, no table); a memory holding only balls holds their tiles. The plan's hardware figure is the
+// two kinds summed (closed form: whole faces, and both buffers of whole slots and a table for the others).
+TEST(Planner, AMemoryDrawnOnEverywhereKeepsWholeFaces) {
+  TempDir d;
+  PlanRequest r = ball_row(d, 6, [](int i) { return -std::pow(3.0, i + 1); }, 2, 1);
+  std::string row = read_text(d.file("row.json"));
+  row.insert(row.find('[') + 1, R"({"name": "dome", "sphere": 20, "position": [0, 1.6, -1]}, )");
+  write(d.file("row.json"), row);
+  r.memory_limit_mib = 0;
+  const Plan p = make_plan(r);
+  const int M = p.config.memory.count;
+  ASSERT_GT(M, 1);
+  ASSERT_EQ(p.config.memory.tiles.size(), static_cast<size_t>(M));
+  const int64_t S = p.config.memory.face_size, T = (S + 31) / 32, bits = 24 + p.config.memory.depth_bits;
+  int whole = 0, sparse = 0;
+  int64_t total = 0;
+  for (int m = 0; m < M; ++m) {
+    const std::string& t = p.config.memory.tiles[static_cast<size_t>(m)];
+    const int64_t n = tiles_in_text(t, static_cast<int>(T));
+    if (t == "*/*/*/*/*/*") {
+      ++whole;
+      EXPECT_EQ(p.tiles.per_memory[static_cast<size_t>(m)], 6 * T * T) << m;
+      total += 2 * 2 * 6 * S * S * bits;
+    } else {
+      ++sparse;
+      EXPECT_LT(n, 6 * T * T / 2) << m;
+      total += 2 * (2 * n * 1024 * bits + 6 * T * T * static_cast<int64_t>(std::floor(std::log2(static_cast<double>(n))) + 1));
+    }
+  }
+  EXPECT_EQ(whole, 1);
+  EXPECT_GE(sparse, 1);
+  EXPECT_EQ(p.memory_bytes_planned, (total + 7) / 8);
+  EXPECT_LT(p.memory_bytes_planned, p.memory_bytes_whole);
+  EXPECT_LT(p.memory_bytes_planned, p.memory_bytes_tiled);  // less than every memory tile-sparse
+  r.tile_sparse = false;  // --whole-faces
+  EXPECT_TRUE(make_plan(r).config.memory.tiles.empty());
+}
+
 // The ladders are held to the display-memory limit (by default the starting configuration's): the row of
 // balls, planned into several memories, gets one when the limit is one memory's hardware (2 eyes x 2
 // buffers x the faces present x S^2 x (24 + 1) bits), and is refused, naming the least, below it.
@@ -916,6 +958,7 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
 // 3 slots of 32 x 32 texels twice (both buffers) and one table of 6 faces x 16 x 16 entries of 2 bits
 // (numbers 1 .. 3, and 0 for absent); a bank with none holds nothing; 4 tiles need 3-bit entries. At a face
 // size that is no multiple of 32 (100: 4 x 4 tiles, the last 4 texels wide) a tile is still a whole slot.
+// Where tiles take less than whole faces, and a configuration's memories held one way and the other.
 TEST(Planner, ATileSparseMemorysBytesAreItsTilesTwiceAndOneTable) {
   dp::ArpConfig c;
   ASSERT_EQ(c.memory.face_size, 512);
@@ -923,6 +966,27 @@ TEST(Planner, ATileSparseMemorysBytesAreItsTilesTwiceAndOneTable) {
   EXPECT_EQ(display_memory_bytes_tiled(c, {4}), (2 * 4 * 1024 * 40 + 6 * 16 * 16 * 3 + 7) / 8);
   c.memory.face_size = 100;
   EXPECT_EQ(display_memory_bytes_tiled(c, {16}), (2 * 16 * 1024 * 40 + 6 * 4 * 4 * 5 + 7) / 8);
+  // Tiles take less than whole faces up to a count in closed form: at 641 texels (21 x 21 tiles a face) and
+  // 40-bit texels, a bank of n tiles takes 2 n 1024 x 40 + 6 x 441 x ceil(log2(n + 1)) bits against
+  // 2 x 6 x 641^2 x 40: n = 2407 (entries of 12 bits) is the most that takes less.
+  c.memory.face_size = 641;
+  const int64_t whole_bits = 2 * 6 * int64_t{641} * 641 * 40;
+  EXPECT_LT(2 * 2407 * 1024 * 40 + 6 * 441 * 12, whole_bits);
+  EXPECT_GT(2 * 2408 * 1024 * 40 + 6 * 441 * 12, whole_bits);
+  EXPECT_TRUE(tiles_take_less(c, 2407));
+  EXPECT_FALSE(tiles_take_less(c, 2408));
+  EXPECT_FALSE(tiles_take_less(c, 6 * 441));
+  // A configuration's memories, each as it is held (memory.tiles): two eyes; memory 0 every tile of six faces
+  // of 64 texels (whole faces, no table), memory 1 one tile (both buffers of one slot and 6 x 2 x 2 one-bit entries).
+  c.memory.face_size = 64;
+  c.memory.count = 2;
+  c.memory.tiles = {"*/*/*/*/*/*", "1/-/-/-/-/-"};
+  ASSERT_TRUE(dp::validate(c).empty());
+  EXPECT_EQ(display_memory_bytes(c), (2 * 2 * 6 * 64 * 64 * 40 + 2 * (2 * 1 * 1024 * 40 + 6 * 2 * 2 * 1) + 7) / 8);
+  EXPECT_EQ(tiles_held(c, 0), -1);
+  EXPECT_EQ(tiles_held(c, 1), 1);
+  c.memory.tiles = {"*/*/*/*/*/*", "*/*/*/*/*/*"};  // every tile: whole faces, as with no list
+  EXPECT_EQ(display_memory_bytes(c), 2 * 2 * 2 * 6 * 64 * 64 * 40 / 8);
 }
 
 }  // namespace
