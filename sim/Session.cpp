@@ -287,15 +287,17 @@ void Session::warn_if_planned_for_another_motion() const {
   const std::string& cfg = spec_.config_source;
   if (!walk_) {
     std::fprintf(stderr, "arpsim: warning: %s was planned for a walk (plan.motion_hash %lld); this run's head stays in one "
-                         "place (no --walk): its memories were sized for the walk's motion (`arpsim plan --speed 0` "
+                         "place (no --walk): its memories were sized for the walk's motion%s (`arpsim plan --speed 0` "
                          "plans for standing at the walk's first point)\n",
-                 cfg.c_str(), static_cast<long long>(planned));
+                 cfg.c_str(), static_cast<long long>(planned), spec_.config.memory.tiles.empty() ? "" : ", and its tiles for where the walk draws");
     return;
   }
+  // A plan's tiles are bounded for its walk: another motion (a slower one puts objects in slower memories) draws outside them.
+  const char* tiles = spec_.config.memory.tiles.empty() ? "" : " (its memory.tiles hold only the tiles that walk draws on: texels drawn outside them are lost)";
   if (const int64_t h = host::walk_hash(*walk_); h != planned)
-    std::fprintf(stderr, "arpsim: warning: %s was planned for another walk (plan.motion_hash %lld); walk %s at %g m/s "
+    std::fprintf(stderr, "arpsim: warning: %s was planned for another walk (plan.motion_hash %lld)%s; walk %s at %g m/s "
                          "hashes to %lld: run `arpsim plan` for it\n",
-                 cfg.c_str(), static_cast<long long>(planned), spec_.host.walk.c_str(), walk_->speed(), static_cast<long long>(h));
+                 cfg.c_str(), static_cast<long long>(planned), tiles, spec_.host.walk.c_str(), walk_->speed(), static_cast<long long>(h));
 }
 
 double HostSpec::threshold_rad(double deg) {
