@@ -228,11 +228,9 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
                        " this machine has available: a smaller face size or fewer memories");
 }
 
-namespace {
-
-// One bank holding n tiles: both buffers of n whole 32 x 32 slots, and a tile table for both buffers -- an entry
-// per tile of each face present, wide enough to number tiles 1 .. n and 0 for "absent". Bits.
-int64_t tiled_bank_bits(const dp::ArpConfig& c, int64_t n) {
+// Both buffers of n whole 32 x 32 slots, and a tile table for both buffers -- an entry per tile of each face
+// present, wide enough to number tiles 1 .. n and 0 for "absent".
+int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t n) {
   constexpr int64_t kTile = dp::DisplayMemoryBank::kTile;
   const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
   const int64_t tpr = dp::DisplayMemoryBank::tiles_per_row_of(c.memory.face_size);
@@ -241,49 +239,42 @@ int64_t tiled_bank_bits(const dp::ArpConfig& c, int64_t n) {
   return 2 * n * kTile * kTile * bits + int64_t{c.memory.faces_present()} * tpr * tpr * entry;
 }
 
-}  // namespace
-
 int64_t tiles_held(const dp::ArpConfig& c, int memory) {
-  if (c.memory.tiles.empty()) return -1;
-  dp::TileMap map;
-  std::string why;
-  if (!dp::TileMap::parse(c.memory.tiles.at(static_cast<size_t>(memory)), c.memory.face_size, map, why))
-    throw std::invalid_argument("memory.tiles, memory " + std::to_string(memory) + ": " + why);
+  std::vector<dp::TileMap> maps;
+  if (std::string why; !dp::tile_maps(c.memory, maps, why)) throw std::invalid_argument("memory.tiles " + why);
+  const dp::TileMap& map = maps.at(static_cast<size_t>(memory));
+  const dp::MemoryFormat fmt(c.memory);
+  if (map.every_tile(fmt.present)) return -1;
   int64_t n = 0;
-  bool every = true;
-  for (int f = 0; f < 6; ++f) {
-    if (!c.memory.faces[static_cast<size_t>(f)]) continue;
-    n += map.tiles(f);
-    every = every && map.every_tile(f);
-  }
-  return every ? -1 : n;
+  for (int f = 0; f < 6; ++f)
+    if (fmt.present[static_cast<size_t>(f)]) n += map.tiles(f);
+  return n;
+}
+
+int64_t bank_bits_whole(const dp::ArpConfig& c) {
+  const int64_t S = c.memory.face_size;
+  return 2 * int64_t{c.memory.faces_present()} * S * S * (int64_t{c.memory.color_bits()} + c.memory.depth_bits);
 }
 
 int64_t display_memory_bytes(const dp::ArpConfig& c) {
-  const int64_t S = c.memory.face_size;
-  const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
-  const int64_t whole_memory_bits = int64_t{c.timing.eyes} * 2 * c.memory.faces_present() * S * S * bits;
+  const int64_t whole_memory_bits = int64_t{c.timing.eyes} * bank_bits_whole(c);
   int64_t total_bits = 0;
   bool sparse = false;
   for (int k = 0; k < c.memory.count; ++k) {
     const int64_t held = tiles_held(c, k);
     sparse |= held >= 0;
-    total_bits += held < 0 ? whole_memory_bits : c.timing.eyes * tiled_bank_bits(c, held);
+    total_bits += held < 0 ? whole_memory_bits : c.timing.eyes * bank_bits_tiled(c, held);
   }
   return sparse ? (total_bits + 7) / 8 : total_bits / 8;
 }
 
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles) {
   int64_t total_bits = 0;
-  for (const int64_t n : tiles) total_bits += tiled_bank_bits(c, n);
+  for (const int64_t n : tiles) total_bits += bank_bits_tiled(c, n);
   return (total_bits + 7) / 8;
 }
 
-bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles) {
-  const int64_t S = c.memory.face_size;
-  const int64_t whole_bits = 2 * int64_t{c.memory.faces_present()} * S * S * (int64_t{c.memory.color_bits()} + c.memory.depth_bits);
-  return tiled_bank_bits(c, tiles) < whole_bits;
-}
+bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles) { return bank_bits_tiled(c, tiles) < bank_bits_whole(c); }
 
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
   std::vector<int64_t> tiles;

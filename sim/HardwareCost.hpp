@@ -57,9 +57,13 @@ int64_t tiles_held(const dp::ArpConfig& c, int memory);
 // buffers (an entry per tile of each face present, wide enough to number the bank's tiles and "absent") --
 // what a tile-sparse memory holding them needs. Bytes, rounded up.
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int64_t>& tiles);
+// The tiles it drew on (tiles_ever_written).
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m);
-// Whether one bank holding `tiles` tiles (display_memory_bytes_tiled) takes less than the whole faces present.
-bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles);  // the tiles it drew on (tiles_ever_written)
+// One bank (an eye's, of one memory), bits: whole faces (both buffers of the faces present), or holding `tiles`
+// tiles (as display_memory_bytes_tiled); and whether the tiles take less.
+int64_t bank_bits_whole(const dp::ArpConfig& c);
+int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t tiles);
+bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles);
 
 // The most memory the model can take for a configuration: every display memory's tiles written (eyes x
 // memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces

@@ -299,7 +299,6 @@ CompositionDepth measure_composition(const host::Scene& scene, const host::WalkP
 // the object grown by as far as its own animation moves it in a sample step (a render falls between samples).
 TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
                       double threshold_rad, const LadderLoad& L, const dp::MemoryConfig& mc, double margin, double near_m) {
-  constexpr int kShift = dp::DisplayMemoryBank::kTileShift;
   const int S = mc.face_size, tpr = dp::DisplayMemoryBank::tiles_per_row_of(S);
   const size_t M = static_cast<size_t>(L.count);
   TileBound out;
@@ -337,8 +336,10 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
         const host::TexelRect rc = host::object_face_rect(o, box[i], ms.t[k], head, margin + moves, f, S, near_m);
         if (rc.empty()) continue;
         for (size_t m = lo; m <= hi; ++m) {
-          for (int ty = rc.y0 >> kShift; ty <= rc.y1 >> kShift; ++ty)
-            for (int tx = rc.x0 >> kShift; tx <= rc.x1 >> kShift; ++tx) out.maps[m].set(f, tx, ty, true);
+          host::each_tile(rc, [&](int tx, int ty) {
+            out.maps[m].set(f, tx, ty, true);
+            return true;
+          });
         }
       }
     }
@@ -725,15 +726,15 @@ Plan make_plan(const PlanRequest& r) {
     // Memory by memory: only the tiles where that takes less than whole faces (a memory that can be drawn on
     // nearly everywhere pays for whole 32 x 32 slots and a tile table for little), every tile otherwise.
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
-    dp::ArpConfig one = p.config;
-    one.memory.count = 1;
-    const int64_t whole_one = display_memory_bytes(one) / p.config.timing.eyes;  // one eye's bank, whole faces (MiB shown)
+    const double whole_one = static_cast<double>(bank_bits_whole(p.config)) / 8;  // one eye's bank, whole faces
     std::vector<std::string> texts;
     std::string value;
     bool any = false;
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
-      const int64_t reach = p.tiles.per_memory[m], tiled_one = display_memory_bytes_tiled(p.config, {reach});
-      const bool sparse = r.tile_sparse && tiles_take_less(p.config, reach);
+      const int64_t reach = p.tiles.per_memory[m];
+      const double tiled_one = static_cast<double>(bank_bits_tiled(p.config, reach)) / 8;
+      // A memory no object reaches keeps its faces, as an empty scene keeps the whole cube (its background).
+      const bool sparse = r.tile_sparse && reach > 0 && tiles_take_less(p.config, reach);
       any |= sparse;
       dp::TileMap held = p.tiles.maps[m];
       if (!sparse)
@@ -744,8 +745,7 @@ Plan make_plan(const PlanRequest& r) {
       value += (m ? "; memory " : "memory ") + std::to_string(m) + ": " +
                (sparse ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
                        : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
-               " (" + fmt("%.1f", static_cast<double>(tiled_one) / 1048576.0) + " MiB an eye tile-sparse, " +
-               fmt("%.1f", static_cast<double>(whole_one) / 1048576.0) + " whole)";
+               " (" + fmt("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + fmt("%.1f", whole_one / 1048576.0) + " whole)";
     }
     if (any) p.config.memory.tiles = texts;
     p.choices.push_back(

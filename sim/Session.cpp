@@ -807,10 +807,11 @@ RunSummary Session::run() {
     s.notes.push_back(b);
   }
   if (const int64_t lost = memories_.writes_lost_off_tiles(); lost > 0) {
-    char b[400];
+    char b[500];
     std::snprintf(b, sizeof b,
                   "  warning: %" PRId64 " texels the host drew fell on tiles memory.tiles leaves out and were lost: the "
-                  "configuration was planned for another scene or motion (arpsim plan; footprint.texels_lost_off_tiles)",
+                  "tiles were listed for another scene or motion, or a run with wider eyes, --baseline, --regions or another "
+                  "theta_t than the plan's (arpsim plan; footprint.texels_lost_off_tiles)",
                   lost);
     s.notes.push_back(b);
   }

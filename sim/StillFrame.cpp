@@ -30,6 +30,8 @@ StillFrame render_still(const StillSpec& spec) {
   s.first_photon_ps = *pmin;
   s.last_photon_ps = *pmax;
   s.memory_bytes = mem.bytes_allocated();
+  s.lost_on_absent_faces = mem.writes_lost();
+  s.lost_off_tiles = mem.writes_lost_off_tiles();
   s.refresh_hz = model.timing().refresh_hz();
   return s;
 }
@@ -44,6 +46,8 @@ nlohmann::json still_report(const StillSpec& spec, const StillFrame& f, const st
           {"first_photon_ps", f.first_photon_ps},
           {"last_photon_ps", f.last_photon_ps},
           {"display_memory_bytes", f.memory_bytes},
+          {"texels_lost_on_absent_faces", f.lost_on_absent_faces},
+          {"texels_lost_off_tiles", f.lost_off_tiles},
           {"config", config::to_json(spec.config)}};
 }
 

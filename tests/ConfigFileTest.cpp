@@ -157,6 +157,24 @@ TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
   EXPECT_NE(e.reason().find("bilinear"), std::string::npos);
   e = error_of([] { parse(R"([1, 2])"); });
   EXPECT_NE(e.reason().find("object"), std::string::npos);
+  // A list of strings (memory.tiles): an array, of strings, of the stated characters, at most 16 of them.
+  e = error_of([] { parse(R"({"memory": {"tiles": "512:*/*/*/*/*/*"}})"); });
+  EXPECT_EQ(e.place(), "memory.tiles");
+  EXPECT_NE(e.reason().find("must be an array of strings"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tiles": ["512:*/*/*/*/*/*", 7]}})"); });
+  EXPECT_NE(e.reason().find("element 1 must be a string"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"tiles": ["512:*/*/*/*/*/x"]}})"); });
+  EXPECT_NE(e.reason().find("string 0 has \"x\" at character 14"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"tiles": ["", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", ""]}})"); });
+  EXPECT_NE(e.reason().find("has 17 strings, at most 16 allowed"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tiles": ["512:*/*/*/*/*/*"]}})"); });
+  EXPECT_EQ(e.place(), "memory.tiles");
+  EXPECT_NE(e.reason().find("has 1 strings and memory.count is 2"), std::string::npos) << e.reason();
+  // Read back as written.
+  const dp::ArpConfig c = parse(R"({"memory": {"count": 2, "tiles": ["512:*/*/*/*/*/*", "512:-/-/-/-/-/-"]}})");
+  EXPECT_EQ(c.memory.tiles, (std::vector<std::string>{"512:*/*/*/*/*/*", "512:-/-/-/-/-/-"}));
+  EXPECT_EQ(dp::arp_parameters().find("memory.tiles")->format(dp::arp_parameters().find("memory.tiles")->get(c)),
+            "[\"512:*/*/*/*/*/*\", \"512:-/-/-/-/-/-\"]");
 }
 
 TEST(ConfigFile, SyntaxErrorsGiveLineAndColumn) {

@@ -318,7 +318,7 @@ TEST(DisplayMemoryBank, TheTilesDrawnOnAreThoseWhoseOwnTexelsWereWritten) {
 // on the tiles it does not hold are never drawn: the same tiles and words, aprons included (a held tile's
 // apron does not copy a neighbour it does not hold), written a face at a time or texel by texel. The texels
 // on those tiles are lost and counted. Held: a checkerboard of face 2's tiles, so every held tile's right
-// and bottom neighbours are not held and its bottom-right one is; face 3 whole.
+// and bottom neighbours are not held and its bottom-right one is.
 TEST(DisplayMemoryBank, ATileItDoesNotHoldIsLostAsIfNeverDrawn) {
   for (const int S : {128, 100}) {
     MemoryConfig mc;
@@ -369,7 +369,31 @@ TEST(DisplayMemoryBank, ATileItDoesNotHoldIsLostAsIfNeverDrawn) {
     EXPECT_EQ(edges.write_face(2, apron_only.data(), fmt.empty_word()), 0);
     EXPECT_EQ(edges.writes_lost_off_tiles(), 2);
     EXPECT_EQ(edges.tiles_allocated(), 0u) << S;
+    // Texel (64, 32), tile (2, 1)'s first, held: it is the bottom-right corner of held tile (1, 0)'s apron, which
+    // is allocated for it and keeps it, as a bank holding every tile does (tiles (2, 0) and (1, 1), not held,
+    // carry it in their aprons too).
+    std::vector<uint64_t> corner(static_cast<size_t>(S) * static_cast<size_t>(S), fmt.empty_word());
+    corner[32 * static_cast<size_t>(S) + 64] = (uint64_t{5} << 32) | 3;
+    DisplayMemoryBank held_corner(fmt, map), every_corner(fmt);
+    for (DisplayMemoryBank* b : {&held_corner, &every_corner}) EXPECT_EQ(b->write_face(2, corner.data(), fmt.empty_word()), 1);
+    EXPECT_EQ(held_corner.tiles_allocated(), 4u);
+    expect_same_tiles(held_corner, every_corner, {2});
+    const int32_t t10 = held_corner.front_tile_index(2)[1];
+    ASSERT_NE(t10, 0);
+    EXPECT_EQ(held_corner.front_pool()[static_cast<size_t>(t10) * DisplayMemoryBank::kTileWords + DisplayMemoryBank::tile_word(32, 32)],
+              corner[32 * static_cast<size_t>(S) + 64]);
   }
+  // A face memory.faces leaves out loses its texels as an absent face (writes_lost), whatever the tiles say.
+  MemoryConfig mc;
+  mc.faces = {1, 1, 1, 1, 1, 0};
+  TileMap map(mc.face_size, true);
+  map.set(0, 0, 0, false);
+  DisplayMemoryBank b(MemoryFormat(mc), map);
+  b.write(5, 3, 3, 1, 1);
+  b.write(0, 3, 3, 1, 1);
+  EXPECT_EQ(b.writes_lost(), 1);
+  EXPECT_EQ(b.writes_lost_off_tiles(), 1);
+  EXPECT_EQ(b.texels_written(), 0);
 }
 
 // A memory set gives each memory's banks, every eye's, that memory's tiles.
@@ -377,7 +401,7 @@ TEST(DisplayMemorySet, EachMemoryHoldsItsOwnTiles) {
   MemoryConfig mc;
   mc.count = 2;
   mc.face_size = 64;
-  mc.tiles = {"1/-/-/-/-/-", "*/*/*/*/*/*"};
+  mc.tiles = {"64:1/-/-/-/-/-", "64:*/*/*/*/*/*"};
   DisplayMemorySet set(mc, 2);
   for (int e = 0; e < 2; ++e) {
     EXPECT_TRUE(set.bank(e, 0).holds(0, 0, 0));
@@ -389,8 +413,10 @@ TEST(DisplayMemorySet, EachMemoryHoldsItsOwnTiles) {
   }
   EXPECT_EQ(set.writes_lost_off_tiles(), 2);
   EXPECT_EQ(set.texels_written(), 2);
-  mc.tiles = {"*/*/*/*/*/*"};
-  EXPECT_THROW(DisplayMemorySet(mc, 1), std::invalid_argument);
+  mc.tiles = {"64:*/*/*/*/*/*"};
+  EXPECT_THROW(DisplayMemorySet(mc, 1), std::invalid_argument);  // one string for two memories
+  mc.tiles = {"64:*/*/*/*/*/*", "64:1"};
+  EXPECT_THROW(DisplayMemorySet(mc, 1), std::invalid_argument);  // malformed
 }
 
 TEST(MemoryFormat, ColourPackingAndRounding) {

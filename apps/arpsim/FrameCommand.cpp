@@ -65,6 +65,10 @@ int run_frame(FrameArgs& a) {
   std::printf("  photon times %.6f .. %.6f ms; display memory in use %.1f MiB; rendered in %.1f ms (wall clock)\n",
               static_cast<double>(s.first_photon_ps) * 1e-9, static_cast<double>(s.last_photon_ps) * 1e-9,
               static_cast<double>(s.memory_bytes) / (1 << 20), s.render_ms);
+  if (s.lost_on_absent_faces + s.lost_off_tiles > 0)
+    std::printf("  warning: %lld texels fell on faces (memory.faces) or tiles (memory.tiles) the configuration leaves out and were "
+                "lost: it was planned for another scene or motion\n",
+                static_cast<long long>(s.lost_on_absent_faces + s.lost_off_tiles));
   if (!a.report.empty()) write_text_atomic(a.report, dump_json(sim::still_report(spec, s, a.out), 2) + "\n");
   return 0;
 }

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "host/scene/Scene.hpp"
+#include "rtl_model/datapath/DisplayMemoryBank.hpp"
 
 namespace arp::host {
 
@@ -15,6 +16,18 @@ struct TexelRect {
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
   bool empty() const { return x1 < x0 || y1 < y0; }
 };
+
+// Calls visit(tx, ty) for each 32 x 32 display-memory tile the rectangle touches, row by row, until one call
+// returns false; whether none did (true for an empty rectangle).
+template <class Visit>
+bool each_tile(const TexelRect& r, Visit&& visit) {
+  constexpr int kShift = dp::DisplayMemoryBank::kTileShift;
+  if (r.empty()) return true;
+  for (int ty = r.y0 >> kShift; ty <= r.y1 >> kShift; ++ty)
+    for (int tx = r.x0 >> kShift; tx <= r.x1 >> kShift; ++tx)
+      if (!visit(tx, ty)) return false;
+  return true;
+}
 
 // The model frame's axis-aligned box of a mesh's vertices: {min, max} (both 0 for no vertices).
 std::array<glm::dvec3, 2> mesh_box(const Mesh& m);

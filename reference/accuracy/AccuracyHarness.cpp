@@ -484,6 +484,8 @@ Report run(const ArpConfig& cfg, const Options& opt) {
   if (opt.color_orientations > 0) {
     ArpConfig bc = cfg;
     bc.pipeline.aa = AaMode::Bilinear;
+    bc.memory.faces = MemoryConfig{}.faces;  // the test pattern on every texel: the datapath's colour, not a plan's storage
+    bc.memory.tiles.clear();
     const FunctionalModel bmodel(bc);
     DisplayMemorySet mem(bc.memory, E);
     fill_color_test_memories(mem);

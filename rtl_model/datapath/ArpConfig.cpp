@@ -122,8 +122,9 @@ ParameterTable<ArpConfig> make_parameters() {
   t.number("memory.faces", [](auto& c) -> auto& { return c.memory.faces; }, 0, 1, "",
            "the cube faces each memory has, +X -X +Y -Y +Z -Z: 1 present, 0 absent (no storage, reads empty, the "
            "host's writes to it lost and counted; arpsim plan leaves out the faces no object reaches)");
-  t.text_list("memory.tiles", [](auto& c) -> auto& { return c.memory.tiles; }, 16, "0123456789abcdefABCDEF*-/", "",
-              "the 32 x 32 tiles each memory holds, one string per memory (none: every tile): six fields separated by '/', "
+  t.text_list("memory.tiles", [](auto& c) -> auto& { return c.memory.tiles; }, 16, "0123456789abcdefABCDEF*-/:", "",
+              "the 32 x 32 tiles each memory holds, one string per memory (none: every tile): the face size it was listed for and "
+              "a colon, then six fields separated by '/', "
               "faces +X -X +Y -Y +Z -Z, each \"*\" (every tile), \"-\" (none) or hex digits, tile k = ty x T + tx at bit k % 4 of "
               "digit k / 4 (T tiles a row); a texel drawn on a tile a memory does not hold is lost and counted, as on an absent "
               "face (arpsim plan writes the tiles its scene's motion can draw on; docs/planning.md)");
@@ -218,22 +219,16 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
 
   if (c.memory.faces_present() == 0) ck.fail("memory.faces", "leaves out every face: a memory with no storage (keep one at least)");
   if (issues.empty() && !c.memory.tiles.empty()) {
-    if (static_cast<int>(c.memory.tiles.size()) != c.memory.count)
-      ck.fail("memory.tiles", "has " + std::to_string(c.memory.tiles.size()) + " strings and memory.count is " +
-                                  std::to_string(c.memory.count) + ": one for each memory, or none (every tile)");
+    std::vector<TileMap> maps;
+    std::string why;
+    if (!tile_maps(c.memory, maps, why))
+      ck.fail("memory.tiles", why);
     else
-      for (size_t m = 0; m < c.memory.tiles.size(); ++m) {
-        TileMap map;
-        std::string why;
-        if (!TileMap::parse(c.memory.tiles[m], c.memory.face_size, map, why)) {
-          ck.fail("memory.tiles", "memory " + std::to_string(m) + ": " + why);
-          continue;
-        }
+      for (size_t m = 0; m < maps.size(); ++m)
         for (int f = 0; f < 6; ++f)
-          if (c.memory.faces[static_cast<size_t>(f)] == 0 && map.tiles(f) > 0)
+          if (c.memory.faces[static_cast<size_t>(f)] == 0 && maps[m].tiles(f) > 0)
             ck.fail("memory.tiles", "memory " + std::to_string(m) + " holds tiles on face " + std::string(face_name(f)) +
                                         ", which memory.faces leaves out (\"-\" there)");
-      }
   }
   const auto& l = c.lens;
   if (std::abs(l.center_offset_px) >= t.h_active / 2.0)

@@ -24,7 +24,10 @@ DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f, TileMap tiles)
   if (tiles_.tiles_per_row() != 0 && tiles_.tiles_per_row() != tiles_per_row_)
     throw std::invalid_argument("DisplayMemoryBank: a tile map of " + std::to_string(tiles_.tiles_per_row()) +
                                 " tiles a row for faces of " + std::to_string(tiles_per_row_));
-  for (size_t face = 0; face < 6; ++face) tile_sparse_ |= fmt_.present[face] && !tiles_.every_tile(static_cast<int>(face));
+  for (size_t face = 0; face < 6; ++face) {
+    face_sparse_[face] = fmt_.present[face] && !tiles_.every_tile(static_cast<int>(face));
+    tile_sparse_ |= face_sparse_[face];
+  }
 }
 
 int32_t DisplayMemoryBank::back_tile(int face, int tx, int ty) {
@@ -190,7 +193,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
       lost += count[f];
       continue;
     }
-    if (tile_sparse_ && !tiles_.every_tile(static_cast<int>(f)) && count[f] > 0)
+    if (face_sparse_[f] && count[f] > 0)
       for (int ty = 0; ty < tiles_per_row_; ++ty)  // the texels on tiles not held are lost
         for (int tx = 0; tx < tiles_per_row_; ++tx)
           if (!holds(static_cast<int>(f), tx, ty)) {
@@ -242,7 +245,7 @@ void DisplayMemoryBank::store_face(int face, const uint64_t* words, uint64_t ski
         continue;
       }
       uint64_t* out = pool + static_cast<size_t>(tile) * kTileWords;
-      if (tile_sparse_ && !tiles_.every_tile(face)) {
+      if (face_sparse_[static_cast<size_t>(face)]) {
         store_window_held(face, words, tx, ty, skip, out);
         continue;
       }
@@ -307,13 +310,8 @@ size_t DisplayMemoryBank::bytes_allocated() const {
 }
 
 DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes) : fmt_(m), tiles_(m.tiles), eyes_(eyes), count_(m.count) {
-  if (!tiles_.empty() && static_cast<int>(tiles_.size()) != count_)
-    throw std::invalid_argument("memory.tiles has " + std::to_string(tiles_.size()) + " strings for " + std::to_string(count_) + " memories");
-  std::vector<TileMap> maps(static_cast<size_t>(count_));
-  for (size_t k = 0; k < tiles_.size(); ++k) {
-    std::string why;
-    if (!TileMap::parse(tiles_[k], m.face_size, maps[k], why)) throw std::invalid_argument("memory.tiles, memory " + std::to_string(k) + ": " + why);
-  }
+  std::vector<TileMap> maps;
+  if (std::string why; !tile_maps(m, maps, why)) throw std::invalid_argument("memory.tiles " + why + " (the configuration was not validated)");
   for (int e = 0; e < eyes; ++e)
     for (int k = 0; k < count_; ++k) banks_.push_back(std::make_unique<DisplayMemoryBank>(fmt_, maps[static_cast<size_t>(k)]));
 }

@@ -6,9 +6,9 @@
 // (tile 0 is the empty tile), so a texel is two plain indexed loads --
 // pool[index[tile] * 1089 + word] -- which the functional model's passes
 // can issue as vector gathers. A stored tile is 33 x 33 words: its 32 x 32
-// texels plus an apron, a copy of the right neighbour's first column and the
-// bottom neighbour's first row, so the four taps of any bilinear quad lie in
-// the tile of its top-left tap. Writes keep the aprons up to date.
+// texels plus an apron, a copy of the right neighbour's first column, the
+// bottom neighbour's first row and the bottom-right neighbour's first texel,
+// so the four taps of any bilinear quad lie in the tile of its top-left tap. Writes keep the aprons up to date.
 // A texel is one 64-bit word: colour in the low 32 bits (R:G:B packed,
 // red highest), depth in the high 32 bits.
 #pragma once
@@ -106,6 +106,7 @@ class DisplayMemoryBank {
   int64_t writes_lost_off_tiles() const { return lost_tiles_; }  // texels written to tiles not held on faces present, ever
   const TileMap& tiles() const { return tiles_; }
   bool holds(int face, int tx, int ty) const { return !tile_sparse_ || tiles_.has(face, tx, ty); }
+  bool holds_every_tile() const { return !tile_sparse_; }  // of every face present
   int64_t texels_written() const { return written_; }  // texels stored (write, write_face, reserve_faces), ever
   // The tiles whose own 32 x 32 texels (not the apron) were ever written, in either buffer: what a
   // display memory holding only the tiles this run draws on would need (a tile written only through its
@@ -174,7 +175,8 @@ class DisplayMemoryBank {
   MemoryFormat fmt_;
   int tiles_per_row_;
   TileMap tiles_;
-  bool tile_sparse_ = false;  // some tile of a face present is not held
+  std::array<bool, 6> face_sparse_{};  // a face present with some tile not held
+  bool tile_sparse_ = false;           // any face so
   std::vector<uint64_t> empty_tile_;   // what tile 0 reads as before a buffer has a pool
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   int64_t lost_ = 0;

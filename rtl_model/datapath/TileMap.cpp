@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "ArpConfig.hpp"
 #include "CubeFaceAddressGenerator.hpp"
 #include "DisplayMemoryBank.hpp"
 
@@ -16,7 +17,7 @@ int hex_value(char c) {
 }
 }  // namespace
 
-TileMap::TileMap(int face_size, bool every) : tiles_per_row_(DisplayMemoryBank::tiles_per_row_of(face_size)) {
+TileMap::TileMap(int face_size, bool every) : face_size_(face_size), tiles_per_row_(DisplayMemoryBank::tiles_per_row_of(face_size)) {
   if (face_size < 1) throw std::invalid_argument("TileMap: face size " + std::to_string(face_size));
   for (auto& b : bits_) b.assign(static_cast<size_t>(tiles_per_row_) * static_cast<size_t>(tiles_per_row_), every ? 1 : 0);
 }
@@ -43,6 +44,12 @@ bool TileMap::every_tile(int face) const {
   return tiles_per_row_ == 0 || tiles(face) == int64_t{tiles_per_row_} * tiles_per_row_;
 }
 
+bool TileMap::every_tile(const std::array<bool, kFaces>& present) const {
+  for (int f = 0; f < kFaces; ++f)
+    if (present[static_cast<size_t>(f)] && !every_tile(f)) return false;
+  return true;
+}
+
 bool TileMap::every_tile() const {
   for (int f = 0; f < kFaces; ++f)
     if (!every_tile(f)) return false;
@@ -51,9 +58,19 @@ bool TileMap::every_tile() const {
 
 bool TileMap::parse(const std::string& text, int face_size, TileMap& out, std::string& why) {
   TileMap m(face_size, false);
+  const size_t colon = text.find(':');
+  const std::string size_text = colon == std::string::npos ? std::string() : text.substr(0, colon);
+  if (size_text.empty() || size_text.size() > 6 || size_text.find_first_not_of("0123456789") != std::string::npos) {
+    why = "must begin with the face size it was listed for and a colon (\"" + std::to_string(face_size) + ":\")";
+    return false;
+  }
+  if (std::stoi(size_text) != face_size) {
+    why = "was listed for faces of " + size_text + " texels; memory.face_size is " + std::to_string(face_size);
+    return false;
+  }
   const size_t per_face = static_cast<size_t>(m.tiles_per_row_) * static_cast<size_t>(m.tiles_per_row_);
   const size_t digits = (per_face + 3) / 4;
-  size_t pos = 0;
+  size_t pos = colon + 1;
   for (int f = 0; f < kFaces; ++f) {
     const size_t end = text.find('/', pos);
     if ((end == std::string::npos) != (f == kFaces - 1)) {
@@ -97,9 +114,9 @@ bool TileMap::parse(const std::string& text, int face_size, TileMap& out, std::s
 }
 
 std::string TileMap::text() const {
-  if (tiles_per_row_ == 0) return "*/*/*/*/*/*";
+  if (tiles_per_row_ == 0) throw std::logic_error("TileMap::text of a map without a face size");
   static constexpr char kHex[] = "0123456789abcdef";
-  std::string s;
+  std::string s = std::to_string(face_size_) + ":";
   for (int f = 0; f < kFaces; ++f) {
     if (f) s += '/';
     const auto& bits = bits_[static_cast<size_t>(f)];
@@ -114,6 +131,22 @@ std::string TileMap::text() const {
       }
   }
   return s;
+}
+
+bool tile_maps(const MemoryConfig& m, std::vector<TileMap>& out, std::string& why) {
+  out.assign(static_cast<size_t>(m.count), TileMap());
+  if (m.tiles.empty()) return true;
+  if (static_cast<int>(m.tiles.size()) != m.count) {
+    why = "has " + std::to_string(m.tiles.size()) + " strings and memory.count is " + std::to_string(m.count) +
+          ": one for each memory, or none (every tile)";
+    return false;
+  }
+  for (size_t k = 0; k < m.tiles.size(); ++k)
+    if (!TileMap::parse(m.tiles[k], m.face_size, out[k], why)) {
+      why = "memory " + std::to_string(k) + ": " + why;
+      return false;
+    }
+  return true;
 }
 
 }  // namespace arp::dp
