@@ -96,6 +96,8 @@ TEST(Planner, AnEmptySceneGivesOneMemoryAndSaysWhy) {
   EXPECT_TRUE(said);
   for (const bool f : p.faces_reached) EXPECT_FALSE(f);
   EXPECT_EQ(p.config.memory.faces_present(), 6);  // no face is written; the plain cube shows the background
+  EXPECT_TRUE(p.config.memory.tiles.empty());       // and keeps its tiles, though none can be drawn on
+  EXPECT_EQ(p.tiles.per_memory.at(0), 0);
 }
 
 // One object a kilometre ahead, walked toward for ten metres: its image stays within theta_t for
@@ -169,6 +171,38 @@ TEST(Planner, NearAndFarObjectsGetSeveralMemoriesAndLessLoadThanOne) {
 
 int64_t tiles_in_text(const std::string& text, int T);  // below
 
+// Standing still, the priority rule puts every object in the slowest memory, whose tiles a plan for a walk
+// sized for the objects it holds walking. The host then keeps each object no slower than a memory holding
+// its tiles: a run of the plan standing at the walk's start loses nothing, keeping objects faster than the
+// rule would (seen losing texels with the host's tile test left out).
+TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
+  TempDir d;
+  const PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
+  const Plan p = make_plan(r);
+  ASSERT_GT(p.config.memory.count, 1);
+  ASSERT_FALSE(p.config.memory.tiles.empty());
+  nlohmann::json rep[2];
+  for (int every = 0; every < 2; ++every) {
+    RunSpec spec;
+    spec.config = p.config;
+    if (every) spec.config.memory.tiles.clear();
+    spec.memories.scene = d.file("row.json");
+    spec.host.walk = d.file("walk.json");
+    spec.host.walk_speed = 0.0;
+    spec.frames = 40;
+    spec.out.out_dir = d.file("run" + std::to_string(every));
+    spec.out.every = 0;
+    spec.out.error_every = 0;
+    spec.out.report = d.file("r" + std::to_string(every) + ".json");
+    Session(spec).run();
+    rep[every] = test::load_json(spec.out.report);
+  }
+  EXPECT_EQ(rep[0]["footprint"]["texels_lost_off_tiles"], 0);
+  EXPECT_GT(rep[0]["host"]["object_frames_held_faster_for_tiles"].get<int64_t>(), 0);
+  EXPECT_EQ(rep[1]["host"]["object_frames_held_faster_for_tiles"], 0);  // every tile: the rule's own choice
+  EXPECT_GT(rep[0]["host"]["triangles_per_s"].get<double>(), rep[1]["host"]["triangles_per_s"].get<double>());
+}
+
 // Memory by memory: the row of balls, planned into several memories, inside a sphere of 20 m around the walk
 // that every face sees whole. The memory holding the sphere can be drawn on everywhere and keeps whole faces
 // (every tile, no table); a memory holding only balls holds their tiles. The plan's hardware figure is the
@@ -190,7 +224,7 @@ TEST(Planner, AMemoryDrawnOnEverywhereKeepsWholeFaces) {
   for (int m = 0; m < M; ++m) {
     const std::string& t = p.config.memory.tiles[static_cast<size_t>(m)];
     const int64_t n = tiles_in_text(t, static_cast<int>(T));
-    if (t == "*/*/*/*/*/*") {
+    if (t == std::to_string(S) + ":*/*/*/*/*/*") {
       ++whole;
       EXPECT_EQ(p.tiles.per_memory[static_cast<size_t>(m)], 6 * T * T) << m;
       total += 2 * 2 * 6 * S * S * bits;
@@ -582,7 +616,7 @@ void write_near_ball(TempDir& d);  // below
 // "-" none, otherwise the set bits of its hex digits.
 int64_t tiles_in_text(const std::string& text, int T) {
   int64_t n = 0;
-  size_t pos = 0;
+  size_t pos = text.find(':') + 1;  // after the face size
   for (int f = 0; f < 6; ++f) {
     const size_t end = text.find('/', pos);
     const std::string field = text.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
@@ -637,10 +671,13 @@ TEST(PlanCli, TheTilesAPlanLeavesOutAreNotModelled) {
   ASSERT_NE(at, std::string::npos) << other.output;
   EXPECT_EQ(other.output.find(lost, at + 1), std::string::npos) << "said more than once: " << other.output;
   EXPECT_GT(test::load_json(d.file("n.json"))["footprint"]["texels_lost_off_tiles"].get<int64_t>(), 0);
-  // A hand edit that no longer fits the face size is refused naming the key.
-  const auto bad = run_command(run + " --scene " + d.file("far.json") + " --set memory.face_size=512");
-  EXPECT_NE(bad.status, 0);
-  EXPECT_NE(bad.output.find("memory.tiles"), std::string::npos) << bad.output;
+  // A face size the list was not made for is refused naming the key, even one with as many tiles a row.
+  for (const int size : {512, static_cast<int>(S) + 1}) {
+    const auto bad = run_command(run + " --scene " + d.file("far.json") + " --set memory.face_size=" + std::to_string(size));
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.output.find("memory.tiles: memory 0: was listed for faces of " + std::to_string(S) + " texels"), std::string::npos)
+        << bad.output;
+  }
 }
 
 // The plan records the theta_t its memories were sized for (memory.threshold_deg): a run with the plan
@@ -980,12 +1017,12 @@ TEST(Planner, ATileSparseMemorysBytesAreItsTilesTwiceAndOneTable) {
   // of 64 texels (whole faces, no table), memory 1 one tile (both buffers of one slot and 6 x 2 x 2 one-bit entries).
   c.memory.face_size = 64;
   c.memory.count = 2;
-  c.memory.tiles = {"*/*/*/*/*/*", "1/-/-/-/-/-"};
+  c.memory.tiles = {"64:*/*/*/*/*/*", "64:1/-/-/-/-/-"};
   ASSERT_TRUE(dp::validate(c).empty());
   EXPECT_EQ(display_memory_bytes(c), (2 * 2 * 6 * 64 * 64 * 40 + 2 * (2 * 1 * 1024 * 40 + 6 * 2 * 2 * 1) + 7) / 8);
   EXPECT_EQ(tiles_held(c, 0), -1);
   EXPECT_EQ(tiles_held(c, 1), 1);
-  c.memory.tiles = {"*/*/*/*/*/*", "*/*/*/*/*/*"};  // every tile: whole faces, as with no list
+  c.memory.tiles = {"64:*/*/*/*/*/*", "64:*/*/*/*/*/*"};  // every tile: whole faces, as with no list
   EXPECT_EQ(display_memory_bytes(c), 2 * 2 * 2 * 6 * 64 * 64 * 40 / 8);
 }
 

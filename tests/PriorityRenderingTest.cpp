@@ -4,6 +4,7 @@
 // their timing rules.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "common/InputError.hpp"
@@ -76,6 +77,25 @@ TEST(PriorityScheduler, ObjectsGoToTheSlowestMemoryTheirValidityAllowsAndToOneOn
   base.assign({0, 0, 0}, 1.0, 0);
   EXPECT_EQ(base.objects_in(0).size(), s.objects.size());
   EXPECT_EQ(base.frames_per_update(3), 1);
+}
+
+// Where memories hold only some tiles: an object goes to the slowest memory at or below its rule's choice that
+// holds its tiles, and where none does, to the rule's choice. Standing still, every ball's rule says the
+// slowest memory (3); here memory 3 holds only the even balls' tiles, memory 2 the balls of index 1 mod 4,
+// memories 1 and 0 every tile but ball 7's.
+TEST(PriorityScheduler, AnObjectGoesNoSlowerThanAMemoryHoldingItsTiles) {
+  Scene s;
+  auto ball = std::make_shared<Mesh>(make_sphere(0.1, 8));
+  for (int i = 0; i < 8; ++i) add_object(s, "ball", ball, {0, 0, -2.0 - i}, {});
+  PriorityScheduler sch(s, PriorityConfig{}, 512);
+  sch.set_fits([](size_t i, int m, const glm::dvec3&, double) {
+    if (i == 7) return false;
+    return m == 3 ? i % 2 == 0 : m == 2 ? i % 4 == 1 : true;
+  });
+  sch.assign({0, 0, 0}, 0.0, 0);
+  const std::array<int, 8> want{3, 2, 3, 1, 3, 2, 3, 3};  // ball 7 fits none: the rule's choice
+  for (size_t i = 0; i < 8; ++i) EXPECT_EQ(sch.belongs_in(i), want[i]) << i;
+  EXPECT_EQ(sch.held_back(), 3);  // balls 1, 3 and 5
 }
 
 TEST(WalkPath, WalksAtItsSpeedLoopsAndRefusesDegeneratePaths) {

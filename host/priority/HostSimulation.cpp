@@ -1,7 +1,10 @@
 #include "HostSimulation.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "host/render/FaceFootprint.hpp"
 
 namespace arp::host {
 
@@ -27,7 +30,28 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       pending_ids_(from_.size(), std::vector<FaceImage>(6)),
       shown_objects_(static_cast<size_t>(mem.count())),
       pending_objects_(static_cast<size_t>(mem.count())),
-      shown_memory_(scene.objects.size(), -1) {}
+      shown_memory_(scene.objects.size(), -1) {
+  // Memories holding only some tiles (memory.tiles): an object goes to a slower memory only where that memory
+  // holds the tiles it covers from eyes within half the eyes' distance of the walk's point (a standing user's
+  // objects would all go to the slowest memory, which a plan for a walk sized for the far ones only).
+  bool sparse = false;
+  for (int m = 0; m < mem.count(); ++m) sparse |= !mem.bank(0, m).holds_every_tile();
+  if (!sparse) return;
+  std::vector<std::array<glm::dvec3, 2>> boxes;
+  for (const SceneObject& o : scene.objects) boxes.push_back(mesh_box(*o.mesh));
+  const double near_m = renderer_.depth().near_m, reach = 0.5 * ipd;
+  sched_.set_fits([this, boxes = std::move(boxes), near_m, reach](size_t i, int m, const glm::dvec3& eye, double t) {
+    const dp::DisplayMemoryBank& bank = mem_.bank(0, m);  // every eye's bank of a memory holds the same tiles
+    if (bank.holds_every_tile()) return true;
+    const int S = bank.format().face_size;
+    for (int f = 0; f < 6; ++f) {
+      if (!bank.format().present[static_cast<size_t>(f)]) continue;  // lost there whatever the memory
+      const TexelRect r = object_face_rect(scene_.objects[i], boxes[i], t, eye, reach, f, S, near_m);
+      if (!each_tile(r, [&](int tx, int ty) { return bank.holds(f, tx, ty); })) return false;
+    }
+    return true;
+  });
+}
 
 void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region,
                                  std::vector<std::pair<RegionIndex, RegionIndex>> span) {

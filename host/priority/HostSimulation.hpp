@@ -36,6 +36,8 @@ class HostSimulation {
   HostSimulation(const Scene& scene, const PriorityConfig& pc, const RenderEngine& engine, WalkPath walk,
                  std::function<glm::dquat(double)> head, dp::DisplayMemorySet& mem, double ipd_m,
                  double display_hz);
+  HostSimulation(const HostSimulation&) = delete;  // the scheduler's tile test refers to this object
+  HostSimulation& operator=(const HostSimulation&) = delete;
 
   // Draws objects into a bank as CubeFaceRenderer::render does (no vertex warp): how another
   // renderer (OpenGL, sim/Session) replaces the software one. Region warping needs the software one.

@@ -28,6 +28,15 @@ void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double 
       const double p = object_validity(scene_.objects[i], eye, user_speed, t, threshold_).period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
     }
+    if (fits_ && m > 0) {
+      int k = m;
+      while (k > 0 && !fits_(i, k, eye, t)) --k;
+      // k < m: memory k holds its tiles, or k = 0 -- kept there only if memory 0 holds them (else none does).
+      if (k < m && (k > 0 || fits_(i, 0, eye, t))) {
+        ++held_back_;
+        m = k;
+      }
+    }
     desired_[i] = m;
   }
 }

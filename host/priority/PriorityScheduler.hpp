@@ -6,9 +6,12 @@
 // belongs; an object actually moves (move(), move_to()) when the host
 // re-renders both memories together, so it is never shown by two memories,
 // nor by none (HostSimulation decides when; tested). The baseline renders
-// everything into memory 0 every frame.
+// everything into memory 0 every frame. Where memories hold only some tiles
+// (memory.tiles), an object goes no slower than the slowest memory at or
+// below its rule's choice that holds the tiles it draws on (set_fits).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "Validity.hpp"
@@ -53,6 +56,12 @@ class PriorityScheduler {
 
   // Works out where every object belongs for the user at `eye` moving at `user_speed` at time t.
   void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
+  // Whether object `object` at time t, seen from eyes about `eye`, draws only on tiles memory m holds. With
+  // one set, assign() puts an object in the slowest memory at or below the rule's choice that holds them
+  // (the rule's choice when none does: its texels are lost wherever it goes).
+  using Fits = std::function<bool(size_t object, int memory, const glm::dvec3& eye, double t_s)>;
+  void set_fits(Fits f) { fits_ = std::move(f); }
+  int64_t held_back() const { return held_back_; }  // objects kept faster than the rule's choice for tiles, summed over assign() calls
   int memory_of(size_t object) const { return memory_[object]; }    // where it is
   int belongs_in(size_t object) const { return desired_[object]; }  // where it should go
   void move(size_t object) { move_to(object, desired_[object]); }
@@ -73,6 +82,8 @@ class PriorityScheduler {
   double threshold_;
   std::vector<int> memory_, desired_;
   int64_t moves_ = 0;
+  Fits fits_;
+  int64_t held_back_ = 0;
 };
 
 }  // namespace arp::host
