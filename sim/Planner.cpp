@@ -328,9 +328,7 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
       while (in_window[i * M + lo] == 0) ++lo;
       while (in_window[i * M + hi] == 0) --hi;
       const host::SceneObject& o = scene.objects[i];
-      const host::Sphere b = o.world_bound(ms.t[k]);
-      const double moves = (std::abs(deg_to_rad(o.animation.spin_deg_per_s)) * (glm::length(b.center - o.position_at(ms.t[k])) + b.radius) +
-                            (o.animation.path.size() >= 2 ? o.animation.path_speed : 0.0)) * ms.step_s;
+      const double moves = host::animation_reach_m(o, ms.t[k], ms.step_s);
       for (int f = 0; f < 6; ++f) {
         if (!mc.faces[static_cast<size_t>(f)]) continue;
         const host::TexelRect rc = host::object_face_rect(o, box[i], ms.t[k], head, margin + moves, f, S, near_m);

@@ -203,6 +203,33 @@ TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   EXPECT_GT(rep[0]["host"]["triangles_per_s"].get<double>(), rep[1]["host"]["triangles_per_s"].get<double>());
 }
 
+// An object is drawn only into a memory holding its tiles, whatever way it moves there. Four memories (every
+// 1, 2, 4, 8 frames) of which memory 2 holds no tile; a ball the walk leaves behind at 6 m/s needs ever slower
+// memories, and goes from memory 1 straight toward 3 at frames where 1 and 2 render but not 3 -- a part-way
+// move into memory 2 -- and instead stays faster: nothing is lost (seen losing texels with the move's test
+// left out).
+TEST(Planner, AnObjectIsDrawnOnlyIntoAMemoryHoldingItsTiles) {
+  TempDir d;
+  write(d.file("ball.json"), R"({"name": "ball", "objects": [{"name": "b", "sphere": 0.3, "position": [0, 1.6, 0.5]}]})");
+  write(d.file("away.json"), R"({"speed": 6, "points": [[0, 1.6, 0], [0, 1.6, -200]]})");
+  RunSpec spec;
+  spec.config.memory.face_size = 64;
+  spec.config.memory.tiles = {"64:*/*/*/*/*/*", "64:*/*/*/*/*/*", "64:-/-/-/-/-/-", "64:*/*/*/*/*/*"};
+  spec.config.memory.threshold_deg = 4;
+  spec.memories.scene = d.file("ball.json");
+  spec.host.walk = d.file("away.json");
+  spec.frames = 240;
+  spec.out.out_dir = d.file("run");
+  spec.out.every = 0;
+  spec.out.error_every = 0;
+  spec.out.report = d.file("r.json");
+  Session(spec).run();
+  const nlohmann::json rep = test::load_json(spec.out.report);
+  EXPECT_EQ(rep["footprint"]["texels_lost_off_tiles"], 0);
+  EXPECT_GT(rep["host"]["object_frames_held_faster_for_tiles"].get<int64_t>(), 0);
+  EXPECT_GT(rep["host"]["object_moves"].get<int64_t>(), 1);
+}
+
 // Memory by memory: the row of balls, planned into several memories, inside a sphere of 20 m around the walk
 // that every face sees whole. The memory holding the sphere can be drawn on everywhere and keeps whole faces
 // (every tile, no table); a memory holding only balls holds their tiles. The plan's hardware figure is the

@@ -94,8 +94,11 @@ TEST(PriorityScheduler, AnObjectGoesNoSlowerThanAMemoryHoldingItsTiles) {
   });
   sch.assign({0, 0, 0}, 0.0, 0);
   const std::array<int, 8> want{3, 2, 3, 1, 3, 2, 3, 3};  // ball 7 fits none: the rule's choice
-  for (size_t i = 0; i < 8; ++i) EXPECT_EQ(sch.belongs_in(i), want[i]) << i;
-  EXPECT_EQ(sch.held_back(), 3);  // balls 1, 3 and 5
+  for (size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(sch.belongs_in(i), want[i]) << i;
+    EXPECT_EQ(sch.rule_choice(i), 3) << i;
+    EXPECT_EQ(sch.fits(i, 0, {}, 0), i != 7) << i;
+  }
 }
 
 TEST(WalkPath, WalksAtItsSpeedLoopsAndRefusesDegeneratePaths) {

@@ -32,8 +32,10 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
       pending_objects_(static_cast<size_t>(mem.count())),
       shown_memory_(scene.objects.size(), -1) {
   // Memories holding only some tiles (memory.tiles): an object goes to a slower memory only where that memory
-  // holds the tiles it covers from eyes within half the eyes' distance of the walk's point (a standing user's
-  // objects would all go to the slowest memory, which a plan for a walk sized for the far ones only).
+  // holds the tiles it covers (a standing user's objects would all go to the slowest memory, which a plan for
+  // a walk sized for the far ones only) -- from eyes within half the eyes' distance of the walk's point, grown
+  // by how far the eye and the object's own animation move before the engine starts the render (the planner's
+  // bound is grown by a sample step, so a walk run as planned with no backlog is never held back).
   bool sparse = false;
   for (int m = 0; m < mem.count(); ++m) sparse |= !mem.bank(0, m).holds_every_tile();
   if (!sparse) return;
@@ -44,9 +46,11 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
     const dp::DisplayMemoryBank& bank = mem_.bank(0, m);  // every eye's bank of a memory holds the same tiles
     if (bank.holds_every_tile()) return true;
     const int S = bank.format().face_size;
+    const double lag = std::max(0.0, engine_free_ - t);  // a render starts at max(t, engine free)
+    const double margin = reach + walk_.speed() * lag + animation_reach_m(scene_.objects[i], t, lag);
     for (int f = 0; f < 6; ++f) {
       if (!bank.format().present[static_cast<size_t>(f)]) continue;  // lost there whatever the memory
-      const TexelRect r = object_face_rect(scene_.objects[i], boxes[i], t, eye, reach, f, S, near_m);
+      const TexelRect r = object_face_rect(scene_.objects[i], boxes[i], t, eye, margin, f, S, near_m);
       if (!each_tile(r, [&](int tx, int ty) { return bank.holds(f, tx, ty); })) return false;
     }
     return true;
@@ -56,6 +60,7 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
 void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region,
                                  std::vector<std::pair<RegionIndex, RegionIndex>> span) {
   regions_ = regions;
+  sched_.set_fits({});  // regions place objects by region, not by the object rule: the tiles are not kept to there
   object_region_ = std::move(object_region);
   span_ = std::move(span);
 }
@@ -122,6 +127,7 @@ void HostSimulation::before_frame(int64_t f, double t) {
   }
   const glm::dvec3 head_pos = walk_.position(t);
   sched_.assign(head_pos, walk_.speed(), t);
+  for (size_t i = 0; i < scene_.objects.size() && !regions_; ++i) held_back_ += sched_.belongs_in(i) < sched_.rule_choice(i) ? 1 : 0;
   const int N = mem_.count();
   std::vector<char> render(static_cast<size_t>(N), 0), free(static_cast<size_t>(N), 0), moved(static_cast<size_t>(N), 0);
   bool all_free = true;
@@ -161,6 +167,15 @@ void HostSimulation::before_frame(int64_t f, double t) {
     if (!render[static_cast<size_t>(from)]) continue;
     int target = sched_.belongs_in(i);
     while (target != from && !render[static_cast<size_t>(target)]) target += target > from ? -1 : 1;
+    // Where memories hold only some tiles, it is drawn only into one holding its tiles: a part-way move, a
+    // memory it has outgrown, or one left rendering alone by an overload may not -- then the slowest memory
+    // rendering now, faster than that, that does (none: stays, its texels there lost).
+    if (!sched_.fits(i, target, head_pos, t))
+      for (int k = target - 1; k >= 0; --k)
+        if (render[static_cast<size_t>(k)] && sched_.fits(i, k, head_pos, t)) {
+          target = k;
+          break;
+        }
     if (target == from) continue;
     sched_.move_to(i, target);
     moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(target)] = 1;

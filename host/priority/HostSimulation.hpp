@@ -78,6 +78,8 @@ class HostSimulation {
   const std::vector<MemoryLoad>& load() const { return load_; }
   const PriorityScheduler& scheduler() const { return sched_; }
   double engine_busy_until() const { return engine_free_; }
+  // Object-frames whose destination was a faster memory than the rule's, for its tiles (memory.tiles).
+  int64_t held_back() const { return held_back_; }
   // Triangles a full render of the whole scene would set up now (both eyes): the baseline's load per frame.
   int64_t full_render_triangles(double t_s) const;
   // Where the eye was when memory m's displayed image was rendered (NaN before the first).
@@ -119,6 +121,7 @@ class HostSimulation {
   int memory_of_object(size_t i) const;
   std::vector<size_t> objects_for(int m) const;
   double engine_free_ = -1e300;
+  int64_t held_back_ = 0;
 };
 
 }  // namespace arp::host

@@ -19,7 +19,8 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
       cfg_(cfg),
       threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : dp::texel_angle_rad(face_size)),
       memory_(scene.objects.size(), 0),
-      desired_(scene.objects.size(), 0) {}
+      desired_(scene.objects.size(), 0),
+      rule_(scene.objects.size(), 0) {}
 
 void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double t) {
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -28,14 +29,12 @@ void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double 
       const double p = object_validity(scene_.objects[i], eye, user_speed, t, threshold_).period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
     }
+    rule_[i] = m;
     if (fits_ && m > 0) {
       int k = m;
       while (k > 0 && !fits_(i, k, eye, t)) --k;
-      // k < m: memory k holds its tiles, or k = 0 -- kept there only if memory 0 holds them (else none does).
-      if (k < m && (k > 0 || fits_(i, 0, eye, t))) {
-        ++held_back_;
-        m = k;
-      }
+      // k < m: memory k holds its tiles, or k = 0 -- taken only if memory 0 holds them (else none at or below does).
+      if (k < m && (k > 0 || fits_(i, 0, eye, t))) m = k;
     }
     desired_[i] = m;
   }

@@ -58,10 +58,11 @@ class PriorityScheduler {
   void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
   // Whether object `object` at time t, seen from eyes about `eye`, draws only on tiles memory m holds. With
   // one set, assign() puts an object in the slowest memory at or below the rule's choice that holds them
-  // (the rule's choice when none does: its texels are lost wherever it goes).
+  // (the rule's choice when none of those does: its texels there are lost).
   using Fits = std::function<bool(size_t object, int memory, const glm::dvec3& eye, double t_s)>;
   void set_fits(Fits f) { fits_ = std::move(f); }
-  int64_t held_back() const { return held_back_; }  // objects kept faster than the rule's choice for tiles, summed over assign() calls
+  bool fits(size_t object, int m, const glm::dvec3& eye, double t_s) const { return !fits_ || fits_(object, m, eye, t_s); }
+  int rule_choice(size_t object) const { return rule_[object]; }  // where the rule alone puts it (before the tiles)
   int memory_of(size_t object) const { return memory_[object]; }    // where it is
   int belongs_in(size_t object) const { return desired_[object]; }  // where it should go
   void move(size_t object) { move_to(object, desired_[object]); }
@@ -80,10 +81,9 @@ class PriorityScheduler {
   const Scene& scene_;
   PriorityConfig cfg_;
   double threshold_;
-  std::vector<int> memory_, desired_;
+  std::vector<int> memory_, desired_, rule_;
   int64_t moves_ = 0;
   Fits fits_;
-  int64_t held_back_ = 0;
 };
 
 }  // namespace arp::host

@@ -74,4 +74,11 @@ TexelRect object_face_rect(const SceneObject& o, const std::array<glm::dvec3, 2>
   return r;
 }
 
+double animation_reach_m(const SceneObject& o, double t_s, double dt_s) {
+  const Sphere b = o.world_bound(t_s);
+  const double spin = std::abs(o.animation.spin_deg_per_s) * (3.14159265358979323846 / 180.0);
+  const double path = o.animation.path.size() >= 2 ? o.animation.path_speed : 0.0;
+  return (spin * (glm::length(b.center - o.position_at(t_s)) + b.radius) + path) * dt_s;
+}
+
 }  // namespace arp::host

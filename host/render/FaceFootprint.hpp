@@ -29,6 +29,10 @@ bool each_tile(const TexelRect& r, Visit&& visit) {
   return true;
 }
 
+// How far any point of object o can move by its own animation (spin about its position, path) in dt seconds
+// from time t, metres: an upper bound, the spin's arc at its bound's far side plus the path's speed.
+double animation_reach_m(const SceneObject& o, double t_s, double dt_s);
+
 // The model frame's axis-aligned box of a mesh's vertices: {min, max} (both 0 for no vertices).
 std::array<glm::dvec3, 2> mesh_box(const Mesh& m);
 
