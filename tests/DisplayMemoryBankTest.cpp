@@ -413,6 +413,12 @@ TEST(DisplayMemorySet, EachMemoryHoldsItsOwnTiles) {
   }
   EXPECT_EQ(set.writes_lost_off_tiles(), 2);
   EXPECT_EQ(set.texels_written(), 2);
+  // It is the memory set of a configuration with those tiles only (a frame renderer refuses another).
+  ArpConfig c;
+  c.memory = mc;
+  EXPECT_TRUE(matches(set, c));
+  c.memory.tiles.clear();
+  EXPECT_FALSE(matches(set, c));
   mc.tiles = {"64:*/*/*/*/*/*"};
   EXPECT_THROW(DisplayMemorySet(mc, 1), std::invalid_argument);  // one string for two memories
   mc.tiles = {"64:*/*/*/*/*/*", "64:1"};
