@@ -239,17 +239,30 @@ int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t n) {
   return 2 * n * kTile * kTile * bits + int64_t{c.memory.faces_present()} * tpr * tpr * entry;
 }
 
-int64_t tiles_held(const dp::ArpConfig& c, int memory) {
+namespace {
+
+// tiles_held for every memory, the list parsed once.
+std::vector<int64_t> tiles_held_all(const dp::ArpConfig& c) {
   std::vector<dp::TileMap> maps;
   if (std::string why; !dp::tile_maps(c.memory, maps, why)) throw std::invalid_argument("memory.tiles " + why);
-  const dp::TileMap& map = maps.at(static_cast<size_t>(memory));
   const dp::MemoryFormat fmt(c.memory);
-  if (map.every_tile(fmt.present)) return -1;
-  int64_t n = 0;
-  for (int f = 0; f < 6; ++f)
-    if (fmt.present[static_cast<size_t>(f)]) n += map.tiles(f);
-  return n;
+  std::vector<int64_t> held;
+  for (const dp::TileMap& map : maps) {
+    if (map.every_tile(fmt.present)) {
+      held.push_back(-1);
+      continue;
+    }
+    int64_t n = 0;
+    for (int f = 0; f < 6; ++f)
+      if (fmt.present[static_cast<size_t>(f)]) n += map.tiles(f);
+    held.push_back(n);
+  }
+  return held;
 }
+
+}  // namespace
+
+int64_t tiles_held(const dp::ArpConfig& c, int memory) { return tiles_held_all(c).at(static_cast<size_t>(memory)); }
 
 int64_t bank_bits_whole(const dp::ArpConfig& c) {
   const int64_t S = c.memory.face_size;
@@ -260,8 +273,7 @@ int64_t display_memory_bytes(const dp::ArpConfig& c) {
   const int64_t whole_memory_bits = int64_t{c.timing.eyes} * bank_bits_whole(c);
   int64_t total_bits = 0;
   bool sparse = false;
-  for (int k = 0; k < c.memory.count; ++k) {
-    const int64_t held = tiles_held(c, k);
+  for (const int64_t held : tiles_held_all(c)) {
     sparse |= held >= 0;
     total_bits += held < 0 ? whole_memory_bits : c.timing.eyes * bank_bits_tiled(c, held);
   }

@@ -590,6 +590,23 @@ test::CommandResult plan_ball_and_walk(TempDir& d, const std::string& extra = ""
                      " --set display.h_active=160 --set display.v_active=120" + extra + " -o " + d.file("plan.json"));
 }
 
+// `arpsim run` of that plan for 3 frames of its walk (the scene to add).
+std::string plan_run_command(TempDir& d) {
+  return kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
+}
+
+// That plan run for 3 frames of its scene and walk, as planned (rep[0]) and with `set` (rep[1]), each losing nothing.
+void run_plan_both_ways(TempDir& d, const std::string& set, nlohmann::json (&rep)[2]) {
+  const std::string run = plan_run_command(d);
+  for (int k = 0; k < 2; ++k) {
+    const std::string j = d.file("both" + std::to_string(k) + ".json");
+    const auto o = run_command(run + " --scene " + d.file("far.json") + (k ? " --set " + set : "") + " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    EXPECT_EQ(o.output.find("were lost"), std::string::npos) << o.output;
+    rep[k] = test::load_json(j);
+  }
+}
+
 // Elaboration follows the plan: the faces it leaves out are not in the memory -- the same frames, the
 // footprint smaller by their share (checked against the closed form and the tiles allocated) -- and a
 // run that draws on them (another scene) loses those texels and says so once. (Whole faces: the tiles
@@ -601,15 +618,9 @@ TEST(PlanCli, TheFacesAPlanLeavesOutAreNotModelled) {
   const dp::ArpConfig c = config::load_file(d.file("plan.json"));
   ASSERT_EQ(c.memory.faces, (std::array<int, 6>{0, 0, 0, 0, 0, 1}));
   EXPECT_TRUE(std::filesystem::is_regular_file(d.file("plan.tiles.png")));  // the tile picture beside the plan
-  const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
+  const std::string run = plan_run_command(d);
   nlohmann::json rep[2];
-  for (int whole = 0; whole < 2; ++whole) {
-    const std::string j = d.file("r" + std::to_string(whole) + ".json");
-    const auto o = run_command(run + " --scene " + d.file("far.json") + (whole ? " --set memory.faces=[1,1,1,1,1,1]" : "") + " --report " + j);
-    ASSERT_EQ(o.status, 0) << o.output;
-    EXPECT_EQ(o.output.find("were lost"), std::string::npos) << o.output;
-    rep[whole] = test::load_json(j);
-  }
+  run_plan_both_ways(d, "memory.faces=[1,1,1,1,1,1]", rep);
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
   const nlohmann::json& fp = rep[0]["footprint"];
   const int64_t S = c.memory.face_size, hw_bits = 2 * c.memory.count * 2 * 1 * S * S * (24 + c.memory.depth_bits), hw = hw_bits / 8;
@@ -670,15 +681,9 @@ TEST(PlanCli, TheTilesAPlanLeavesOutAreNotModelled) {
   EXPECT_LT(held, T * T);  // on the one face present, part of it
   EXPECT_NE(read_text(d.file("plan.md")).find("| memory.tiles | memory 0: " + std::to_string(held) + " of " + std::to_string(T * T) + " tiles"),
             std::string::npos) << read_text(d.file("plan.md"));
-  const std::string run = kArpsim + " run -q --frames 3 --every 0 --error-every 0 --config " + d.file("plan.json") + " --walk " + d.file("walk.json");
+  const std::string run = plan_run_command(d);
   nlohmann::json rep[2];
-  for (int every = 0; every < 2; ++every) {
-    const std::string j = d.file("t" + std::to_string(every) + ".json");
-    const auto o = run_command(run + " --scene " + d.file("far.json") + (every ? " --set memory.tiles=[]" : "") + " --report " + j);
-    ASSERT_EQ(o.status, 0) << o.output;
-    EXPECT_EQ(o.output.find("were lost"), std::string::npos) << o.output;
-    rep[every] = test::load_json(j);
-  }
+  run_plan_both_ways(d, "memory.tiles=[]", rep);
   EXPECT_EQ(rep[0]["frames"], rep[1]["frames"]);
   const nlohmann::json& fp = rep[0]["footprint"];
   EXPECT_EQ(fp["texels_lost_off_tiles"], 0);
