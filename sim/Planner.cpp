@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 #include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
@@ -347,6 +348,39 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   return out;
 }
 
+// The tiles each memory of `c` holds for a tile bound: only those it can be drawn on where that takes less
+// than whole faces (and `tile_sparse`), every tile of the faces present otherwise (a memory drawn on nearly
+// everywhere would pay for whole 32 x 32 slots and a tile table for little; one no object reaches keeps its
+// faces, as an empty scene keeps the cube). `texts` is memory.tiles (empty: every memory whole).
+struct HeldTiles {
+  std::vector<std::string> texts;
+  std::vector<bool> sparse;  // per memory
+};
+HeldTiles held_tiles(const dp::ArpConfig& c, const TileBound& b, bool tile_sparse) {
+  HeldTiles out;
+  bool any = false;
+  for (size_t m = 0; m < b.maps.size(); ++m) {
+    const int64_t reach = b.per_memory[m];
+    const bool sparse = tile_sparse && reach > 0 && tiles_take_less(c, reach);
+    any |= sparse;
+    out.sparse.push_back(sparse);
+    dp::TileMap held = b.maps[m];
+    if (!sparse)
+      for (int f = 0; f < 6; ++f)
+        for (int ty = 0; ty < b.tiles_per_row; ++ty)
+          for (int tx = 0; tx < b.tiles_per_row; ++tx) held.set(f, tx, ty, c.memory.faces[static_cast<size_t>(f)] != 0);
+    out.texts.push_back(held.text());
+  }
+  if (!any) out.texts.clear();
+  return out;
+}
+
+// `c`'s hardware display memory holding the tiles of `b` as held_tiles puts them.
+int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse) {
+  c.memory.tiles = held_tiles(c, b, tile_sparse).texts;
+  return display_memory_bytes(c);
+}
+
 std::string ladder_text(const LadderLoad& L) {
   std::string s = std::to_string(L.count) + (L.count == 1 ? " memory" : " memories") + " every ";
   for (int m = 0; m < L.count; ++m)
@@ -559,26 +593,43 @@ Plan make_plan(const PlanRequest& r) {
                    candidates.end());
   // Only the ladders within the memory limit (--memory-limit; by default the starting configuration's display
   // memory): a ladder's hardware figure at the planned face size and faces, with the depth code it would
-  // start from (the planned ladder's may narrow after, never widen). None: an error naming the least.
-  auto ladder_bytes = [&](const LadderLoad& L) { return ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base)); };
-  // (The default limits the ladder, not the face size: where even the smallest ladder at the planned face
-  // size takes more than the starting configuration, the limit is that ladder's.)
+  // start from (the planned ladder's may narrow after, never widen) -- as whole faces, or, where those are
+  // over the limit, as it would be planned: each memory holding only the tiles its objects can be drawn on
+  // over the motion where that takes less (item 5 below; not with --whole-faces). None: an error naming the
+  // least. (The default limits the ladder, not the face size: where even the smallest ladder at the planned
+  // face size takes more than the starting configuration, the limit is that ladder's.)
   const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(base_whole)) / 1048576.0);
+  std::map<std::array<int, 3>, TileBound> bounds;  // by ladder: the tile bounds worked out (the planned one's reused)
+  const auto ladder_key = [](const LadderLoad& L) { return std::array<int, 3>{L.count, L.update_frames, L.update_ratio}; };
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
-    const auto least = *std::min_element(candidates.begin(), candidates.end(),
-                                         [&](const LadderLoad& a, const LadderLoad& b) { return ladder_bytes(a) < ladder_bytes(b); });
-    if (!r.memory_limit_mib) p.memory_limit_bytes = std::max(p.memory_limit_bytes, ladder_bytes(least));
-    if (ladder_bytes(least) > p.memory_limit_bytes)  // (only a limit given: the default is at least the least's)
+    progress(0.98, "bounding the tiles drawn on");
+    for (LadderLoad& L : candidates) {
+      L.memory_bytes_whole = ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base));
+      if (!r.tile_sparse || L.memory_bytes_whole <= p.memory_limit_bytes) continue;
+      const TileBound& b = bounds[ladder_key(L)] = bound_tiles(scene, walk, ms, hz, p.threshold_rad, L, p.config.memory, margin, near_m);
+      dp::ArpConfig c = p.config;
+      c.memory.count = L.count;
+      c.memory.depth_bits = depth_bits_for(L.count, r.base);
+      L.memory_bytes_tiled = bytes_as_planned(c, b, true);
+    }
+    const auto least = *std::min_element(candidates.begin(), candidates.end(), [](const LadderLoad& a, const LadderLoad& b) {
+      return a.memory_bytes_weighed() < b.memory_bytes_weighed();
+    });
+    if (!r.memory_limit_mib) p.memory_limit_bytes = std::max(p.memory_limit_bytes, least.memory_bytes_weighed());
+    if (least.memory_bytes_weighed() > p.memory_limit_bytes)  // (only a limit given: the default is at least the least's)
       throw InputError("--memory-limit", fmt("%g", limit_mib),
                        "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
-                           fmt("%.1f", static_cast<double>(ladder_bytes(least)) / 1048576.0) + " MiB (" + ladder_text(least) + ")");
+                           fmt("%.1f", static_cast<double>(least.memory_bytes_weighed()) / 1048576.0) + " MiB (" + ladder_text(least) +
+                           (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole ? ", tile-sparse" : "") + ")");
     const size_t before = candidates.size();
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                    [&](const LadderLoad& L) { return ladder_bytes(L) > p.memory_limit_bytes; }),
+                                    [&](const LadderLoad& L) { return L.memory_bytes_weighed() > p.memory_limit_bytes; }),
                      candidates.end());
     p.ladders_over_limit = static_cast<int>(before - candidates.size());
   }
+  for (LadderLoad& L : candidates)
+    if (L.memory_bytes_whole == 0) L.memory_bytes_whole = ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base));
   p.best = *std::min_element(candidates.begin(), candidates.end(),
                              [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
   p.planned = p.best;
@@ -609,6 +660,12 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.update_frames = p.planned.update_frames;
   p.config.memory.update_ratio = p.planned.update_ratio;
   p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
+  // The tiles of each planned memory any of its objects can be drawn on over the motion (item 5 below; bounded
+  // here, as the depth code's width is held to the memory limit with them).
+  if (const auto b = bounds.find(ladder_key(p.planned)); b != bounds.end())
+    p.tiles = b->second;
+  else
+    p.tiles = bound_tiles(scene, walk, ms, hz, p.threshold_rad, p.planned, p.config.memory, margin, near_m);
   // The depth code: with one memory only a written flag; with several, the narrowest that composes them
   // within the bound, measured.
   const auto texel_bits = [&] {
@@ -632,7 +689,7 @@ Plan make_plan(const PlanRequest& r) {
     while (p.memory_limit_bytes > 0 && top > base_bits) {
       dp::ArpConfig c = p.config;
       c.memory.depth_bits = top;
-      if (display_memory_bytes(c) <= p.memory_limit_bytes) break;
+      if (bytes_as_planned(c, p.tiles, r.tile_sparse) <= p.memory_limit_bytes) break;
       --top;
     }
     p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
@@ -674,7 +731,7 @@ Plan make_plan(const PlanRequest& r) {
                       std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4" +
                       (p.memory_limit_bytes > 0 ? ", the engine can carry, within " +
                                                       fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
-                                                      " MiB of display memory (--memory-limit" +
+                                                      " MiB of display memory" + (r.tile_sparse ? " (as whole faces, or as planned tile-sparse where those are over)" : "") + " (--memory-limit" +
                                                       (r.memory_limit_mib ? std::string(")")
                                                        : p.memory_limit_bytes > display_memory_bytes(base_whole)
                                                            ? ": the least any ladder takes at this face size, more than " + r.base_source + "'s)"
@@ -714,38 +771,25 @@ Plan make_plan(const PlanRequest& r) {
                                    "loses those texels and says so"});
   // 5. The tiles of each memory any of its objects can be drawn on over the motion: what a tile-sparse display
   // memory (a tile table per bank, and only those tiles' storage) needs for this scene and motion.
-  progress(0.97, "bounding the tiles drawn on");
-  p.tiles = bound_tiles(scene, walk, ms, hz, p.threshold_rad, p.planned, p.config.memory, margin, near_m);
   {
     std::vector<int64_t> banks;  // every eye's bank of each memory: the same bound
     for (int e = 0; e < p.config.timing.eyes; ++e) banks.insert(banks.end(), p.tiles.per_memory.begin(), p.tiles.per_memory.end());
     p.memory_bytes_tiled = display_memory_bytes_tiled(p.config, banks);
     p.memory_bytes_whole = display_memory_bytes(p.config);
-    // Memory by memory: only the tiles where that takes less than whole faces (a memory that can be drawn on
-    // nearly everywhere pays for whole 32 x 32 slots and a tile table for little), every tile otherwise.
+    // Memory by memory: only the tiles where that takes less than whole faces (held_tiles).
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
     const double whole_one = static_cast<double>(bank_bits_whole(p.config)) / 8;  // one eye's bank, whole faces
-    std::vector<std::string> texts;
+    const HeldTiles held = held_tiles(p.config, p.tiles, r.tile_sparse);
     std::string value;
-    bool any = false;
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
       const int64_t reach = p.tiles.per_memory[m];
       const double tiled_one = static_cast<double>(bank_bits_tiled(p.config, reach)) / 8;
-      // A memory no object reaches keeps its faces, as an empty scene keeps the whole cube (its background).
-      const bool sparse = r.tile_sparse && reach > 0 && tiles_take_less(p.config, reach);
-      any |= sparse;
-      dp::TileMap held = p.tiles.maps[m];
-      if (!sparse)
-        for (int f = 0; f < 6; ++f)
-          for (int ty = 0; ty < p.tiles.tiles_per_row; ++ty)
-            for (int tx = 0; tx < p.tiles.tiles_per_row; ++tx) held.set(f, tx, ty, p.config.memory.faces[static_cast<size_t>(f)] != 0);
-      texts.push_back(held.text());
       value += (m ? "; memory " : "memory ") + std::to_string(m) + ": " +
-               (sparse ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
-                       : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
+               (held.sparse[m] ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
+                               : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
                " (" + fmt("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + fmt("%.1f", whole_one / 1048576.0) + " whole)";
     }
-    if (any) p.config.memory.tiles = texts;
+    p.config.memory.tiles = held.texts;
     p.choices.push_back(
         {"memory.tiles", value,
          "each memory's objects' boxes (grown as for the faces above, and by how far an animated object moves in a sample "
@@ -855,18 +899,24 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += "\nMean objects in each planned memory:";
   for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
-       "(host::PriorityScheduler), hardware display memory at the planned face size.\n\n"
-       "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | display memory, MiB |\n"
-       "| --- | --- | --- | --- | --- | --- | --- |\n";
+       "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as held -- where "
+       "whole faces are over the memory limit, each memory holding only the tiles its objects can be drawn on over the "
+       "motion where that takes less (the planned ladder: as planned, at its depth code). Ladders the engine cannot "
+       "carry, or over the limit either way, are not listed.\n\n"
+       "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
+       "display memory, whole faces, MiB | display memory as held, MiB |\n"
+       "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  const auto mib = [](int64_t b) { return fmt("%.1f", static_cast<double>(b) / 1048576.0); };
   for (const LadderLoad& L : p.ladders) {
     const bool planned =
         L.count == p.planned.count && L.update_frames == p.planned.update_frames && L.update_ratio == p.planned.update_ratio;
-    const int64_t bytes = ladder_memory_bytes(p.config, L, planned ? p.config.memory.depth_bits : depth_bits_for(L.count, r.base));
+    const int64_t whole = planned ? p.memory_bytes_whole : L.memory_bytes_whole;
+    const int64_t held = planned ? p.memory_bytes_planned : L.memory_bytes_weighed();
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
-         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " + fmt("%.1f", static_cast<double>(bytes) / 1048576.0) +
-         (planned ? " (planned)" : "") + " |\n";
+         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " +
+         mib(whole) + " | " + (held < whole ? mib(held) + " tile-sparse" : "whole faces") + (planned ? " (planned)" : "") + " |\n";
   }
   if (p.composition.points > 0) {
     s += "\n## The depth code's composition, by width\n\nThe share of the " + std::to_string(p.composition.composed) +

@@ -14,6 +14,7 @@
 //   several within a bound, measured (CompositionDepth).
 // What it does not decide yet is listed in the plan itself (Plan::not_decided).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -70,6 +71,14 @@ struct LadderLoad {
   double engine_busy = 0;
   double late_share = 0;          // object-samples whose memory updates slower than their validity needs
   std::vector<double> objects;    // mean objects in each memory
+  // Its hardware display memory at the planned face size and faces, with the depth code it is weighed at: as
+  // whole faces, and as it would be planned -- each memory holding only the tiles its objects can be drawn on
+  // over the motion where that takes less (0: not bounded, where whole faces are within the memory limit or
+  // the plan keeps whole faces). The memory limit holds the less of the two.
+  int64_t memory_bytes_whole = 0, memory_bytes_tiled = 0;
+  int64_t memory_bytes_weighed() const {
+    return memory_bytes_tiled > 0 ? std::min(memory_bytes_whole, memory_bytes_tiled) : memory_bytes_whole;
+  }
 };
 
 // The tiles of each planned memory that any of its objects can be drawn on over the motion (a bound for an
