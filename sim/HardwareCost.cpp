@@ -230,14 +230,27 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
 
 // Both buffers of n whole 32 x 32 slots, and a tile table for both buffers -- an entry per tile of each face
 // present, wide enough to number tiles 1 .. n and 0 for "absent".
-int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t n) {
-  constexpr int64_t kTile = dp::DisplayMemoryBank::kTile;
-  const int64_t bits = int64_t{c.memory.color_bits()} + c.memory.depth_bits;
+namespace {
+
+// A tile table's bits: an entry per tile of each face present, numbering `n` slots and "absent".
+int64_t tile_table_bits(const dp::ArpConfig& c, int64_t n) {
   const int64_t tpr = dp::DisplayMemoryBank::tiles_per_row_of(c.memory.face_size);
   int entry = 0;
   while ((int64_t{1} << entry) <= n) ++entry;
-  return 2 * n * kTile * kTile * bits + int64_t{c.memory.faces_present()} * tpr * tpr * entry;
+  return int64_t{c.memory.faces_present()} * tpr * tpr * entry;
 }
+
+// `n` tile slots' texels.
+int64_t slot_bits(const dp::ArpConfig& c, int64_t n) {
+  constexpr int64_t kTile = dp::DisplayMemoryBank::kTile;
+  return n * kTile * kTile * (int64_t{c.memory.color_bits()} + c.memory.depth_bits);
+}
+
+}  // namespace
+
+int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t n) { return 2 * slot_bits(c, n) + tile_table_bits(c, n); }
+
+int64_t bank_bits_pooled(const dp::ArpConfig& c, int64_t slots) { return slot_bits(c, slots) + 2 * tile_table_bits(c, slots); }
 
 namespace {
 
@@ -287,6 +300,13 @@ int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const std::vector<int
 }
 
 bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles) { return bank_bits_tiled(c, tiles) < bank_bits_whole(c); }
+
+int64_t display_memory_bytes_pooled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
+  int64_t bits = 0;
+  for (int e = 0; e < m.eyes(); ++e)
+    for (int k = 0; k < m.count(); ++k) bits += bank_bits_pooled(c, m.bank(e, k).tiles_most_at_once());
+  return (bits + 7) / 8;
+}
 
 int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m) {
   std::vector<int64_t> tiles;

@@ -64,6 +64,13 @@ int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemo
 int64_t bank_bits_whole(const dp::ArpConfig& c);
 int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t tiles);
 bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles);
+// One bank with a tile pool instead (costed by `arpsim plan`, not modelled): `slots` 32 x 32 tile slots shared by
+// the two buffers, each buffer's tiles allocated from them as it is drawn and freed when it is drawn again, and
+// a tile table per buffer (an entry per tile of each face present, wide enough to number the slots and
+// "absent"). Bits.
+int64_t bank_bits_pooled(const dp::ArpConfig& c, int64_t slots);
+// Every bank of `m` with a pool of the slots it needed at once in a run (tiles_most_at_once). Bytes, rounded up.
+int64_t display_memory_bytes_pooled(const dp::ArpConfig& c, const dp::DisplayMemorySet& m);
 
 // The most memory the model can take for a configuration: every display memory's tiles written (eyes x
 // memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces

@@ -318,6 +318,9 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   const double wait_s = 2.0 * static_cast<double>(dp::update_period_frames(L.update_frames, L.update_ratio, L.count - 1)) / hz;
   const size_t W = samples == 0 ? 0 : std::min(samples - 1, ms.step_s > 0 ? static_cast<size_t>(std::ceil(wait_s / ms.step_s)) : samples - 1);
   std::vector<int> in_window(n * M, 0);
+  // Tiles drawn on at each sample, per memory (for the pool's cost): a tile counted once a sample.
+  const size_t T2 = static_cast<size_t>(tpr) * static_cast<size_t>(tpr);
+  std::vector<int64_t> stamp(M * 6 * T2, -1), count(samples * M, 0);
   auto at = [&](size_t k, size_t back) { return ((k + samples - back % samples) % samples) * n; };  // sample k - back, round the walk
   for (size_t d = 1; d <= W && samples > 0; ++d)
     for (size_t i = 0; i < n; ++i) ++in_window[i * M + static_cast<size_t>(desired[at(0, d) + i])];
@@ -337,6 +340,11 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
         for (size_t m = lo; m <= hi; ++m) {
           host::each_tile(rc, [&](int tx, int ty) {
             out.maps[m].set(f, tx, ty, true);
+            int64_t& st = stamp[(m * 6 + static_cast<size_t>(f)) * T2 + static_cast<size_t>(ty * tpr + tx)];
+            if (st != static_cast<int64_t>(k)) {
+              st = static_cast<int64_t>(k);
+              ++count[k * M + m];
+            }
             return true;
           });
         }
@@ -345,6 +353,17 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
     for (size_t i = 0; i < n; ++i) --in_window[i * M + static_cast<size_t>(desired[at(k, W) + i])];  // leaves the window
   }
   for (const auto& m : out.maps) out.per_memory.push_back(m.tiles());
+  // The pool: an image's tiles and those of the one drawn an update period before (round the walk, as above).
+  out.at_once.assign(M, 0);
+  out.pooled.assign(M, 0);
+  for (size_t m = 0; m < M && samples > 0; ++m) {
+    const double period_s = static_cast<double>(dp::update_period_frames(L.update_frames, L.update_ratio, static_cast<int>(m))) / hz;
+    const size_t P = ms.step_s > 0 ? static_cast<size_t>(std::ceil(period_s / ms.step_s - 1e-9)) % samples : 0;
+    for (size_t k = 0; k < samples; ++k) {
+      out.at_once[m] = std::max(out.at_once[m], count[k * M + m]);
+      out.pooled[m] = std::max(out.pooled[m], count[k * M + m] + count[((k + samples - P) % samples) * M + m]);
+    }
+  }
   return out;
 }
 
@@ -781,14 +800,21 @@ Plan make_plan(const PlanRequest& r) {
     const double whole_one = static_cast<double>(bank_bits_whole(p.config)) / 8;  // one eye's bank, whole faces
     const HeldTiles held = held_tiles(p.config, p.tiles, r.tile_sparse);
     std::string value;
+    int64_t pooled_bits = 0;  // one eye's banks with a tile pool where that takes less (costed, not modelled)
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
       const int64_t reach = p.tiles.per_memory[m];
       const double tiled_one = static_cast<double>(bank_bits_tiled(p.config, reach)) / 8;
       value += (m ? "; memory " : "memory ") + std::to_string(m) + ": " +
                (held.sparse[m] ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
                                : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
-               " (" + fmt("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + fmt("%.1f", whole_one / 1048576.0) + " whole)";
+               " (" + fmt("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + fmt("%.1f", whole_one / 1048576.0) + " whole" +
+               (reach > 0 ? "; at most " + std::to_string(p.tiles.at_once[m]) + " at once, a pool of " + std::to_string(p.tiles.pooled[m]) +
+                                " slots " + fmt("%.1f", static_cast<double>(bank_bits_pooled(p.config, p.tiles.pooled[m])) / 8 / 1048576.0) + " MiB"
+                          : std::string()) + ")";
+      const int64_t held_bits = held.sparse[m] ? bank_bits_tiled(p.config, reach) : bank_bits_whole(p.config);
+      pooled_bits += reach > 0 ? std::min(held_bits, bank_bits_pooled(p.config, p.tiles.pooled[m])) : held_bits;
     }
+    p.memory_bytes_pooled = (int64_t{p.config.timing.eyes} * pooled_bits + 7) / 8;
     p.config.memory.tiles = held.texts;
     p.choices.push_back(
         {"memory.tiles", value,
@@ -799,6 +825,10 @@ Plan make_plan(const PlanRequest& r) {
              (!r.tile_sparse ? std::string(" (--whole-faces: every tile everywhere)") : std::string()) + "; all memories " +
              fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) + " MiB against " +
              fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces. "
+             "A tile pool per bank instead (slots both buffers share, a tile allocated as it is drawn and freed when its "
+             "buffer is drawn again; costed here, not modelled) would need, per memory, the most tiles drawn on at one point of "
+             "the motion and one update period before together: " +
+             fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes less. "
              "A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
              "footprint.texels_lost_off_tiles, and the run warns); its report gives the tiles it drew on, every eye's banks "
@@ -890,6 +920,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " |\n";
   s += "| display memory, tile-sparse (the tiles the motion can draw on, MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
+  s += "| display memory with a tile pool per bank (costed, not modelled, MiB) | | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " |\n";
   s += "| display memory as planned (" + std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") + ", hardware, MiB) | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";

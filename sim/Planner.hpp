@@ -89,6 +89,10 @@ struct TileBound {
   // they take less memory than whole faces.
   std::vector<dp::TileMap> maps;
   std::vector<int64_t> per_memory;  // tiles of one eye's bank of each memory (each eye's is bounded alike)
+  // A tile pool instead (costed by the plan, not modelled), per memory: the most tiles its objects can be drawn
+  // on at one sample of the motion (one image's: `at_once`), and at one sample and one update period before
+  // together (the image being drawn and the one shown: `pooled`, slots a pool both buffers share would need).
+  std::vector<int64_t> at_once, pooled;
   bool reachable(int memory, int face, int tx, int ty) const { return maps[static_cast<size_t>(memory)].has(face, tx, ty); }
 };
 
@@ -125,6 +129,9 @@ struct Plan {
   // The tiles drawn on (a tile-sparse display memory's storage and tile tables, every eye)
   TileBound tiles;
   int64_t memory_bytes_tiled = 0;
+  // The same memories each bank with a tile pool of tiles.pooled slots where that takes less than its tiles or
+  // whole faces (bank_bits_pooled; costed, not modelled), every eye.
+  int64_t memory_bytes_pooled = 0;
 };
 
 // InputError for a bad request (no scene, a bound no widths meet -- naming the best achievable).

@@ -168,9 +168,10 @@ std::vector<std::string> RunSummary::lines() const {
                      wall_seconds, wall_seconds > 0 ? static_cast<double>(pixel_clocks) / wall_seconds * 1e-6 : 0.0,
                      static_cast<double>(peak_resident_bytes()) / (1 << 20)));
   out.push_back(line("  modelled: display memory %.1f MiB allocated at the peak (the hardware holds %.1f MiB; %.1f MiB in the "
-                     "tiles drawn on), %" PRId64 " banks, %" PRId64 " texels written, %" PRId64 " SystemC modules",
+                     "tiles drawn on, %.1f MiB with a tile pool of those in use at once), %" PRId64 " banks, %" PRId64 " texels written, %" PRId64 " SystemC modules",
                      static_cast<double>(memory_bytes_peak) / (1 << 20), static_cast<double>(memory_bytes_hardware) / (1 << 20),
-                     static_cast<double>(memory_bytes_hardware_tiled) / (1 << 20), memory_banks, texels_written,
+                     static_cast<double>(memory_bytes_hardware_tiled) / (1 << 20),
+                     static_cast<double>(memory_bytes_hardware_pooled) / (1 << 20), memory_banks, texels_written,
                      systemc_modules));
   if (images) out.push_back(line("  %" PRId64 " images in %s", images, out_dir.c_str()));
   if (!vcd.empty()) out.push_back(line("  waveform %s (open: gtkwave %s %s)", vcd.c_str(), vcd.c_str(), gtkw.c_str()));

@@ -30,6 +30,7 @@ struct RunSummary {
   // memory allocated at its peak and what the configuration's hardware holds, banks, texels the host stored.
   int64_t systemc_modules = 0, memory_bytes_peak = 0, memory_bytes_hardware = 0, memory_banks = 0, texels_written = 0;
   int64_t memory_bytes_hardware_tiled = 0;  // the hardware holding only the tiles drawn on (display_memory_bytes_tiled)
+  int64_t memory_bytes_hardware_pooled = 0;  // with a tile pool per bank of the tiles in use at once (display_memory_bytes_pooled)
   double wall_seconds = 0;
   int64_t images = 0;
   std::string out_dir, vcd, gtkw;

@@ -756,6 +756,7 @@ RunSummary Session::run() {
   s.memory_bytes_peak = static_cast<int64_t>(std::max(memory_peak_bytes_, memories_.bytes_allocated()));
   s.memory_bytes_hardware = display_memory_bytes(spec_.config);
   s.memory_bytes_hardware_tiled = display_memory_bytes_tiled(spec_.config, memories_);
+  s.memory_bytes_hardware_pooled = display_memory_bytes_pooled(spec_.config, memories_);
   s.memory_banks = memories_.eyes() * memories_.count();
   s.texels_written = memories_.texels_written();
   s.pixel_clocks = res.end_cycle - res.first_cycle;
@@ -845,7 +846,11 @@ RunSummary Session::run() {
   // drew on faces and tiles the configuration leaves out and stored on the others, the banks (eyes x memories) and the
   // SystemC modules elaborated.
   nlohmann::json tiles_drawn_on = nlohmann::json::array();  // per memory, every eye's bank
-  for (int k = 0; k < memories_.count(); ++k) tiles_drawn_on.push_back(memories_.tiles_ever_written(k));
+  nlohmann::json most_at_once = nlohmann::json::array();  // per memory, the most of its banks
+  for (int k = 0; k < memories_.count(); ++k) {
+    tiles_drawn_on.push_back(memories_.tiles_ever_written(k));
+    most_at_once.push_back(memories_.tiles_most_at_once(k));
+  }
   r["footprint"] = {{"display_memory_bytes_peak", s.memory_bytes_peak},
                     {"display_memory_tiles_at_end", memories_.tiles_allocated()},
                     {"display_memory_faces", spec_.config.memory.faces_present()},
@@ -856,7 +861,9 @@ RunSummary Session::run() {
                     {"systemc_modules", s.systemc_modules},
                     {"display_memory_bytes_hardware", s.memory_bytes_hardware},
                     {"display_memory_tiles_drawn_on", tiles_drawn_on},
-                    {"display_memory_bytes_hardware_tiled", s.memory_bytes_hardware_tiled}};
+                    {"display_memory_bytes_hardware_tiled", s.memory_bytes_hardware_tiled},
+                    {"display_memory_tiles_most_at_once", most_at_once},
+                    {"display_memory_bytes_hardware_pooled", s.memory_bytes_hardware_pooled}};
   if (trace_summary_) {
     const tracker::MotionSummary& m = *trace_summary_;
     r["trace"] = {{"samples", m.samples},           {"rate_hz", m.rate_hz()},       {"gaps", m.gaps},

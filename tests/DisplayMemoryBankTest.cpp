@@ -314,6 +314,55 @@ TEST(DisplayMemoryBank, TheTilesDrawnOnAreThoseWhoseOwnTexelsWereWritten) {
   }
 }
 
+// The most tiles in use at once -- own texels written, the two buffers together -- is what a tile pool both
+// buffers share would need: an image of 3 tiles shown while the next, of 4 (one the same tile), is drawn
+// needs 7 slots; a buffer cleared frees its tiles; a tile allocated only for its apron takes none; a texel
+// written twice, or a tile written again in the same buffer, counts once. Texel by texel and a face at a time.
+TEST(DisplayMemoryBank, TheMostTilesAtOnceAreBothBuffersOwnTiles) {
+  MemoryFormat f;
+  f.face_size = 100;  // 4 tiles a row
+  for (const bool whole_face : {false, true}) {
+    DisplayMemoryBank b{f};
+    auto draw = [&](const std::vector<std::array<int, 3>>& texels) {  // (face, x, y)
+      if (!whole_face) {
+        for (const auto& [fc, x, y] : texels) b.write(fc, x, y, 7, 5);
+        return;
+      }
+      std::array<std::vector<uint64_t>, 6> faces;
+      for (auto& w : faces) w.assign(100 * 100, ~uint64_t{0});
+      for (const auto& [fc, x, y] : texels) faces[static_cast<size_t>(fc)][static_cast<size_t>(y * 100 + x)] = (uint64_t{5} << 32) | 7;
+      for (int fc = 0; fc < 6; ++fc) b.write_face(fc, faces[static_cast<size_t>(fc)].data(), ~uint64_t{0});
+    };
+    // Image 1: tiles (1,0) of face 1 (its left neighbour (0,0) allocated for the apron only), (3,3) of face 1 and
+    // (0,0) of face 4.
+    draw({{1, 32, 0}, {1, 99, 99}, {1, 98, 99}, {4, 5, 5}});
+    EXPECT_EQ(b.tiles_most_at_once(), 3) << whole_face;
+    b.commit();
+    b.vblank();
+    // Image 2 in the other buffer: (1,0) of face 1 again, (2,2) of face 1 (with its three apron neighbours),
+    // (0,0) of faces 2 and 3.
+    b.clear_back();
+    draw({{1, 40, 10}, {1, 64, 64}, {2, 0, 0}, {3, 31, 31}});
+    EXPECT_EQ(b.tiles_most_at_once(), 7) << whole_face;
+    draw({{1, 41, 11}, {2, 1, 1}});  // tiles this buffer has
+    EXPECT_EQ(b.tiles_most_at_once(), 7) << whole_face;
+    b.commit();
+    b.vblank();
+    // Image 3 where image 1 was: cleared first, so 4 + 1 at most.
+    b.clear_back();
+    draw({{5, 50, 50}});
+    EXPECT_EQ(b.tiles_most_at_once(), 7) << whole_face;
+    EXPECT_EQ(b.tiles_ever_written(), 3 + 3 + 1) << whole_face;
+    // Without clearing, a buffer keeps its tiles: image 4 over image 2's 4 tiles, 1 new: 1 + 5.
+    b.commit();
+    b.vblank();
+    draw({{0, 0, 0}});
+    EXPECT_EQ(b.tiles_most_at_once(), 7) << whole_face;
+    draw({{0, 40, 0}, {0, 80, 0}});
+    EXPECT_EQ(b.tiles_most_at_once(), 8) << whole_face;
+  }
+}
+
 // A bank holding only some tiles (memory.tiles) stores what a bank holding every tile stores when the texels
 // on the tiles it does not hold are never drawn: the same tiles and words, aprons included (a held tile's
 // apron does not copy a neighbour it does not hold), written a face at a time or texel by texel. The texels

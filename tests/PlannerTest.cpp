@@ -1053,6 +1053,25 @@ TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
       bits += 2 * t * 1024 * (24 + p.config.memory.depth_bits) +
               int64_t{p.config.memory.faces_present()} * tpr * tpr * static_cast<int64_t>(std::ceil(std::log2(static_cast<double>(t) + 1)));
   EXPECT_EQ(p.memory_bytes_tiled, (bits + 7) / 8);
+  // The tile pool the plan costs: no fewer slots than the run's banks had in use at once (both buffers), nor
+  // more than both buffers of the bound; one image no more than the bound.
+  for (int m = 0; m < p.config.memory.count; ++m) {
+    const size_t k = static_cast<size_t>(m);
+    EXPECT_GE(p.tiles.pooled[k], mem.tiles_most_at_once(m)) << m;
+    EXPECT_LE(p.tiles.pooled[k], 2 * p.tiles.per_memory[k]) << m;
+    EXPECT_LE(p.tiles.at_once[k], p.tiles.per_memory[k]) << m;
+    EXPECT_GE(p.tiles.pooled[k], p.tiles.at_once[k]) << m;
+    EXPECT_GT(mem.tiles_most_at_once(m), 0) << m;
+  }
+  // The run's own pool figure: every bank's slots in use at once in closed form.
+  int64_t pooled_bits = 0;
+  for (int e = 0; e < mem.eyes(); ++e)
+    for (int m = 0; m < p.config.memory.count; ++m) {
+      const int64_t n = mem.bank(e, m).tiles_most_at_once();
+      pooled_bits += n * 1024 * (24 + p.config.memory.depth_bits) +
+                     2 * int64_t{p.config.memory.faces_present()} * tpr * tpr * static_cast<int64_t>(std::ceil(std::log2(static_cast<double>(n) + 1)));
+    }
+  EXPECT_EQ(display_memory_bytes_pooled(p.config, mem), (pooled_bits + 7) / 8);
   // The picture: a row of six faces for each memory, a reachable tile light and another dark.
   const host::RgbImage img = plan_tiles_image(p);
   const int face_px = tpr * kTilePixels;
@@ -1116,6 +1135,11 @@ TEST(Planner, ATileSparseMemorysBytesAreItsTilesTwiceAndOneTable) {
   EXPECT_EQ(tiles_held(c, 1), 1);
   c.memory.tiles = {"64:*/*/*/*/*/*", "64:*/*/*/*/*/*"};  // every tile: whole faces, as with no list
   EXPECT_EQ(display_memory_bytes(c), 2 * 2 * 2 * 6 * 64 * 64 * 40 / 8);
+  // A tile pool: its slots once (the buffers share them) and a table per buffer -- at 512 texels, 5 slots
+  // take 5 x 1024 x 40 bits and two tables of 6 x 16 x 16 entries of 3 bits (1 .. 5 and absent).
+  c = dp::ArpConfig{};
+  EXPECT_EQ(bank_bits_pooled(c, 5), 5 * 1024 * 40 + 2 * 6 * 16 * 16 * 3);
+  EXPECT_EQ(bank_bits_pooled(c, 0), 0);
 }
 
 }  // namespace

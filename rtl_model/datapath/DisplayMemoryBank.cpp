@@ -85,17 +85,25 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   }
   ++written_;
   put(face, tx, ty, lx, ly, word);
-  mark_ever(face, tx, ty);
+  mark_own(face, tx, ty);
   // The texel also stands in the aprons of the tiles to its left, above, and above-left.
   if (lx == 0 && tx > 0) put(face, tx - 1, ty, kTile, ly, word);
   if (ly == 0 && ty > 0) put(face, tx, ty - 1, lx, kTile, word);
   if (lx == 0 && ly == 0 && tx > 0 && ty > 0) put(face, tx - 1, ty - 1, kTile, kTile, word);
 }
 
-void DisplayMemoryBank::mark_ever(int face, int tx, int ty) {
+void DisplayMemoryBank::mark_own(int face, int tx, int ty) {
+  const size_t tiles = static_cast<size_t>(tiles_per_row_) * static_cast<size_t>(tiles_per_row_), k = static_cast<size_t>(ty * tiles_per_row_ + tx);
   auto& e = ever_[static_cast<size_t>(face)];
-  if (e.empty()) e.assign(static_cast<size_t>(tiles_per_row_) * static_cast<size_t>(tiles_per_row_), 0);
-  e[static_cast<size_t>(ty * tiles_per_row_ + tx)] = 1;
+  if (e.empty()) e.assign(tiles, 0);
+  e[k] = 1;
+  Buffer& b = buffers_[back_];
+  auto& o = b.own[static_cast<size_t>(face)];
+  if (o.empty()) o.assign(tiles, 0);
+  if (o[k]) return;
+  o[k] = 1;
+  ++b.own_tiles;
+  most_at_once_ = std::max(most_at_once_, buffers_[0].own_tiles + buffers_[1].own_tiles);
 }
 
 int64_t DisplayMemoryBank::tiles_ever_written() const {
@@ -186,7 +194,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   }
   int64_t stored = 0, lost = 0, lost_off = 0;
   std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
-  std::vector<std::array<int, 3>> drawn;  // (face, tx, ty) of the tiles whose own texels are written for the first time
+  std::vector<std::array<int, 3>> drawn;  // (face, tx, ty) of the tiles whose own texels are written in this buffer anew
   for (size_t f = 0; f < 6; ++f) {
     if (!words[f]) continue;
     if (!fmt_.present[f]) {
@@ -206,7 +214,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
     const int32_t* table = index(back_, static_cast<int>(f));
     for (int ty = 0; ty < tiles_per_row_; ++ty)
       for (int tx = 0; tx < tiles_per_row_; ++tx) {
-        const bool unallocated = table[ty * tiles_per_row_ + tx] == 0, unmarked = !tile_ever_written(static_cast<int>(f), tx, ty);
+        const bool unallocated = table[ty * tiles_per_row_ + tx] == 0, unmarked = !own_here(static_cast<int>(f), tx, ty);
         if (!unallocated && !unmarked) continue;
         // Its own texels once; the apron (the next tile's first column and row) only if they are all skipped.
         const bool own = holds(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip);
@@ -222,7 +230,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   const size_t need = std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords;
   if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
-  for (const auto& t : drawn) mark_ever(t[0], t[1], t[2]);
+  for (const auto& t : drawn) mark_own(t[0], t[1], t[2]);
   lost_ += lost;  // last: a failed allocation above leaves the counts as they were
   lost_tiles_ += lost_off;
   written_ += stored;
@@ -284,6 +292,8 @@ void DisplayMemoryBank::clear_back() {
   Buffer& b = buffers_[back_];
   for (auto& t : b.index) std::vector<int32_t>().swap(t);
   std::vector<uint64_t>().swap(b.pool);
+  for (auto& o : b.own) std::fill(o.begin(), o.end(), uint8_t{0});
+  b.own_tiles = 0;
 }
 
 bool DisplayMemoryBank::vblank() {
@@ -347,6 +357,12 @@ int64_t DisplayMemorySet::writes_lost_off_tiles() const {
 int64_t DisplayMemorySet::tiles_ever_written(int memory) const {
   int64_t n = 0;
   for (int e = 0; e < eyes_; ++e) n += bank(e, memory).tiles_ever_written();
+  return n;
+}
+
+int64_t DisplayMemorySet::tiles_most_at_once(int memory) const {
+  int64_t n = 0;
+  for (int e = 0; e < eyes_; ++e) n = std::max(n, bank(e, memory).tiles_most_at_once());
   return n;
 }
 

@@ -116,6 +116,9 @@ class DisplayMemoryBank {
     return !e.empty() && e[static_cast<size_t>(ty * tiles_per_row_ + tx)] != 0;
   }
   int64_t tiles_ever_written() const;
+  // The most tiles whose own texels were written, the two buffers together, at any time in the run: the slots
+  // a tile pool both buffers share would need for what this run drew (a tile leaves a buffer when it is cleared).
+  int64_t tiles_most_at_once() const { return most_at_once_; }
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
@@ -145,7 +148,13 @@ class DisplayMemoryBank {
   struct Buffer {
     std::array<std::vector<int32_t>, 6> index;  // empty vector: face never written
     std::vector<uint64_t> pool;                 // empty until the first write; then tile 0 is the empty tile
+    std::array<std::vector<uint8_t>, 6> own;    // per face, row-major by tile: 1 once its own texels are written here
+    int64_t own_tiles = 0;                      // how many are 1
   };
+  bool own_here(int face, int tx, int ty) const {  // its own texels written in the back buffer
+    const auto& o = buffers_[back_].own[static_cast<size_t>(face)];
+    return !o.empty() && o[static_cast<size_t>(ty * tiles_per_row_ + tx)] != 0;
+  }
   const int32_t* index(int buf, int face) const {
     const auto& t = buffers_[buf].index[face];
     return t.empty() ? empty_index_.data() : t.data();
@@ -164,7 +173,7 @@ class DisplayMemoryBank {
   // Words of tiles the bank does not hold count as skipped, here and below.
   bool window_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const;
   void put(int face, int tx, int ty, int lx, int ly, uint64_t word);
-  void mark_ever(int face, int tx, int ty);
+  void mark_own(int face, int tx, int ty);  // its own texels written in the back buffer (and so ever)
   // Whether any of the S x S face `words`' own texels of tile (tx, ty) (no apron) is not `skip`.
   bool own_written(const uint64_t* words, int tx, int ty, uint64_t skip) const;
   bool apron_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const;
@@ -182,6 +191,7 @@ class DisplayMemoryBank {
   int64_t lost_ = 0;
   int64_t lost_tiles_ = 0;
   int64_t written_ = 0;
+  int64_t most_at_once_ = 0;
   std::array<std::vector<uint8_t>, 6> ever_;  // per face, row-major by tile: 1 once its own texels were written
   std::array<Buffer, 2> buffers_;
   int front_ = 0, back_ = 1;
@@ -208,6 +218,7 @@ class DisplayMemorySet {
   int64_t writes_lost_off_tiles() const;  // texels written to tiles not held (memory.tiles), every bank
   int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
   int64_t tiles_ever_written(int memory) const;  // DisplayMemoryBank::tiles_ever_written, memory's banks (every eye)
+  int64_t tiles_most_at_once(int memory) const;  // DisplayMemoryBank::tiles_most_at_once, the most of memory's banks
 
  private:
   MemoryFormat fmt_;
