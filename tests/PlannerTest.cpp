@@ -288,6 +288,36 @@ TEST(Planner, AMemoryDrawnOnEverywhereKeepsWholeFaces) {
   EXPECT_TRUE(make_plan(r).config.memory.tiles.empty());
 }
 
+// A memory drawn on nearly everywhere keeps whole faces: four walls 3 m around the walk, 12 m tall (6 m above
+// and below the eye), leave only the middle of the +Y and -Y faces -- where a ray goes up or down more than
+// twice as steeply as sideways -- unreached, a few tiles; a bank of that many tiles takes more than whole
+// faces (2 n 1024 bits a texel and a table against 2 x 6 S^2 bits a texel, worked here), so the plan lists no
+// tiles. (Seen failing with every memory made tile-sparse.)
+TEST(Planner, AMemoryDrawnOnNearlyEverywhereKeepsWholeFaces) {
+  TempDir d;
+  write(d.file("walls.json"), R"({"name": "walls", "objects": [
+      {"name": "east", "box": [0.1, 12, 6.2], "position": [3, 1.6, 0]},
+      {"name": "west", "box": [0.1, 12, 6.2], "position": [-3, 1.6, 0]},
+      {"name": "north", "box": [6.2, 12, 0.1], "position": [0, 1.6, -3]},
+      {"name": "south", "box": [6.2, 12, 0.1], "position": [0, 1.6, 3]}]})");
+  write(d.file("walk.json"), R"({"speed": 0.2, "points": [[0, 1.6, 0.1], [0, 1.6, -0.1]]})");
+  PlanRequest r = request(d.file("walls.json"), d.file("walk.json"));
+  r.size_widths = false;
+  const Plan p = make_plan(r);
+  const int64_t S = p.config.memory.face_size, T = (S + 31) / 32, bits = 24 + p.config.memory.depth_bits;
+  int64_t most = 0;  // the most tiles a bank can hold and take less than whole faces
+  for (int64_t n = 1; n < 6 * T * T; ++n) {
+    const int64_t entry = static_cast<int64_t>(std::ceil(std::log2(static_cast<double>(n) + 1)));
+    if (2 * n * 1024 * bits + 6 * T * T * entry < 2 * 6 * S * S * bits) most = n;
+  }
+  for (size_t m = 0; m < p.tiles.per_memory.size(); ++m) {
+    EXPECT_LT(p.tiles.per_memory[m], 6 * T * T) << m;  // not every tile...
+    EXPECT_GT(p.tiles.per_memory[m], most) << m;       // ...but too many to take less than whole faces
+  }
+  EXPECT_TRUE(p.config.memory.tiles.empty());
+  EXPECT_EQ(p.memory_bytes_planned, p.memory_bytes_whole);
+}
+
 // The ladders are held to the display-memory limit (by default the starting configuration's): the row of
 // balls, planned into several memories, gets one when the limit is one memory's hardware (2 eyes x 2
 // buffers x the faces present x S^2 x (24 + 1) bits), and is refused, naming the least, below it. As whole
