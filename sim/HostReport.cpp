@@ -41,8 +41,8 @@ nlohmann::json host_report(const host::HostSimulation& h, const RunSpec& spec, d
       {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0},
       {"host_wall_ms_per_frame", 1e3 * host_wall_s / static_cast<double>(spec.frames)}};
   if (regions)
-    r["regions"] = {{"size_m", hs.region_size},
-                    {"margin_m", hs.margin},
+    r["regions"] = {{"size_m", spec.config.memory.region_size_m},
+                    {"margin_m", spec.config.memory.region_margin_m},
                     {"shape", hs.region_cubes ? "cubes" : "columns"},
                     {"regions", grid->count()},
                     {"segmentation", hs.segmentation},

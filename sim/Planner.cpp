@@ -853,9 +853,18 @@ Plan make_plan(const PlanRequest& r) {
                        "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
                        "each inter-stage FIFO holds one token and the scan-out FIFO the issue slack and one (a cycle-level "
                        "run's report: fifos[].max_occupancy)"});
-  p.not_decided.push_back("the region size (--regions), and the host clock and the write port's bandwidth (timed.host_*): "
-                          "a run renders through the modelled engine (host.*), which the check above sizes, and uses the "
-                          "write port only for host write jobs");
+  // 6. Object-level priority: the ladder, the tiles and the depth code above are for it.
+  p.config.memory.region_size_m = 0;
+  p.config.memory.region_margin_m = dp::ArpConfig{}.memory.region_margin_m;
+  p.choices.push_back({"memory.region_size_m", "0",
+                       "object-level priority rendering (each object in the memory its own validity needs), which the ladder, "
+                       "tiles and depth code above are planned for" +
+                           (r.base.memory.region_size_m > 0 ? " (" + r.base_source + "'s region size " + fmt("%g", r.base.memory.region_size_m) +
+                                                                  " m is not planned for: a run by regions would not keep to the tiles)"
+                                                            : std::string())});
+  p.not_decided.push_back("the region size weighed against object-level priority (the plan keeps object-level), and the host "
+                          "clock and the write port's bandwidth (timed.host_*): a run renders through the modelled engine (host.*), "
+                          "which the check above sizes, and uses the write port only for host write jobs");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
                        "it carries the planned ladder: busy " + fmt("%.3g", p.planned.engine_busy) +
                            " s of each second (every object drawn for each eye at each update of its memory: its set-up, "

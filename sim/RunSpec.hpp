@@ -25,12 +25,15 @@ struct HostSpec {
   std::optional<double> threshold_deg;  // --threshold-deg: overrides memory.threshold_deg (theta_t)
   // --engine-triangles, --engine-fill, --engine-setup: override host.triangles_per_s, texels_per_s, object_setup_s
   std::optional<double> engine_triangles, engine_fill, engine_setup;
-  double region_size = 0;       // --regions, m (0: object-level)
-  double margin = 0.5;          // --margin, m
+  std::optional<double> region_size;  // --regions, m: overrides memory.region_size_m (0: object-level)
+  std::optional<double> margin;       // --margin, m: overrides memory.region_margin_m
   bool region_cubes = false;    // --region-cubes
   bool segmentation = true;     // not --no-segmentation
   bool warp = false;            // --warp
   double warp_falloff = 0;      // --warp-falloff, m (0: half a region)
+
+  // The region size a run renders by: --regions, else the configuration's memory.region_size_m (0: object-level).
+  double regions_m(const dp::ArpConfig& c) const { return region_size.value_or(c.memory.region_size_m); }
 
   // The walk named (InputError naming --speed for a speed out of range, or the walk file's own errors).
   host::WalkPath make_walk() const;

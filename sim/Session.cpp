@@ -120,11 +120,12 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     dp::ArpConfig t = s.config;
     set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);
   }
-  if (!o.tear_image.empty() && (h.region_size == 0 || o.error_every <= 0 || h.walk.empty()))
+  const double regions = h.regions_m(s.config);
+  if (!o.tear_image.empty() && (regions == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
-  if (h.region_cubes && h.region_size == 0) throw InputError("--region-cubes", "", "needs --regions SIZE");
+  if (h.region_cubes && regions == 0) throw InputError("--region-cubes", "", "needs --regions SIZE (or memory.region_size_m)");
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
-  if (h.warp && h.region_size == 0) throw InputError("--warp", "", "region warping needs --regions");
+  if (h.warp && regions == 0) throw InputError("--warp", "", "region warping needs --regions (or memory.region_size_m)");
   check_renderer(s.memories, s.config.memory.depth_bits);
   check_model_fits_memory(s.config, s.config_source, !s.memories.scene.empty(),
                           !s.memories.scene.empty() && !h.walk.empty() && o.error_every > 0 ? std::max(o.truth_face_size, 0) : -1);
@@ -160,7 +161,9 @@ Session::Session(RunSpec spec)
   }
   for (const auto& [option, key, value] : {std::tuple{"--engine-triangles", "host.triangles_per_s", spec_.host.engine_triangles},
                                            std::tuple{"--engine-fill", "host.texels_per_s", spec_.host.engine_fill},
-                                           std::tuple{"--engine-setup", "host.object_setup_s", spec_.host.engine_setup}})
+                                           std::tuple{"--engine-setup", "host.object_setup_s", spec_.host.engine_setup},
+                                           std::tuple{"--regions", "memory.region_size_m", spec_.host.region_size},
+                                           std::tuple{"--margin", "memory.region_margin_m", spec_.host.margin}})
     if (value) set_parameter(*dp::arp_parameters().find(key), nlohmann::json(*value), option, spec_.config);  // its declared range
   spec_.memories.expect_plan(spec_.config, spec_.config_source);
   if (!scm::parse(spec_.fidelity, fidelity_))
@@ -475,25 +478,27 @@ void Session::build_memories() {
     const dp::Quat& q = stream_[stream_.index_at(t_ps)].q;
     return glm::dquat(q.w, q.x, q.y, q.z);
   };
-  if (h.region_size != 0) {
+  const double region_m = c.memory.region_size_m;  // (--regions overrides it: the constructor)
+  const std::string region_source = h.region_size ? "--regions" : spec_.config_source + ": memory.region_size_m";
+  if (region_m != 0) {
     // Region priority rendering: the world in columns, large objects cut along them.
-    grid_ = std::make_unique<host::RegionGrid>(scene_->extent_min, scene_->extent_max, h.region_size, h.region_cubes, "--regions");
+    grid_ = std::make_unique<host::RegionGrid>(scene_->extent_min, scene_->extent_max, region_m, h.region_cubes, region_source);
     segmented_ = host::segment_scene(*scene_, *grid_, h.segmentation);
     scene_ = std::make_unique<host::Scene>(std::move(segmented_.scene));
     host::RegionConfig rc;
-    rc.region_size_m = h.region_size;
-    rc.margin_m = h.margin;
+    rc.region_size_m = region_m;
+    rc.margin_m = c.memory.region_margin_m;
     rc.memories = c.memory.count;
     rc.threshold_rad = pc.threshold_rad;
     regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(seconds_of(start_ps_)),
-                                                       "--margin");
+                                                       h.margin ? "--margin" : spec_.config_source + ": memory.region_margin_m");
   }
   host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
                                                  timing_.refresh_hz());
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);
-    if (!(h.warp_falloff >= 0) || h.warp_falloff > h.region_size) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
-    host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : h.region_size / 2);
+    if (!(h.warp_falloff >= 0) || h.warp_falloff > region_m) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
+    host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : region_m / 2);
   }
   if (spec_.memories.renderer != "software")
     host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads, spec_.memories.face_culling));

@@ -206,8 +206,8 @@ nlohmann::json measure_walk(const TradePoint& p, const dp::ArpConfig& c, const T
   RunSpec spec = walk_run(c, s.host_frames(), s.host_error_every(), scratch);
   spec.host.threshold_deg = p.theta_deg;
   if (p.region_m > 0) {
-    spec.host.region_size = p.region_m;
-    spec.host.margin = p.region_m / 8;  // as scripts/reproduce-chow2005.sh sweeps it
+    spec.config.memory.region_size_m = p.region_m;
+    spec.config.memory.region_margin_m = p.region_m / 8;  // as scripts/reproduce-chow2005.sh sweeps it
   }
   const SessionOutcome o = run_session(spec, progress);
   const nlohmann::json& h = o.report.at("host");

@@ -318,6 +318,21 @@ TEST(Planner, AMemoryDrawnOnNearlyEverywhereKeepsWholeFaces) {
   EXPECT_EQ(p.memory_bytes_planned, p.memory_bytes_whole);
 }
 
+// A plan is for object-level priority: a starting configuration rendering by regions (memory.region_size_m)
+// gets a plan rendering by objects, and says why -- its tiles would not be kept to by regions.
+TEST(Planner, APlanRendersByObjectsAndSaysSoForAConfigurationByRegions) {
+  TempDir d;
+  PlanRequest r = ball_row(d, 2, [](int i) { return -3.0 * (i + 1); }, 2, 1);
+  r.base.memory.region_size_m = 4;
+  r.base.memory.region_margin_m = 1;
+  const Plan p = make_plan(r);
+  EXPECT_EQ(p.config.memory.region_size_m, 0.0);
+  EXPECT_EQ(p.config.memory.region_margin_m, dp::ArpConfig{}.memory.region_margin_m);
+  bool said = false;
+  for (const PlanChoice& c : p.choices) said = said || (c.keys == "memory.region_size_m" && c.reason.find("4 m is not planned for") != std::string::npos);
+  EXPECT_TRUE(said);
+}
+
 // The ladders are held to the display-memory limit (by default the starting configuration's): the row of
 // balls, planned into several memories, gets one when the limit is one memory's hardware (2 eyes x 2
 // buffers x the faces present x S^2 x (24 + 1) bits), and is refused, naming the least, below it. As whole

@@ -592,6 +592,15 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_EQ(j["host"]["error"]["frames_measured"], 2);
   EXPECT_GT(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
   EXPECT_GT(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
+  EXPECT_EQ(j["config"]["memory"]["region_size_m"], 4.0);  // what ran: --regions sets the key
+  // The same from the configuration's keys (a plan's, or --set): the same run.
+  const auto jk = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --set memory.region_size_m=4 --warp --set memory.face_size=128",
+                               "k.json");
+  EXPECT_EQ(jk["host"]["mode"], "regions");
+  EXPECT_EQ(jk["config"], j["config"]);
+  for (const char* key : {"mean_tear_pixels", "mean_crack_pixels", "mean_psnr_db"}) EXPECT_EQ(jk["host"]["error"][key], j["host"]["error"][key]) << key;
+  EXPECT_EQ(jk["host"]["regions"], j["host"]["regions"]);
+  EXPECT_EQ(jk["host"]["triangles_per_s"], j["host"]["triangles_per_s"]);
   // Cubes for tall worlds, and the magnified tear at a place given by --tear-at.
   const auto jc = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --regions 2 --region-cubes --set memory.face_size=128"
                                  " --tear-image " + d.file("tear.png") + " --tear-at 3:1:100:200", "c.json");
@@ -607,7 +616,8 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
                                                          " --regions 4 --tear-image t.png --tear-at 1:0:0:0",
                                                          " --regions 4 --tear-image t.png --tear-at 0:0:9999:0",
                                                          " --regions 4 --tear-image t.png --tear-at 0:0:x:0",
-                                                         " --tear-image t.png"}) {
+                                                         " --tear-image t.png", " --set memory.region_size_m=4 --set memory.region_margin_m=3",
+                                                         " --set memory.region_size_m=-1", " --set memory.region_size_m=1000"}) {
     const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --scene gallery --walk gallery" + bad + " --report " +
                                d.file("bad.json"));
     EXPECT_EQ(e.status, 2) << bad << "\n" << e.output;

@@ -72,10 +72,11 @@ void add_host_options(CLI::App* cmd, RunArgs& a) {
   sim::HostSpec& h = a.spec.host;
   add_walk_options(*cmd, h.walk, h.walk_speed, h.threshold_deg);
   cmd->add_option("--regions", h.region_size,
-                  "With --walk: region priority rendering with square columns of this size, metres (0: object-level)")
-      ->capture_default_str();
-  cmd->add_option("--margin", h.margin, "--regions: how far into a new region before regions are re-assigned, metres")
-      ->capture_default_str();
+                  "With --walk: region priority rendering with square columns of this size, metres (0: object-level; "
+                  "default: the configuration's memory.region_size_m, 0)");
+  cmd->add_option("--margin", h.margin,
+                  "--regions: how far into a new region before regions are re-assigned, metres (default: the configuration's "
+                  "memory.region_margin_m, 0.5)");
   cmd->add_flag("--region-cubes", h.region_cubes, "--regions: cubes instead of columns, for tall worlds (objects are also cut along horizontal planes)");
   cmd->add_flag("--no-segmentation", a.no_segmentation, "--regions: do not cut large objects along region boundaries");
   cmd->add_flag("--warp", h.warp, "--regions: warp the regions' edges toward slower neighbours (hides tearing)");

@@ -136,6 +136,13 @@ ParameterTable<ArpConfig> make_parameters() {
            "priority rendering's threshold angle theta_t: an object is re-rendered before its image moves this far "
            "(0: one texel at a face's centre, 90 deg / face_size; arpsim plan records the one it planned for; "
            "--threshold-deg overrides)");
+  t.number("memory.region_size_m", [](auto& c) -> auto& { return c.memory.region_size_m; }, 0.0, 100000.0, "m",
+           "region priority rendering (Chow, Pose & Regan 2005) with a walk: the world cut into square columns of this size, "
+           "each region's objects in the memory of its ring around the user's region; 0: object-level priority "
+           "(--regions overrides; arpsim plan weighs it)");
+  t.number("memory.region_margin_m", [](auto& c) -> auto& { return c.memory.region_margin_m; }, 0.0, 100000.0, "m",
+           "region priority rendering: how far into a new region the user goes before regions are re-assigned, less than "
+           "the region size (--margin overrides)");
   // pipeline: latch, filtering and scan-out
   t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
            "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "

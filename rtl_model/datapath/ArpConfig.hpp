@@ -99,6 +99,10 @@ struct MemoryConfig {
   int update_frames = 1;
   int update_ratio = 2;
   double threshold_deg = 0;  // theta_t: an object is re-rendered before its image moves this far (0: one texel)
+  // Region priority rendering (Chow, Pose & Regan 2005) instead of object-level: the world cut into square
+  // columns of region_size_m (0: object-level), re-assigned once the user is region_margin_m inside a new one.
+  double region_size_m = 0;
+  double region_margin_m = 0.5;
   int color_bits() const { return red_bits + green_bits + blue_bits; }
   int faces_present() const {
     int n = 0;
