@@ -228,8 +228,6 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
                        " this machine has available: a smaller face size or fewer memories");
 }
 
-// Both buffers of n whole 32 x 32 slots, and a tile table for both buffers -- an entry per tile of each face
-// present, wide enough to number tiles 1 .. n and 0 for "absent".
 namespace {
 
 // A tile table's bits: an entry per tile of each face present, numbering `n` slots and "absent".

@@ -321,7 +321,8 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   // Tiles drawn on at each sample, per memory (for the pool's cost): a tile counted once a sample.
   const size_t T2 = static_cast<size_t>(tpr) * static_cast<size_t>(tpr);
   std::vector<int64_t> stamp(M * 6 * T2, -1), count(samples * M, 0);
-  auto at = [&](size_t k, size_t back) { return ((k + samples - back % samples) % samples) * n; };  // sample k - back, round the walk
+  auto ago = [&](size_t k, size_t back) { return (k + samples - back % samples) % samples; };  // sample k - back, round the walk
+  auto at = [&](size_t k, size_t back) { return ago(k, back) * n; };
   for (size_t d = 1; d <= W && samples > 0; ++d)
     for (size_t i = 0; i < n; ++i) ++in_window[i * M + static_cast<size_t>(desired[at(0, d) + i])];
   for (size_t k = 0; k < samples; ++k) {
@@ -353,15 +354,20 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
     for (size_t i = 0; i < n; ++i) --in_window[i * M + static_cast<size_t>(desired[at(k, W) + i])];  // leaves the window
   }
   for (const auto& m : out.maps) out.per_memory.push_back(m.tiles());
-  // The pool: an image's tiles and those of the one drawn an update period before (round the walk, as above).
+  // The pool: an image's tiles and those of the image shown while it is drawn -- drawn an update period
+  // before, or two where a render was skipped (its memory's last image not yet swapped in) or a swap waited for
+  // a slower memory (an object changing memory): the most of the samples one to two periods before, round the
+  // walk as above. More late renders in a row than that can take more.
   out.at_once.assign(M, 0);
   out.pooled.assign(M, 0);
   for (size_t m = 0; m < M && samples > 0; ++m) {
     const double period_s = static_cast<double>(dp::update_period_frames(L.update_frames, L.update_ratio, static_cast<int>(m))) / hz;
-    const size_t P = ms.step_s > 0 ? static_cast<size_t>(std::ceil(period_s / ms.step_s - 1e-9)) % samples : 0;
+    const size_t P = ms.step_s > 0 ? std::max<size_t>(1, static_cast<size_t>(std::ceil(period_s / ms.step_s - 1e-9))) : 1;
     for (size_t k = 0; k < samples; ++k) {
       out.at_once[m] = std::max(out.at_once[m], count[k * M + m]);
-      out.pooled[m] = std::max(out.pooled[m], count[k * M + m] + count[((k + samples - P) % samples) * M + m]);
+      int64_t shown = 0;
+      for (size_t back = P; back <= 2 * P; ++back) shown = std::max(shown, count[ago(k, back) * M + m]);
+      out.pooled[m] = std::max(out.pooled[m], count[k * M + m] + shown);
     }
   }
   return out;
@@ -399,6 +405,9 @@ int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse) 
   c.memory.tiles = held_tiles(c, b, tile_sparse).texts;
   return display_memory_bytes(c);
 }
+
+// What tells one ladder from another.
+std::array<int, 3> ladder_key(const LadderLoad& L) { return {L.count, L.update_frames, L.update_ratio}; }
 
 std::string ladder_text(const LadderLoad& L) {
   std::string s = std::to_string(L.count) + (L.count == 1 ? " memory" : " memories") + " every ";
@@ -614,12 +623,11 @@ Plan make_plan(const PlanRequest& r) {
   // memory): a ladder's hardware figure at the planned face size and faces, with the depth code it would
   // start from (the planned ladder's may narrow after, never widen) -- as whole faces, or, where those are
   // over the limit, as it would be planned: each memory holding only the tiles its objects can be drawn on
-  // over the motion where that takes less (item 5 below; not with --whole-faces). None: an error naming the
+  // over the motion where that takes less (step 5 below; not with --whole-faces). None: an error naming the
   // least. (The default limits the ladder, not the face size: where even the smallest ladder at the planned
   // face size takes more than the starting configuration, the limit is that ladder's.)
   const double limit_mib = r.memory_limit_mib.value_or(static_cast<double>(display_memory_bytes(base_whole)) / 1048576.0);
   std::map<std::array<int, 3>, TileBound> bounds;  // by ladder: the tile bounds worked out (the planned one's reused)
-  const auto ladder_key = [](const LadderLoad& L) { return std::array<int, 3>{L.count, L.update_frames, L.update_ratio}; };
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
     progress(0.98, "bounding the tiles drawn on");
@@ -679,7 +687,7 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.update_frames = p.planned.update_frames;
   p.config.memory.update_ratio = p.planned.update_ratio;
   p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
-  // The tiles of each planned memory any of its objects can be drawn on over the motion (item 5 below; bounded
+  // The tiles of each planned memory any of its objects can be drawn on over the motion (step 5 below; bounded
   // here, as the depth code's width is held to the memory limit with them).
   if (const auto b = bounds.find(ladder_key(p.planned)); b != bounds.end())
     p.tiles = b->second;
@@ -843,7 +851,7 @@ Plan make_plan(const PlanRequest& r) {
                             std::to_string(p.composition.points) + " points rendered, each memory as if rendered there and "
                             "then; a run renders a slower memory from where the head was at its last update");
   p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
-  // 5. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
+  // 6. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
   // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
   // port -- so at any host load each inter-stage FIFO holds one token and the scan-out FIFO the issue slack
   // plus one (a run's report: fifos[].max_occupancy).
@@ -853,7 +861,7 @@ Plan make_plan(const PlanRequest& r) {
                        "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
                        "each inter-stage FIFO holds one token and the scan-out FIFO the issue slack and one (a cycle-level "
                        "run's report: fifos[].max_occupancy)"});
-  // 6. Object-level priority: the ladder, the tiles and the depth code above are for it.
+  // 7. Object-level priority: the ladder, the tiles and the depth code above are for it.
   p.config.memory.region_size_m = 0;
   p.config.memory.region_margin_m = dp::ArpConfig{}.memory.region_margin_m;
   p.choices.push_back({"memory.region_size_m", "0",
@@ -940,17 +948,16 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += "\nMean objects in each planned memory:";
   for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
-       "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as held -- where "
-       "whole faces are over the memory limit, each memory holding only the tiles its objects can be drawn on over the "
-       "motion where that takes less (the planned ladder: as planned, at its depth code). Ladders the engine cannot "
+       "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as weighed against "
+       "the limit -- where whole faces are over it, each memory holding only the tiles its objects can be drawn on over the "
+       "motion where that takes less; the planned ladder as planned, at its depth code. Ladders the engine cannot "
        "carry, or over the limit either way, are not listed.\n\n"
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
-       "display memory, whole faces, MiB | display memory as held, MiB |\n"
+       "display memory, whole faces, MiB | display memory as weighed, MiB |\n"
        "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   const auto mib = [](int64_t b) { return fmt("%.1f", static_cast<double>(b) / 1048576.0); };
   for (const LadderLoad& L : p.ladders) {
-    const bool planned =
-        L.count == p.planned.count && L.update_frames == p.planned.update_frames && L.update_ratio == p.planned.update_ratio;
+    const bool planned = ladder_key(L) == ladder_key(p.planned);
     const int64_t whole = planned ? p.memory_bytes_whole : L.memory_bytes_whole;
     const int64_t held = planned ? p.memory_bytes_planned : L.memory_bytes_weighed();
     std::string periods;

@@ -361,6 +361,25 @@ TEST(DisplayMemoryBank, TheMostTilesAtOnceAreBothBuffersOwnTiles) {
     draw({{0, 40, 0}, {0, 80, 0}});
     EXPECT_EQ(b.tiles_most_at_once(), 8) << whole_face;
   }
+  // A tile the back buffer holds only for its apron, drawn on in the other buffer before, then drawn on here: its
+  // own texels are this buffer's too (1 shown, 2 drawn).
+  for (const bool whole_face : {false, true}) {
+    DisplayMemoryBank b{f};
+    auto draw = [&](int x, int y) {
+      if (!whole_face) return void(b.write(1, x, y, 7, 5));
+      std::vector<uint64_t> w(100 * 100, ~uint64_t{0});
+      w[static_cast<size_t>(y * 100 + x)] = (uint64_t{5} << 32) | 7;
+      b.write_face(1, w.data(), ~uint64_t{0});
+    };
+    draw(40, 40);  // tile (1,1)
+    b.commit();
+    b.vblank();
+    b.clear_back();
+    draw(64, 64);  // tile (2,2), and (1,1) for its apron
+    EXPECT_EQ(b.tiles_most_at_once(), 2) << whole_face;
+    draw(40, 40);
+    EXPECT_EQ(b.tiles_most_at_once(), 3) << whole_face;
+  }
 }
 
 // A bank holding only some tiles (memory.tiles) stores what a bank holding every tile stores when the texels

@@ -65,8 +65,9 @@ Runner add_plan_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option_function<double>(
       "--memory-limit", [a](double v) { a->req.memory_limit_mib = v; },
-      "The most hardware display memory a ladder of memories may take, MiB (default: the starting configuration's, or the "
-      "smallest ladder's at the planned face size where that is more; 0: no limit)");
+      "The most hardware display memory a ladder of memories may take, MiB, as whole faces or, where those are over it, "
+      "tile-sparse as it would be planned (default: the starting configuration's, or the least any ladder takes at the "
+      "planned face size where that is more; 0: no limit)");
   cmd->add_option_function<double>(
       "--depth-error", [a](double v) { a->req.depth_error = v; },
       "With several memories: the share of the texels two or more memories hold that the depth code may compose from the "
