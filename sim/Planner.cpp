@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 
 #include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
@@ -14,6 +15,9 @@
 #include "common/Units.hpp"
 #include "host/priority/PriorityScheduler.hpp"
 #include "host/priority/RenderCost.hpp"
+#include "host/priority/Validity.hpp"
+#include "host/regions/RegionScheduler.hpp"
+#include "host/regions/Segmentation.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
 #include "host/render/DepthCode.hpp"
 #include "host/render/FaceFootprint.hpp"
@@ -404,6 +408,79 @@ HeldTiles held_tiles(const dp::ArpConfig& c, const TileBound& b, bool tile_spars
 int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse) {
   c.memory.tiles = held_tiles(c, b, tile_sparse).texts;
   return display_memory_bytes(c);
+}
+
+// Region priority rendering's load over the motion with `count` memories at theta_t (RegionLoad): the scene
+// segmented along columns of `size_m` (as a run segments it), the run's region rule stepped at every display
+// frame of the motion as if every memory were free to render, each update rendering the pieces of that
+// memory for each eye, sent to every face their bound reaches (the engine's cost of set-up and triangles).
+RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz, double threshold_rad,
+                       int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
+  RegionLoad out;
+  out.size_m = size_m;
+  out.margin_m = size_m / 8;  // as the trade and scripts/reproduce-chow2005.sh sweep it
+  std::unique_ptr<host::RegionGrid> grid;
+  try {
+    grid = std::make_unique<host::RegionGrid>(scene.extent_min, scene.extent_max, size_m, false, "region size");
+  } catch (const InputError& e) {
+    out.refused = e.reason();
+    return out;
+  }
+  const host::Segmented seg = host::segment_scene(scene, *grid, true);
+  out.segments = static_cast<int64_t>(seg.scene.objects.size());
+  host::RegionConfig rc;
+  rc.region_size_m = size_m;
+  rc.margin_m = out.margin_m;
+  rc.memories = count;
+  rc.threshold_rad = threshold_rad;
+  host::RegionScheduler sched(*grid, rc, S, walk.position(0), "region size");
+  const host::RenderEngine engine(config);
+  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
+  const int64_t frames = std::max<int64_t>(1, std::llround(ms.span_s * hz));
+  const size_t n = scene.objects.size(), samples = ms.t.size();
+  const int64_t step = std::max<int64_t>(1, std::llround(ms.step_s * hz));  // frames between samples
+  std::vector<double> period_s(static_cast<size_t>(count));  // the region rule's: a threshold distance walked, a frame at least
+  for (int m = 0; m < count; ++m)
+    period_s[static_cast<size_t>(m)] = walk.speed() > 0 ? std::max(sched.threshold_distance(m) / walk.speed(), 1 / hz) : host::kForever;
+  double triangles = 0, busy_s = 0, pieces = 0, sent = 0;
+  int64_t late = 0;
+  for (int64_t f = 0; f < frames; ++f) {
+    const double t = static_cast<double>(f) / hz;
+    const glm::dvec3 head = walk.position(t);
+    const host::RegionScheduler::Step st = sched.step(head, true);
+    for (size_t i = 0; i < seg.scene.objects.size(); ++i) {
+      const int m = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
+      late += period_s[static_cast<size_t>(m)] > host::object_validity(seg.scene.objects[i], head, walk.speed(), t, threshold_rad).period_s();
+    }
+    for (const int m : st.update) {
+      sched.rendered(m, head);
+      for (size_t i = 0; i < seg.scene.objects.size(); ++i) {
+        if (sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]) != m) continue;
+        const host::SceneObject& o = seg.scene.objects[i];
+        const host::Sphere b = o.world_bound(t);
+        int faces = 0;
+        for (int fc = 0; fc < 6; ++fc) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, fc, near_m) ? 1 : 0;
+        host::RenderStats drawn;
+        drawn.objects = 1;
+        drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
+        // Its fill: its object's at the nearest sample (measure_fill), by its share of the object's triangles.
+        const size_t src = seg.source[i], k = std::min(samples - 1, static_cast<size_t>(f / step));
+        drawn.texels_filled = std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) /
+                                           static_cast<double>(std::max<size_t>(1, scene.objects[src].mesh->triangles())));
+        triangles += static_cast<double>(o.mesh->triangles());
+        pieces += 1;
+        sent += static_cast<double>(drawn.triangles);
+        busy_s += eyes * engine.seconds(drawn);
+      }
+    }
+  }
+  out.reassignments = sched.reassignments();
+  out.triangles_per_s = triangles * hz / static_cast<double>(frames);
+  out.pieces_per_s = pieces * hz / static_cast<double>(frames);
+  out.triangles_sent_per_s = sent * hz / static_cast<double>(frames);
+  out.late_share = seg.scene.objects.empty() ? 0.0 : static_cast<double>(late) / (static_cast<double>(frames) * static_cast<double>(seg.scene.objects.size()));
+  out.engine_busy = busy_s * hz / static_cast<double>(frames);
+  return out;
 }
 
 // What tells one ladder from another.
@@ -861,18 +938,63 @@ Plan make_plan(const PlanRequest& r) {
                        "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
                        "each inter-stage FIFO holds one token and the scan-out FIFO the issue slack and one (a cycle-level "
                        "run's report: fifos[].max_occupancy)"});
-  // 7. Object-level priority: the ladder, the tiles and the depth code above are for it.
+  // 7. Region priority rendering against object-level, with the planned memories: regions are taken where they
+  // carry the motion with less host load than the planned ladder by more than the load tolerance, the engine
+  // carries them and, as whole faces (regions place objects by region, not where their tiles are) with the
+  // starting configuration's depth code (the composition was measured for object-level), they fit the limit.
   p.config.memory.region_size_m = 0;
   p.config.memory.region_margin_m = dp::ArpConfig{}.memory.region_margin_m;
-  p.choices.push_back({"memory.region_size_m", "0",
-                       "object-level priority rendering (each object in the memory its own validity needs), which the ladder, "
-                       "tiles and depth code above are planned for" +
-                           (r.base.memory.region_size_m > 0 ? " (" + r.base_source + "'s region size " + fmt("%g", r.base.memory.region_size_m) +
-                                                                  " m is not planned for: a run by regions would not keep to the tiles)"
-                                                            : std::string())});
-  p.not_decided.push_back("the region size weighed against object-level priority (the plan keeps object-level), and the host "
-                          "clock and the write port's bandwidth (timed.host_*): a run renders through the modelled engine (host.*), "
-                          "which the check above sizes, and uses the write port only for host write jobs");
+  std::string region_why;
+  if (r.weigh_regions && n > 0) {
+    progress(1.0, "weighing region priority rendering");
+    for (const double size : {2.0, 4.0, 8.0})
+      p.regions.push_back(region_load(scene, walk, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, fill));
+    const RegionLoad* best = nullptr;
+    for (const RegionLoad& R : p.regions)
+      if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&
+          (!best || R.triangles_per_s < best->triangles_per_s))
+        best = &R;
+    dp::ArpConfig by_regions = p.config;
+    if (best) {
+      by_regions.memory.region_size_m = best->size_m;
+      by_regions.memory.region_margin_m = best->margin_m;
+      by_regions.memory.tiles.clear();
+      by_regions.memory.depth_bits = std::max(p.config.memory.depth_bits, depth_bits_for(p.planned.count, r.base));
+    }
+    const bool saves = best && best->triangles_per_s < p.planned.triangles_per_s * (1 - r.load_tolerance);
+    const bool fits = p.memory_limit_bytes == 0 || (best && display_memory_bytes(by_regions) <= p.memory_limit_bytes);
+    region_why = !best ? "no region size the world and the engine allow keeps objects within theta_t as well as objects do (updated "
+                         "slower than needed: " + fmt("%.2f %%", 100 * p.planned.late_share) + " by objects)"
+                 : "the least region load is " + fmt("%.3g", best->triangles_per_s) + " triangles/s with " +
+                       fmt("%g", best->size_m) + " m regions (" + std::to_string(p.planned.count) + (p.planned.count == 1 ? " memory" : " memories") +
+                       ", margin " + fmt("%g", best->margin_m) + " m), against " + fmt("%.3g", p.planned.triangles_per_s) +
+                       " by objects" + (saves ? "" : ": not less by more than " + fmt("%.0f", 100 * r.load_tolerance) + " %") +
+                       (saves && !fits ? ": less, but as whole faces with the starting depth code over the memory limit" : "");
+    if (saves && fits) {
+      p.config = by_regions;
+      p.region_chosen_m = best->size_m;
+      for (PlanChoice& c : p.choices)
+        if (c.keys == "memory.tiles" || c.keys == "memory.depth_bits")
+          c.reason += " -- then region priority rendering was taken (memory.region_size_m below): " +
+                      std::string(c.keys == "memory.tiles" ? "every tile (regions place objects by region, not where their tiles are)"
+                                                           : "the wider of this and " + r.base_source + "'s width (the composition was measured for objects)");
+    }
+  }
+  const double chosen = p.config.memory.region_size_m;
+  p.choices.push_back({"memory.region_size_m, memory.region_margin_m",
+                       fmt("%g", chosen) + ", " + fmt("%g", p.config.memory.region_margin_m),
+                       (chosen > 0 ? "region priority rendering (Chow, Pose & Regan 2005): " + region_why +
+                                         "; every tile of each memory, depth code " + std::to_string(p.config.memory.depth_bits) + " bits"
+                                   : "object-level priority rendering (each object in the memory its own validity needs), which the ladder, "
+                                     "tiles and depth code above are planned for" +
+                                         (region_why.empty() ? std::string(r.weigh_regions ? "" : " (--objects-only)") : "; " + region_why)) +
+                           (r.base.memory.region_size_m > 0 && chosen == 0
+                                ? " (" + r.base_source + "'s region size " + fmt("%g", r.base.memory.region_size_m) + " m is not kept)"
+                                : std::string()) +
+                           (p.regions.empty() ? std::string() : "; each size weighed by the run's region rule stepped at every frame of the motion (plan.md)")});
+  p.not_decided.push_back("the region size at other memory counts than the ladder's, and the tearing between regions (measured by a "
+                          "run, not the plan); the host clock and the write port's bandwidth (timed.host_*): a run renders through "
+                          "the modelled engine (host.*), which the check above sizes, and uses the write port only for host write jobs");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
                        "it carries the planned ladder: busy " + fmt("%.3g", p.planned.engine_busy) +
                            " s of each second (every object drawn for each eye at each update of its memory: its set-up, "
@@ -965,6 +1087,27 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
          fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " +
          mib(whole) + " | " + (held < whole ? mib(held) + " tile-sparse" : "whole faces") + (planned ? " (planned)" : "") + " |\n";
+  }
+  if (!p.regions.empty()) {
+    s += "\n## Region priority rendering weighed\n\nWith the planned " + std::to_string(p.planned.count) +
+         (p.planned.count == 1 ? " memory" : " memories") + " at the planned theta_t: the scene segmented along square columns "
+         "(host::segment_scene), the run's region rule (host::RegionScheduler: a region's objects in the memory of its ring "
+         "around the user's region, a memory updated when the user has moved its threshold distance) stepped at every "
+         "display frame of the motion as if every memory were free to render; the engine's time for each piece's set-up, "
+         "triangles and fill for each eye (its object's measured fill by its share of the triangles); a piece updated slower than its validity at theta_t "
+         "needs where its memory's period (the threshold distance walked) is longer. Regions are taken only where they keep "
+         "objects within theta_t as well as objects do. By objects: " +
+         fmt("%.4g", p.planned.triangles_per_s) + " triangles/s, " + fmt("%.2f %%", 100 * p.planned.late_share) +
+         " updated slower than needed.\n\n"
+         "| region size, m | margin, m | pieces | triangles/s | engine busy, s a second | updated slower than needed | re-assignments | |\n"
+         "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const RegionLoad& R : p.regions)
+      s += "| " + fmt("%g", R.size_m) + " | " + fmt("%g", R.margin_m) + " | " +
+           (R.refused.empty() ? std::to_string(R.segments) + " | " + fmt("%.4g", R.triangles_per_s) + " | " + fmt("%.3g", R.engine_busy) +
+                                    " | " + fmt("%.2f %%", 100 * R.late_share) + " | " + std::to_string(R.reassignments) + " | " +
+                                    (R.size_m == p.region_chosen_m ? "planned" : "")
+                              : "| | | | | " + R.refused) +
+           " |\n";
   }
   if (p.composition.points > 0) {
     s += "\n## The depth code's composition, by width\n\nThe share of the " + std::to_string(p.composition.composed) +

@@ -50,6 +50,8 @@ struct PlanRequest {
   // false (--whole-faces): every tile of the faces present (no memory.tiles), a display memory without a
   // tile table; true: the tiles the motion can draw on where that takes less memory than whole faces.
   bool tile_sparse = true;
+  // false (--objects-only): keep object-level priority without weighing region priority rendering.
+  bool weigh_regions = true;
   std::function<void(double, const std::string&)> progress;
 };
 
@@ -79,6 +81,22 @@ struct LadderLoad {
   int64_t memory_bytes_weighed() const {
     return memory_bytes_tiled > 0 ? std::min(memory_bytes_whole, memory_bytes_tiled) : memory_bytes_whole;
   }
+};
+
+// Region priority rendering (Chow, Pose & Regan 2005) with the planned memories, weighed against object-level:
+// the run's own region rule (host::RegionScheduler, host::segment_scene) stepped at every display frame of the
+// motion, each memory's pieces rendered at each update it asks for.
+struct RegionLoad {
+  double size_m = 0, margin_m = 0;
+  double triangles_per_s = 0;     // mean over the motion
+  // For one eye: pieces drawn and triangles sent (once for each face a piece's bound reaches) a second.
+  double pieces_per_s = 0, triangles_sent_per_s = 0;
+  double engine_busy = 0;         // set-up, triangles and fill of the pieces, for each eye (each piece's fill its object's by triangles)
+  // Piece-frames whose memory updates slower than the piece's validity at theta_t needs (LadderLoad::late_share's
+  // measure): memory m updates every time the user moves its threshold distance, at most once a frame.
+  double late_share = 0;
+  int64_t segments = 0, reassignments = 0;
+  std::string refused;            // why this size cannot be used here ("" : weighed)
 };
 
 // The tiles of each planned memory that any of its objects can be drawn on over the motion (a bound for an
@@ -132,6 +150,9 @@ struct Plan {
   // The same memories each bank with a tile pool of tiles.pooled slots where that takes less than its tiles or
   // whole faces (bank_bits_pooled; costed, not modelled), every eye.
   int64_t memory_bytes_pooled = 0;
+  // Region priority rendering weighed at each size (none with --objects-only); chosen: the one planned (0: objects).
+  std::vector<RegionLoad> regions;
+  double region_chosen_m = 0;
 };
 
 // InputError for a bad request (no scene, a bound no widths meet -- naming the best achievable).

@@ -74,6 +74,8 @@ Runner add_plan_command(CLI::App& app) {
       "wrong memory (default: what the starting configuration's width measures)");
   cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
                 "Keep the starting configuration's datapath widths (no accuracy-harness search)");
+  cmd->add_flag_function("--objects-only", [a](int64_t) { a->req.weigh_regions = false; },
+                         "Keep object-level priority rendering: do not weigh region priority rendering (memory.region_size_m 0)");
   cmd->add_flag_function("--whole-faces", [a](int64_t) { a->req.tile_sparse = false; },
                 "Keep every tile of the faces present (no memory.tiles: a display memory without a tile table); by "
                 "default the memories hold only the tiles the motion can draw on where that takes less memory");

@@ -66,14 +66,7 @@ void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> obje
 }
 
 int HostSimulation::memory_of_object(size_t i) const {
-  if (span_.empty()) return regions_->memory_of_region(object_region_[i]);
-  const RegionGrid& g = regions_->grid();
-  const auto& [lo, hi] = span_[i];
-  int best = mem_.count() - 1;
-  for (int y = lo.y; y <= hi.y; ++y)
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int x = lo.x; x <= hi.x; ++x) best = std::min(best, regions_->memory_of_region(g.flat({x, y, z})));
-  return best;
+  return regions_->memory_of_object(object_region_[i], span_.empty() ? nullptr : &span_[i]);
 }
 
 std::vector<size_t> HostSimulation::objects_for(int m) const {

@@ -29,6 +29,16 @@ void RegionScheduler::assign_from(const RegionIndex& c) {
     memory_[static_cast<size_t>(i)] = std::min(RegionGrid::ring(grid_.unflat(i), c), cfg_.memories - 1);
 }
 
+int RegionScheduler::memory_of_object(int flat_region, const std::pair<RegionIndex, RegionIndex>* span) const {
+  if (!span) return memory_of_region(flat_region);
+  const auto& [lo, hi] = *span;
+  int best = cfg_.memories - 1;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int z = lo.z; z <= hi.z; ++z)
+      for (int x = lo.x; x <= hi.x; ++x) best = std::min(best, memory_of_region(grid_.flat({x, y, z})));
+  return best;
+}
+
 double RegionScheduler::threshold_distance(int m) const {
   const double d = std::max(0.25, (m - 0.5) * grid_.size());
   return d * std::sqrt(2.0 * (1.0 - std::cos(threshold_)));

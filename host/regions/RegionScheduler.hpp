@@ -12,6 +12,7 @@
 // boundary causes no swapping storm.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "RegionGrid.hpp"
@@ -33,6 +34,9 @@ class RegionScheduler {
                   const std::string& source);
 
   int memory_of_region(int flat_region) const { return memory_[static_cast<size_t>(flat_region)]; }
+  // The memory of an object of region `flat_region` whose bound reaches the regions of `span` (lo, hi; none:
+  // only its own region): the fastest among them, as it must be right everywhere it reaches.
+  int memory_of_object(int flat_region, const std::pair<RegionIndex, RegionIndex>* span) const;
   RegionIndex center() const { return center_; }
   double threshold_distance(int m) const;
 
