@@ -428,6 +428,8 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   }
   const host::Segmented seg = host::segment_scene(scene, *grid, true);
   out.segments = static_cast<int64_t>(seg.scene.objects.size());
+  std::vector<double> piece_triangles(scene.objects.size(), 0.0);  // of each object, its pieces' together (cutting adds some)
+  for (size_t i = 0; i < seg.scene.objects.size(); ++i) piece_triangles[seg.source[i]] += static_cast<double>(seg.scene.objects[i].mesh->triangles());
   host::RegionConfig rc;
   rc.region_size_m = size_m;
   rc.margin_m = out.margin_m;
@@ -463,10 +465,10 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
         host::RenderStats drawn;
         drawn.objects = 1;
         drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
-        // Its fill: its object's at the nearest sample (measure_fill), by its share of the object's triangles.
+        // Its fill: its object's at the nearest sample (measure_fill), by its share of the pieces' triangles.
         const size_t src = seg.source[i], k = std::min(samples - 1, static_cast<size_t>(f / step));
-        drawn.texels_filled = std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) /
-                                           static_cast<double>(std::max<size_t>(1, scene.objects[src].mesh->triangles())));
+        drawn.texels_filled =
+            std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) / std::max(1.0, piece_triangles[src]));
         triangles += static_cast<double>(o.mesh->triangles());
         pieces += 1;
         sent += static_cast<double>(drawn.triangles);
