@@ -971,8 +971,13 @@ Plan make_plan(const PlanRequest& r) {
                        fmt("%g", best->size_m) + " m regions (" + std::to_string(p.planned.count) + (p.planned.count == 1 ? " memory" : " memories") +
                        ", margin " + fmt("%g", best->margin_m) + " m), against " + fmt("%.3g", p.planned.triangles_per_s) +
                        " by objects" + (saves ? "" : ": not less by more than " + fmt("%.0f", 100 * r.load_tolerance) + " %") +
-                       (saves && !fits ? ": less, but as whole faces with the starting depth code over the memory limit" : "");
-    if (saves && fits) {
+                       (saves && !fits ? ": less, but as whole faces with the starting depth code over the memory limit" : "") +
+                       (saves && fits && !r.take_regions
+                            ? ": less, but not taken without --take-regions -- the plan bounds each piece's displacement by theta_t, "
+                              "not the tearing between pieces of one object in memories updated at different times, nor the seams "
+                              "the depth code composes (measured by a run against the truth: docs/planning.md)"
+                            : "");
+    if (saves && fits && r.take_regions) {
       p.config = by_regions;
       p.region_chosen_m = best->size_m;
       for (PlanChoice& c : p.choices)

@@ -52,6 +52,10 @@ struct PlanRequest {
   bool tile_sparse = true;
   // false (--objects-only): keep object-level priority without weighing region priority rendering.
   bool weigh_regions = true;
+  // true (--take-regions): take region priority rendering where the weighing finds it keeps objects within theta_t
+  // as well and renders less; by default it is weighed and reported only (its tearing between regions is not
+  // bounded by the plan: docs/planning.md).
+  bool take_regions = false;
   std::function<void(double, const std::string&)> progress;
 };
 

@@ -340,7 +340,8 @@ TEST(Planner, APlanRendersByObjectsAndSaysSoForAConfigurationByRegions) {
 // Region priority rendering weighed: a rail 80 m long 2.5 m beside the walk is one object that object-level
 // priority must render every frame (and still not within theta_t: its validity is under a frame); cut along
 // region columns, its far pieces go to slower memories -- or, with one memory, update only as the walk goes
-// a threshold distance. The plan takes regions, every tile and the base's depth code; a run of it renders by
+// a threshold distance. The plan reports it and, with --take-regions, takes regions, every tile and the base's
+// depth code; a run of it renders by
 // regions, drawing the pieces and sending the triangles the plan's region weighing said (the run renders the
 // pieces as its host simulation schedules them; the plan steps the region rule). (The fill is not compared: a
 // piece's is estimated as its object's by its share of the triangles, and the run's depends on the order the
@@ -356,6 +357,13 @@ TEST(Planner, ARailBesideTheWalkIsPlannedByRegions) {
   EXPECT_EQ(objects.config.memory.region_size_m, 0.0);
   EXPECT_TRUE(objects.regions.empty());  // (--objects-only)
   r.weigh_regions = true;
+  const Plan weighed = make_plan(r);  // weighed and reported, not taken
+  ASSERT_EQ(weighed.regions.size(), 3u);
+  EXPECT_EQ(weighed.config.memory.region_size_m, 0.0);
+  bool said = false;
+  for (const PlanChoice& c : weighed.choices) said = said || c.reason.find("not taken without --take-regions") != std::string::npos;
+  EXPECT_TRUE(said);
+  r.take_regions = true;
   const Plan p = make_plan(r);
   ASSERT_EQ(p.regions.size(), 3u);
   ASSERT_GT(p.config.memory.region_size_m, 0.0);
@@ -398,6 +406,7 @@ TEST(Planner, RegionsThatLeaveMoreObjectsOutsideThetaAreNotTaken) {
   TempDir d;
   PlanRequest r = ball_row(d, 2, [](int i) { return -3.0 * (i + 1); }, 2, 1);
   r.weigh_regions = true;
+  r.take_regions = true;
   const Plan p = make_plan(r);
   EXPECT_EQ(p.config.memory.region_size_m, 0.0);
   EXPECT_EQ(p.planned.late_share, 0.0);
