@@ -914,7 +914,7 @@ Plan make_plan(const PlanRequest& r) {
              fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces. "
              "A tile pool per bank instead (slots both buffers share, a tile allocated as it is drawn and freed when its "
              "buffer is drawn again; costed here, not modelled) would need, per memory, the most tiles drawn on at one point of "
-             "the motion and one update period before together: " +
+             "the motion and at one to two update periods before together: " +
              fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes less. "
              "A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
