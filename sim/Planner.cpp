@@ -182,32 +182,35 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
   return out;
 }
 
-// Engine seconds per update of each object at each sample (k * objects + i): for each eye its set-up, its
-// triangles once for every face its bound reaches, by the renderers' culling test (host::sphere_meets_face,
-// as host::cull_to_faces sends them) with the bound shrunk by half the distance between the eyes -- what
-// the shrunk sphere meets from the walk's point, the whole one meets from either eye -- and one face at
-// least, and its fill (measure_fill, the walk's point standing in for each eye). (See
-// LadderLoad::engine_busy.) The eyes are the default distance apart (`plan` has no --ipd, as for the faces
-// below): a run with wider eyes can send an object to a face this count leaves out.
+// What drawing object `o` at time t for one eye at `head` costs the engine (RenderStats): its set-up, its triangles
+// once for every face its bound reaches -- by the renderers' culling test (host::sphere_meets_face, as
+// host::cull_to_faces sends them) with the bound shrunk by half the default distance between the eyes, what the
+// shrunk sphere meets from `head` the whole one meets from either eye -- and one face at least, and `fill` texels.
+host::RenderStats drawing(const host::SceneObject& o, double t, const glm::dvec3& head, int64_t fill) {
+  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
+  const host::Sphere b = o.world_bound(t);
+  int faces = 0;
+  for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
+  host::RenderStats drawn;
+  drawn.objects = 1;
+  drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
+  drawn.texels_filled = fill;
+  return drawn;
+}
+
+// Engine seconds per update of each object at each sample (k * objects + i): drawing() it for each eye from the
+// walk's point, with its fill (measure_fill). (See LadderLoad::engine_busy.) The eyes are the default distance
+// apart (`plan` has no --ipd, as for the faces below): a run with wider eyes can send an object to a face this
+// count leaves out.
 std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
                                    const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
   const host::RenderEngine engine(config);  // the run's own cost of a render
-  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
   const size_t n = scene.objects.size();
   std::vector<double> out(ms.t.size() * n);
   for (size_t k = 0; k < ms.t.size(); ++k) {
     const glm::dvec3 head = walk.position(ms.t[k]);
-    for (size_t i = 0; i < n; ++i) {
-      const host::SceneObject& o = scene.objects[i];
-      const host::Sphere b = o.world_bound(ms.t[k]);
-      int faces = 0;
-      for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
-      host::RenderStats drawn;  // what drawing it for one eye costs the engine
-      drawn.objects = 1;
-      drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
-      drawn.texels_filled = std::llround(fill.texels[k * n + i]);
-      out[k * n + i] = eyes * engine.seconds(drawn);
-    }
+    for (size_t i = 0; i < n; ++i)
+      out[k * n + i] = eyes * engine.seconds(drawing(scene.objects[i], ms.t[k], head, std::llround(fill.texels[k * n + i])));
   }
   return out;
 }
@@ -418,7 +421,7 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
                        int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
   RegionLoad out;
   out.size_m = size_m;
-  out.margin_m = size_m / 8;  // as the trade and scripts/reproduce-chow2005.sh sweep it
+  out.margin_m = host::swept_margin_m(size_m);
   std::unique_ptr<host::RegionGrid> grid;
   try {
     grid = std::make_unique<host::RegionGrid>(scene.extent_min, scene.extent_max, size_m, false, "region size");
@@ -437,7 +440,6 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   rc.threshold_rad = threshold_rad;
   host::RegionScheduler sched(*grid, rc, S, walk.position(0), "region size");
   const host::RenderEngine engine(config);
-  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
   const int64_t frames = std::max<int64_t>(1, std::llround(ms.span_s * hz));
   const size_t n = scene.objects.size(), samples = ms.t.size();
   const int64_t step = std::max<int64_t>(1, std::llround(ms.step_s * hz));  // frames between samples
@@ -459,16 +461,10 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
       for (size_t i = 0; i < seg.scene.objects.size(); ++i) {
         if (sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]) != m) continue;
         const host::SceneObject& o = seg.scene.objects[i];
-        const host::Sphere b = o.world_bound(t);
-        int faces = 0;
-        for (int fc = 0; fc < 6; ++fc) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, fc, near_m) ? 1 : 0;
-        host::RenderStats drawn;
-        drawn.objects = 1;
-        drawn.triangles = static_cast<int64_t>(o.mesh->triangles()) * std::max(faces, 1);
-        // Its fill: its object's at the nearest sample (measure_fill), by its share of the pieces' triangles.
+        // Its fill: its object's at the sample at or before (measure_fill), by its share of the pieces' triangles.
         const size_t src = seg.source[i], k = std::min(samples - 1, static_cast<size_t>(f / step));
-        drawn.texels_filled =
-            std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) / std::max(1.0, piece_triangles[src]));
+        const host::RenderStats drawn = drawing(
+            o, t, head, std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) / std::max(1.0, piece_triangles[src])));
         triangles += static_cast<double>(o.mesh->triangles());
         pieces += 1;
         sent += static_cast<double>(drawn.triangles);
@@ -947,7 +943,10 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.region_size_m = 0;
   p.config.memory.region_margin_m = dp::ArpConfig{}.memory.region_margin_m;
   std::string region_why;
-  if (r.weigh_regions && n > 0) {
+  const RegionLoad* taken = nullptr;
+  if (r.weigh_regions && n > 0 && walk.speed() == 0)
+    region_why = "regions not weighed: standing, the region rule never updates a memory (nothing to compare)";
+  if (r.weigh_regions && n > 0 && walk.speed() > 0) {
     progress(1.0, "weighing region priority rendering");
     for (const double size : {2.0, 4.0, 8.0})
       p.regions.push_back(region_load(scene, walk, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, fill));
@@ -979,12 +978,23 @@ Plan make_plan(const PlanRequest& r) {
                             : "");
     if (saves && fits && r.take_regions) {
       p.config = by_regions;
-      p.region_chosen_m = best->size_m;
-      for (PlanChoice& c : p.choices)
-        if (c.keys == "memory.tiles" || c.keys == "memory.depth_bits")
-          c.reason += " -- then region priority rendering was taken (memory.region_size_m below): " +
-                      std::string(c.keys == "memory.tiles" ? "every tile (regions place objects by region, not where their tiles are)"
-                                                           : "the wider of this and " + r.base_source + "'s width (the composition was measured for objects)");
+      taken = best;
+      // The rows above that regions change, rewritten: every tile, the depth code, the memories' updates.
+      for (PlanChoice& c : p.choices) {
+        const std::string then = " -- replaced: region priority rendering was taken (memory.region_size_m below)";
+        if (c.keys == "memory.tiles") {
+          c.value = "every tile of the faces present";
+          c.reason = "regions place objects by region, not where their tiles are: the object-level bound (plan.md's figures, "
+                     "the .tiles.png) is not used" + then;
+        } else if (c.keys == "memory.depth_bits") {
+          c.value = std::to_string(p.config.memory.depth_bits);
+          c.reason = "the wider of the width measured for object-level and " + r.base_source + "'s (the composition was not "
+                     "measured for regions)" + then;
+        } else if (c.keys.rfind("memory.count", 0) == 0) {
+          c.reason += "; by regions the memories update on need (the user walking a memory's threshold distance), not at "
+                      "these periods" + then;
+        }
+      }
     }
   }
   const double chosen = p.config.memory.region_size_m;
@@ -999,11 +1009,15 @@ Plan make_plan(const PlanRequest& r) {
                                 ? " (" + r.base_source + "'s region size " + fmt("%g", r.base.memory.region_size_m) + " m is not kept)"
                                 : std::string()) +
                            (p.regions.empty() ? std::string() : "; each size weighed by the run's region rule stepped at every frame of the motion (plan.md)")});
+  if (taken)  // its figures: the whole faces it holds, and the tiles not used
+    p.memory_bytes_whole = display_memory_bytes(p.config);
   p.not_decided.push_back("the region size at other memory counts than the ladder's, and the tearing between regions (measured by a "
                           "run, not the plan); the host clock and the write port's bandwidth (timed.host_*): a run renders through "
                           "the modelled engine (host.*), which the check above sizes, and uses the write port only for host write jobs");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
-                       "it carries the planned ladder: busy " + fmt("%.3g", p.planned.engine_busy) +
+                       (taken ? "by regions it is busy " + fmt("%.3g", taken->engine_busy) + " s of each second (plan.md's region "
+                                "table); by objects it carries the planned ladder: busy "
+                              : std::string("it carries the planned ladder: busy ")) + fmt("%.3g", p.planned.engine_busy) +
                            " s of each second (every object drawn for each eye at each update of its memory: its set-up, "
                            "its triangles sent to every face its bound reaches from both eyes, the default " +
                            fmt("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
@@ -1064,9 +1078,10 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
   s += "| display memory, whole faces (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " |\n";
-  s += "| display memory, tile-sparse (the tiles the motion can draw on, MiB) | | " +
+  const std::string unused = p.config.memory.region_size_m > 0 ? ", object-level: not used by regions" : "";
+  s += "| display memory, tile-sparse (the tiles the motion can draw on" + unused + ", MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
-  s += "| display memory with a tile pool per bank (costed, not modelled, MiB) | | " +
+  s += "| display memory with a tile pool per bank (costed, not modelled" + unused + ", MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " |\n";
   s += "| display memory as planned (" + std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") + ", hardware, MiB) | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
@@ -1112,7 +1127,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
       s += "| " + fmt("%g", R.size_m) + " | " + fmt("%g", R.margin_m) + " | " +
            (R.refused.empty() ? std::to_string(R.segments) + " | " + fmt("%.4g", R.triangles_per_s) + " | " + fmt("%.3g", R.engine_busy) +
                                     " | " + fmt("%.2f %%", 100 * R.late_share) + " | " + std::to_string(R.reassignments) + " | " +
-                                    (R.size_m == p.region_chosen_m ? "planned" : "")
+                                    (R.size_m == p.config.memory.region_size_m ? "planned" : "")
                               : "| | | | | " + R.refused) +
            " |\n";
   }

@@ -154,9 +154,9 @@ struct Plan {
   // The same memories each bank with a tile pool of tiles.pooled slots where that takes less than its tiles or
   // whole faces (bank_bits_pooled; costed, not modelled), every eye.
   int64_t memory_bytes_pooled = 0;
-  // Region priority rendering weighed at each size (none with --objects-only); chosen: the one planned (0: objects).
+  // Region priority rendering weighed at each size (none with --objects-only, or standing); the one taken is
+  // config.memory.region_size_m (0: objects).
   std::vector<RegionLoad> regions;
-  double region_chosen_m = 0;
 };
 
 // InputError for a bad request (no scene, a bound no widths meet -- naming the best achievable).

@@ -32,9 +32,6 @@ struct HostSpec {
   bool warp = false;            // --warp
   double warp_falloff = 0;      // --warp-falloff, m (0: half a region)
 
-  // The region size a run renders by: --regions, else the configuration's memory.region_size_m (0: object-level).
-  double regions_m(const dp::ArpConfig& c) const { return region_size.value_or(c.memory.region_size_m); }
-
   // The walk named (InputError naming --speed for a speed out of range, or the walk file's own errors).
   host::WalkPath make_walk() const;
   // theta_t in radians (InputError naming --threshold-deg outside 0 .. 90; 0 stays 0: one texel).

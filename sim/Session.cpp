@@ -120,7 +120,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     dp::ArpConfig t = s.config;
     set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);
   }
-  const double regions = h.regions_m(s.config);
+  const double regions = s.config.memory.region_size_m;  // (--regions already applied: the constructor)
   if (!o.tear_image.empty() && (regions == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && regions == 0) throw InputError("--region-cubes", "", "needs --regions SIZE (or memory.region_size_m)");
@@ -491,7 +491,10 @@ void Session::build_memories() {
     rc.memories = c.memory.count;
     rc.threshold_rad = pc.threshold_rad;
     regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(seconds_of(start_ps_)),
-                                                       h.margin ? "--margin" : spec_.config_source + ": memory.region_margin_m");
+                                                       h.margin ? std::string("--margin")
+                                                       : h.region_size
+                                                           ? "--regions, with " + spec_.config_source + "'s memory.region_margin_m"
+                                                           : spec_.config_source + ": memory.region_margin_m");
   }
   host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
                                                  timing_.refresh_hz());

@@ -18,6 +18,7 @@
 #include "common/ResourceUsage.hpp"
 #include "common/StrictJson.hpp"
 #include "common/Units.hpp"
+#include "host/regions/RegionScheduler.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
 #include "reference/golden/GoldenReference.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
@@ -207,7 +208,7 @@ nlohmann::json measure_walk(const TradePoint& p, const dp::ArpConfig& c, const T
   spec.host.threshold_deg = p.theta_deg;
   if (p.region_m > 0) {
     spec.config.memory.region_size_m = p.region_m;
-    spec.config.memory.region_margin_m = p.region_m / 8;  // as scripts/reproduce-chow2005.sh sweeps it
+    spec.config.memory.region_margin_m = host::swept_margin_m(p.region_m);
   }
   const SessionOutcome o = run_session(spec, progress);
   const nlohmann::json& h = o.report.at("host");

@@ -327,6 +327,7 @@ TEST(Planner, AMemoryDrawnOnNearlyEverywhereKeepsWholeFaces) {
 TEST(Planner, APlanRendersByObjectsAndSaysSoForAConfigurationByRegions) {
   TempDir d;
   PlanRequest r = ball_row(d, 2, [](int i) { return -3.0 * (i + 1); }, 2, 1);
+  r.weigh_regions = true;  // weighed, not taken (the command's default)
   r.base.memory.region_size_m = 4;
   r.base.memory.region_margin_m = 1;
   const Plan p = make_plan(r);
@@ -367,12 +368,21 @@ TEST(Planner, ARailBesideTheWalkIsPlannedByRegions) {
   const Plan p = make_plan(r);
   ASSERT_EQ(p.regions.size(), 3u);
   ASSERT_GT(p.config.memory.region_size_m, 0.0);
-  EXPECT_EQ(p.region_chosen_m, p.config.memory.region_size_m);
-  EXPECT_EQ(p.config.memory.region_margin_m, p.config.memory.region_size_m / 8);
   EXPECT_TRUE(p.config.memory.tiles.empty());
+  // Its figures and rows: whole faces in closed form (2 eyes x memories x 2 buffers x faces x S^2 x texel bits),
+  // the tiles row rewritten.
+  const int64_t S = p.config.memory.face_size;
+  EXPECT_EQ(p.memory_bytes_planned, int64_t{2} * p.config.memory.count * 2 * p.config.memory.faces_present() * S * S *
+                                        (24 + p.config.memory.depth_bits) / 8);
+  EXPECT_EQ(p.memory_bytes_whole, p.memory_bytes_planned);
+  for (const PlanChoice& c : p.choices) {
+    if (c.keys == "memory.tiles") {
+      EXPECT_EQ(c.value, "every tile of the faces present");
+    }
+  }
   const RegionLoad* chosen = nullptr;
   for (const RegionLoad& R : p.regions)
-    if (R.size_m == p.region_chosen_m) chosen = &R;
+    if (R.size_m == p.config.memory.region_size_m) chosen = &R;
   ASSERT_NE(chosen, nullptr);
   EXPECT_LT(chosen->late_share, p.planned.late_share);  // fewer late than the rail by objects (all of it)
   RunSpec spec;
@@ -397,6 +407,14 @@ TEST(Planner, ARailBesideTheWalkIsPlannedByRegions) {
   const double seconds = static_cast<double>(spec.frames) / hz;
   EXPECT_NEAR(pieces / seconds, 2 * chosen->pieces_per_s, 0.02 * pieces / seconds);
   EXPECT_NEAR(sent, 2 * chosen->triangles_sent_per_s, 0.05 * sent);
+  // Standing, the region rule never updates a memory: not weighed, and said.
+  r.walk_speed = 0.0;
+  const Plan standing = make_plan(r);
+  EXPECT_TRUE(standing.regions.empty());
+  EXPECT_EQ(standing.config.memory.region_size_m, 0.0);
+  bool said_standing = false;
+  for (const PlanChoice& c : standing.choices) said_standing = said_standing || c.reason.find("standing") != std::string::npos;
+  EXPECT_TRUE(said_standing);
 }
 
 // Regions that would render less but leave more objects outside theta_t than objects do are not taken: two
@@ -410,6 +428,9 @@ TEST(Planner, RegionsThatLeaveMoreObjectsOutsideThetaAreNotTaken) {
   const Plan p = make_plan(r);
   EXPECT_EQ(p.config.memory.region_size_m, 0.0);
   EXPECT_EQ(p.planned.late_share, 0.0);
+  bool why = false;
+  for (const PlanChoice& c : p.choices) why = why || c.reason.find("keeps objects within theta_t as well as objects do") != std::string::npos;
+  EXPECT_TRUE(why);
   bool less_but_late = false;
   for (const RegionLoad& R : p.regions)
     less_but_late = less_but_late || (R.refused.empty() && R.triangles_per_s < 0.9 * p.planned.triangles_per_s && R.late_share > 0);

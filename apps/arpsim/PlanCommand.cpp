@@ -74,11 +74,13 @@ Runner add_plan_command(CLI::App& app) {
       "wrong memory (default: what the starting configuration's width measures)");
   cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
                 "Keep the starting configuration's datapath widths (no accuracy-harness search)");
-  cmd->add_flag_function("--objects-only", [a](int64_t) { a->req.weigh_regions = false; },
-                         "Keep object-level priority rendering: do not weigh region priority rendering (memory.region_size_m 0)");
+  auto* objects_only = cmd->add_flag_function("--objects-only", [a](int64_t) { a->req.weigh_regions = false; },
+                                              "Keep object-level priority rendering: do not weigh region priority rendering "
+                                              "(memory.region_size_m 0)");
   cmd->add_flag_function("--take-regions", [a](int64_t) { a->req.take_regions = true; },
                          "Take region priority rendering where it keeps objects within theta_t as well as objects do and renders "
-                         "less (by default it is weighed and reported only: its tearing between regions is not bounded)");
+                         "less (by default it is weighed and reported only: its tearing between regions is not bounded)")
+      ->excludes(objects_only);
   cmd->add_flag_function("--whole-faces", [a](int64_t) { a->req.tile_sparse = false; },
                 "Keep every tile of the faces present (no memory.tiles: a display memory without a tile table); by "
                 "default the memories hold only the tiles the motion can draw on where that takes less memory");

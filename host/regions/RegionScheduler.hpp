@@ -19,6 +19,9 @@
 
 namespace arp::host {
 
+// The margin the region trade, the planner and scripts/reproduce-chow2005.sh use with a region size: an eighth of it.
+inline double swept_margin_m(double region_size_m) { return region_size_m / 8; }
+
 struct RegionConfig {
   double region_size_m = 4.0;
   bool cubes = false;

@@ -142,7 +142,7 @@ ParameterTable<ArpConfig> make_parameters() {
            "(--regions overrides; arpsim plan weighs it)");
   t.number("memory.region_margin_m", [](auto& c) -> auto& { return c.memory.region_margin_m; }, 0.0, 100000.0, "m",
            "region priority rendering: how far into a new region the user goes before regions are re-assigned, less than "
-           "the region size (--margin overrides)");
+           "half the region size (--margin overrides)");
   // pipeline: latch, filtering and scan-out
   t.choice("pipeline.latch", [](auto& c) -> auto& { return c.pipeline.latch; }, latch_policy_names(),
            "when the orientation register is sampled: at the start of the frame, of the field, of each scanline, or "
