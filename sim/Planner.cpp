@@ -447,19 +447,21 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   for (int m = 0; m < count; ++m)
     period_s[static_cast<size_t>(m)] = walk.speed() > 0 ? std::max(sched.threshold_distance(m) / walk.speed(), 1 / hz) : host::kForever;
   double triangles = 0, busy_s = 0, pieces = 0, sent = 0;
+  std::vector<int> memory_of(seg.scene.objects.size());
   int64_t late = 0;
   for (int64_t f = 0; f < frames; ++f) {
     const double t = static_cast<double>(f) / hz;
     const glm::dvec3 head = walk.position(t);
     const host::RegionScheduler::Step st = sched.step(head, true);
-    for (size_t i = 0; i < seg.scene.objects.size(); ++i) {
-      const int m = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
-      late += period_s[static_cast<size_t>(m)] > host::object_validity(seg.scene.objects[i], head, walk.speed(), t, threshold_rad).period_s();
+    for (size_t i = 0; i < seg.scene.objects.size(); ++i) {  // each piece's memory this frame, once
+      memory_of[i] = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
+      late += period_s[static_cast<size_t>(memory_of[i])] >
+              host::object_validity(seg.scene.objects[i], head, walk.speed(), t, threshold_rad).period_s();
     }
     for (const int m : st.update) {
       sched.rendered(m, head);
       for (size_t i = 0; i < seg.scene.objects.size(); ++i) {
-        if (sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]) != m) continue;
+        if (memory_of[i] != m) continue;
         const host::SceneObject& o = seg.scene.objects[i];
         // Its fill: its object's at the sample at or before (measure_fill), by its share of the pieces' triangles.
         const size_t src = seg.source[i], k = std::min(samples - 1, static_cast<size_t>(f / step));
