@@ -79,6 +79,7 @@ std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, dou
                        const std::vector<std::string>& choices, const std::string& alphabet) {
   switch (t) {
     case ParamType::TextList: return "up to " + compact(imax) + " strings of " + alphabet;
+    case ParamType::IntegerList:
     case ParamType::Integer:
     case ParamType::IntegerArray: return compact(imin) + " .. " + compact(imax);
     case ParamType::Real:
@@ -128,6 +129,15 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
     case ParamType::IntegerArray: {
       const auto& a = std::get<std::vector<int64_t>>(v);
       if (a.size() != array_size) return "must have " + std::to_string(array_size) + " elements";
+      for (size_t i = 0; i < a.size(); ++i)
+        if (a[i] < imin || a[i] > imax)
+          return "element " + std::to_string(i) + " is " + std::to_string(a[i]) + ", must be in " + interval(imin, imax);
+      return "";
+    }
+    case ParamType::IntegerList: {
+      const auto& a = std::get<std::vector<int64_t>>(v);
+      if (a.size() > array_size)
+        return "has " + std::to_string(a.size()) + " numbers, at most " + std::to_string(array_size) + " allowed";
       for (size_t i = 0; i < a.size(); ++i)
         if (a[i] < imin || a[i] > imax)
           return "element " + std::to_string(i) + " is " + std::to_string(a[i]) + ", must be in " + interval(imin, imax);

@@ -53,8 +53,9 @@ std::string enum_choices(const EnumNames<E>& names) {  // "a, b, c"
 }
 
 // TextList: a list of strings of any length up to int_max, each of the characters in `alphabet` only (what
-// the strings mean is checked where the configuration is validated as a whole).
-enum class ParamType { Integer, Real, Choice, IntegerArray, RealArray, TextList };
+// the strings mean is checked where the configuration is validated as a whole). IntegerList: a list of
+// integers of any length up to array_size, each in [int_min, int_max] (IntegerArray's length is fixed).
+enum class ParamType { Integer, Real, Choice, IntegerArray, RealArray, TextList, IntegerList };
 
 // A parameter's value as readers and writers see it.
 using ParamValue = std::variant<int64_t, double, std::string, std::vector<int64_t>, std::vector<double>, std::vector<std::string>>;
@@ -67,7 +68,7 @@ struct Parameter {
   int64_t int_min = 0, int_max = 0;
   double real_min = 0, real_max = 0;
   std::vector<std::string> choices;
-  size_t array_size = 0;
+  size_t array_size = 0;  // IntegerArray, RealArray: the length; IntegerList: the longest
   std::string alphabet;  // TextList: the characters its strings may hold
   std::string unit, doc;
   std::function<ParamValue(const Root&)> get;
@@ -130,6 +131,19 @@ class ParameterTable {
     p.get = [ref](const Root& r) { return ParamValue(ref(r)); };
     p.set = [ref](Root& r, const ParamValue& v) {
       ref(r) = std::get<std::vector<std::string>>(v);
+      return true;
+    };
+    return add(std::move(p));
+  }
+
+  // A std::vector<int64_t> of at most max_count integers, each in [lo, hi].
+  template <class Ref>
+  ParameterTable& number_list(std::string key, Ref ref, size_t max_count, int64_t lo, int64_t hi, std::string unit, std::string doc) {
+    Parameter<Root> p = bounded(base(std::move(key), ParamType::IntegerList, std::move(unit), std::move(doc)), lo, hi);
+    p.array_size = max_count;
+    p.get = [ref](const Root& r) { return ParamValue(ref(r)); };
+    p.set = [ref](Root& r, const ParamValue& v) {
+      ref(r) = std::get<std::vector<int64_t>>(v);
       return true;
     };
     return add(std::move(p));

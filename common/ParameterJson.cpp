@@ -67,6 +67,24 @@ bool to_value(ParamType t, size_t n, const json& v, ParamValue& out, std::string
       out = list;
       return true;
     }
+    case ParamType::IntegerList: {
+      if (!v.is_array()) {
+        why = "must be an array of integers, got " + brief(v);
+        return false;
+      }
+      std::vector<int64_t> list;
+      for (size_t i = 0; i < v.size(); ++i) {
+        std::string w;
+        int64_t x = 0;
+        if (!integer_of(v[i], x, w)) {
+          why = "element " + std::to_string(i) + " " + w;
+          return false;
+        }
+        list.push_back(x);
+      }
+      out = list;
+      return true;
+    }
     case ParamType::Choice:
       if (!v.is_string()) return false;
       out = v.get<std::string>();

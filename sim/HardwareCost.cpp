@@ -284,9 +284,11 @@ int64_t display_memory_bytes(const dp::ArpConfig& c) {
   const int64_t whole_memory_bits = int64_t{c.timing.eyes} * bank_bits_whole(c);
   int64_t total_bits = 0;
   bool sparse = false;
-  for (const int64_t held : tiles_held_all(c)) {
-    sparse |= held >= 0;
-    total_bits += held < 0 ? whole_memory_bits : c.timing.eyes * bank_bits_tiled(c, held);
+  const std::vector<int64_t> held = tiles_held_all(c);
+  for (int k = 0; k < c.memory.count; ++k) {
+    const int64_t n = held[static_cast<size_t>(k)], slots = c.memory.pool_slots(k);
+    sparse |= n >= 0 || slots > 0;
+    total_bits += slots > 0 ? c.timing.eyes * bank_bits_pooled(c, slots) : n < 0 ? whole_memory_bits : c.timing.eyes * bank_bits_tiled(c, n);
   }
   return sparse ? (total_bits + 7) / 8 : total_bits / 8;
 }

@@ -46,7 +46,8 @@ std::string hardware_cost_source();
 // The hardware's display memory in bytes for a configuration: eyes x memories x two buffers (front
 // and back) x the faces present (memory.faces) x S^2 texels of colour + depth bits -- where memory.tiles
 // leaves out a tile of a face present in a memory, that memory as a tile-sparse one holding the tiles it
-// lists (as display_memory_bytes_tiled; the total then rounded up to whole bytes).
+// lists (as display_memory_bytes_tiled), and where memory.tile_pool gives a memory a pool, a bank of that
+// many slots (bank_bits_pooled) -- the total then rounded up to whole bytes.
 int64_t display_memory_bytes(const dp::ArpConfig& c);
 // The tiles one memory's bank holds under memory.tiles on the faces present, or -1 when it holds every tile of
 // them (whole faces, no tile table). The configuration must be valid.
@@ -64,7 +65,7 @@ int64_t display_memory_bytes_tiled(const dp::ArpConfig& c, const dp::DisplayMemo
 int64_t bank_bits_whole(const dp::ArpConfig& c);
 int64_t bank_bits_tiled(const dp::ArpConfig& c, int64_t tiles);
 bool tiles_take_less(const dp::ArpConfig& c, int64_t tiles);
-// One bank with a tile pool instead (costed by `arpsim plan`, not modelled): `slots` 32 x 32 tile slots shared by
+// One bank with a tile pool instead (memory.tile_pool, dp::DisplayMemoryBank's pool): `slots` 32 x 32 tile slots shared by
 // the two buffers, each buffer's tiles allocated from them as it is drawn and freed when it is drawn again, and
 // a tile table per buffer (an entry per tile of each face present, wide enough to number the slots and
 // "absent"). Bits.

@@ -824,6 +824,21 @@ RunSummary Session::run() {
                   lost);
     s.notes.push_back(b);
   }
+  if (const int64_t lost = memories_.writes_lost_pool_full(); lost > 0) {
+    std::string full;  // the memories whose pool ran out, and their slots
+    for (int k = 0; k < memories_.count(); ++k) {
+      int64_t n = 0;
+      for (int e = 0; e < memories_.eyes(); ++e) n += memories_.bank(e, k).writes_lost_pool_full();
+      if (n > 0) full += (full.empty() ? "memory " : ", ") + std::to_string(k) + " (" + std::to_string(spec_.config.memory.pool_slots(k)) + " slots)";
+    }
+    char b[600];
+    std::snprintf(b, sizeof b,
+                  "  warning: %" PRId64 " texels the host drew were lost for want of a tile slot: the tile pool of %s "
+                  "was full when they were drawn (memory.tile_pool was sized for another scene, motion or theta_t, or "
+                  "is too small; footprint.texels_lost_tile_pool_full)",
+                  lost, full.c_str());
+    s.notes.push_back(b);
+  }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());
 
   nlohmann::json r = pipeline_report(res, spec_.config, vcd_final_);
@@ -864,6 +879,7 @@ RunSummary Session::run() {
                     {"display_memory_faces", spec_.config.memory.faces_present()},
                     {"texels_lost_on_absent_faces", memories_.writes_lost()},
                     {"texels_lost_off_tiles", memories_.writes_lost_off_tiles()},
+                    {"texels_lost_tile_pool_full", memories_.writes_lost_pool_full()},
                     {"texels_written", s.texels_written},
                     {"display_memory_banks", s.memory_banks},
                     {"systemc_modules", s.systemc_modules},

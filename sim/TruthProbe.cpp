@@ -33,6 +33,7 @@ dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
   dp::ArpConfig c = run;
   c.memory.count = 1;
   c.memory.tiles.clear();  // it holds every tile: a reference, not the run's tile-sparse hardware
+  c.memory.tile_pool.clear();
   if (face_size == 0) return c;
   const dp::ArpConfig builtin;
   c.widths = builtin.widths;

@@ -70,7 +70,7 @@ TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
     EXPECT_FALSE(p.doc.empty()) << p.key;
     EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
   }
-  EXPECT_EQ(n, 12u + 3 + 12 + 14 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
+  EXPECT_EQ(n, 12u + 3 + 12 + 15 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
   // The table and the JSON writer agree: every key written is declared, and the other way round.
   const json j = config::to_json(dp::ArpConfig{});
   size_t written = 0;
@@ -175,6 +175,28 @@ TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
   EXPECT_EQ(c.memory.tiles, (std::vector<std::string>{"512:*/*/*/*/*/*", "512:-/-/-/-/-/-"}));
   EXPECT_EQ(dp::arp_parameters().find("memory.tiles")->format(dp::arp_parameters().find("memory.tiles")->get(c)),
             "[\"512:*/*/*/*/*/*\", \"512:-/-/-/-/-/-\"]");
+  // A list of numbers of any length (memory.tile_pool): an array, of integers, each in range, at most 16, and
+  // one for each memory or none.
+  e = error_of([] { parse(R"({"memory": {"tile_pool": 100}})"); });
+  EXPECT_EQ(e.place(), "memory.tile_pool");
+  EXPECT_NE(e.reason().find("must be an array of integers"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tile_pool": [100, "a"]}})"); });
+  EXPECT_NE(e.reason().find("element 1"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tile_pool": [100, 1.5]}})"); });
+  EXPECT_NE(e.reason().find("element 1"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tile_pool": [100, -1]}})"); });
+  EXPECT_NE(e.reason().find("element 1 is -1, must be in [0, 16777216]"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"tile_pool": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]}})"); });
+  EXPECT_NE(e.reason().find("has 17 numbers, at most 16 allowed"), std::string::npos) << e.reason();
+  e = error_of([] { parse(R"({"memory": {"count": 2, "tile_pool": [100]}})"); });
+  EXPECT_EQ(e.place(), "memory.tile_pool");
+  EXPECT_NE(e.reason().find("has 1 numbers and memory.count is 2"), std::string::npos) << e.reason();
+  const dp::ArpConfig pooled = parse(R"({"memory": {"count": 2, "tile_pool": [100, 0]}})");
+  EXPECT_EQ(pooled.memory.tile_pool, (std::vector<int64_t>{100, 0}));
+  EXPECT_EQ(pooled.memory.pool_slots(0), 100);
+  EXPECT_EQ(pooled.memory.pool_slots(1), 0);
+  EXPECT_EQ(dp::arp_parameters().find("memory.tile_pool")->format(dp::arp_parameters().find("memory.tile_pool")->get(pooled)), "[100, 0]");
+  EXPECT_EQ(config::apply_overrides({}, {"memory.tile_pool=[7, 0, 0, 3]"}).memory.tile_pool, (std::vector<int64_t>{7, 0, 0, 3}));
 }
 
 TEST(ConfigFile, SyntaxErrorsGiveLineAndColumn) {

@@ -464,6 +464,106 @@ TEST(DisplayMemoryBank, ATileItDoesNotHoldIsLostAsIfNeverDrawn) {
   EXPECT_EQ(b.texels_written(), 0);
 }
 
+// A tile pool (memory.tile_pool) of P slots, both buffers together: the first P tiles whose own texels are drawn
+// get a slot, in the order they are first drawn on (write_face: tiles row-major; write(): the texels' order),
+// and every later one is lost as a tile the bank does not hold is -- the same tiles and words, aprons included,
+// as a bank whose tile map holds exactly the tiles given a slot, and its texels counted as lost for the pool.
+// A cleared buffer frees its slots; the one shown keeps its own.
+TEST(DisplayMemoryBank, ATileThePoolHasNoSlotForIsLostAsATileNotHeld) {
+  for (const int S : {128, 100}) {
+    MemoryConfig mc;
+    mc.face_size = S;
+    const MemoryFormat fmt(mc);
+    const std::vector<uint64_t> words = sparse_face(fmt, static_cast<unsigned>(S) + 7);
+    const int T = DisplayMemoryBank::tiles_per_row_of(S);
+    constexpr int64_t P = 5;
+    auto at = [&](int x, int y) { return words[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)]; };
+    // The tiles given a slot, worked out here: first come, first served, in each path's order.
+    TileMap by_tile_order(S, false), by_texel_order(S, false);
+    std::vector<int64_t> own_texels;  // of each tile drawn on, row-major
+    for (int ty = 0; ty < T; ++ty)
+      for (int tx = 0; tx < T; ++tx) {
+        int64_t own = 0;
+        for (int y = ty * 32; y < std::min(S, ty * 32 + 32); ++y)
+          for (int x = tx * 32; x < std::min(S, tx * 32 + 32); ++x) own += at(x, y) != fmt.empty_word();
+        if (own == 0) continue;
+        if (own_texels.size() < static_cast<size_t>(P)) by_tile_order.set(2, tx, ty, true);
+        own_texels.push_back(own);
+      }
+    auto lost_beyond = [&](int64_t n) {  // the texels of the tiles after the first n
+      int64_t t = 0;
+      for (size_t i = static_cast<size_t>(n); i < own_texels.size(); ++i) t += own_texels[i];
+      return t;
+    };
+    ASSERT_GT(own_texels.size(), static_cast<size_t>(2 * P));
+    const int64_t lost_tile_order = lost_beyond(P), all = lost_beyond(0);
+    int64_t slotted = 0, lost_texel_order = 0;
+    std::vector<int> seen(static_cast<size_t>(T * T), 0);  // 1: slotted, 2: refused
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x) {
+        if (at(x, y) == fmt.empty_word()) continue;
+        int& k = seen[static_cast<size_t>((y / 32) * T + x / 32)];
+        if (k == 0) k = slotted < P ? 1 : 2;
+        if (k == 1 && !by_texel_order.has(2, x / 32, y / 32)) {
+          by_texel_order.set(2, x / 32, y / 32, true);
+          ++slotted;
+        }
+        lost_texel_order += k == 2;
+      }
+    // The face path.
+    DisplayMemoryBank pooled(fmt, {}, P), mapped(fmt, by_tile_order);
+    EXPECT_EQ(pooled.write_face(2, words.data(), fmt.empty_word()), mapped.write_face(2, words.data(), fmt.empty_word())) << S;
+    EXPECT_EQ(pooled.writes_lost_pool_full(), lost_tile_order) << S;
+    EXPECT_EQ(mapped.writes_lost_off_tiles(), lost_tile_order) << S;
+    EXPECT_EQ(pooled.writes_lost_off_tiles(), 0);
+    EXPECT_EQ(pooled.tiles_most_at_once(), P);
+    EXPECT_EQ(pooled.tiles_allocated(), mapped.tiles_allocated()) << S;
+    expect_same_tiles(pooled, mapped, {2});
+    // The texel path.
+    DisplayMemoryBank pooled_texels(fmt, {}, P), mapped_texels(fmt, by_texel_order);
+    for (DisplayMemoryBank* b : {&pooled_texels, &mapped_texels})
+      for (int y = 0; y < S; ++y)
+        for (int x = 0; x < S; ++x)
+          if (const uint64_t w = at(x, y); w != fmt.empty_word()) b->write(2, x, y, texel_color(w), texel_depth(w));
+    EXPECT_EQ(pooled_texels.writes_lost_pool_full(), lost_texel_order) << S;
+    EXPECT_EQ(pooled_texels.texels_written(), mapped_texels.texels_written()) << S;
+    expect_same_tiles(pooled_texels, mapped_texels, {2});
+    // Both buffers share the slots: an image of P tiles shown keeps them, so the back buffer, cleared, gets none
+    // of a pool of P; a pool of 2P gives it P. Drawing again on the tiles a buffer has takes no slot.
+    std::vector<uint64_t> first_p = words;  // the texels of the first P tiles only
+    for (int y = 0; y < S; ++y)
+      for (int x = 0; x < S; ++x)
+        if (!by_tile_order.has(2, x / 32, y / 32)) first_p[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = fmt.empty_word();
+    for (const int64_t slots : {P, 2 * P}) {
+      DisplayMemoryBank b(fmt, {}, slots);
+      b.write_face(2, first_p.data(), fmt.empty_word());
+      ASSERT_EQ(b.writes_lost_pool_full(), 0);
+      b.commit();
+      b.vblank();
+      b.clear_back();
+      const int64_t lost_before = b.writes_lost_pool_full();
+      b.write_face(2, words.data(), fmt.empty_word());
+      EXPECT_EQ(b.tiles_most_at_once(), slots) << slots;
+      EXPECT_EQ(b.writes_lost_pool_full() - lost_before, slots == P ? all : lost_tile_order) << slots;
+      const int64_t lost_again = b.writes_lost_pool_full();
+      b.write_face(2, words.data(), fmt.empty_word());  // the same tiles (slotted or refused) again
+      EXPECT_EQ(b.tiles_most_at_once(), slots) << slots;
+      EXPECT_EQ(b.writes_lost_pool_full() - lost_again, slots == P ? all : lost_tile_order) << slots;
+      // Cleared, the back buffer's refusals go too: with the shown image's P slots freed by a swap and a clear,
+      // it takes P tiles again.
+      b.commit();
+      b.vblank();
+      b.clear_back();
+      b.commit();
+      b.vblank();
+      b.clear_back();
+      const int64_t lost_last = b.writes_lost_pool_full();
+      b.write_face(2, words.data(), fmt.empty_word());
+      EXPECT_EQ(b.writes_lost_pool_full() - lost_last, lost_beyond(slots)) << slots;
+    }
+  }
+}
+
 // A memory set gives each memory's banks, every eye's, that memory's tiles.
 TEST(DisplayMemorySet, EachMemoryHoldsItsOwnTiles) {
   MemoryConfig mc;

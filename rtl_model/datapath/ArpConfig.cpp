@@ -128,6 +128,11 @@ ParameterTable<ArpConfig> make_parameters() {
               "faces +X -X +Y -Y +Z -Z, each \"*\" (every tile), \"-\" (none) or hex digits, tile k = ty x T + tx at bit k % 4 of "
               "digit k / 4 (T tiles a row); a texel drawn on a tile a memory does not hold is lost and counted, as on an absent "
               "face (arpsim plan writes the tiles its scene's motion can draw on; docs/planning.md)");
+  t.number_list("memory.tile_pool", [](auto& c) -> auto& { return c.memory.tile_pool; }, 16, 0, int64_t{1} << 24, "tiles",
+                "a tile pool per memory, one number per memory (none: no pool): that many 32 x 32 tile slots shared by the "
+                "memory's two buffers, each buffer's tile table naming its tiles' slots; a tile first drawn on while every "
+                "slot is taken gets none until its buffer is cleared, its texels lost and counted; 0: no pool for that memory "
+                "(arpsim plan sizes them from the motion; docs/planning.md)");
   t.number("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
   t.number("memory.update_ratio", [](auto& c) -> auto& { return c.memory.update_ratio; }, 1, 64, "",
@@ -237,6 +242,9 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
             ck.fail("memory.tiles", "memory " + std::to_string(m) + " holds tiles on face " + std::string(face_name(f)) +
                                         ", which memory.faces leaves out (\"-\" there)");
   }
+  if (!c.memory.tile_pool.empty() && static_cast<int>(c.memory.tile_pool.size()) != c.memory.count)
+    ck.fail("memory.tile_pool", "has " + std::to_string(c.memory.tile_pool.size()) + " numbers and memory.count is " +
+                                    std::to_string(c.memory.count) + ": one for each memory, or none (no pool)");
   const auto& l = c.lens;
   if (std::abs(l.center_offset_px) >= t.h_active / 2.0)
     ck.fail("lens.center_offset_px", "must be less than half of display.h_active in magnitude");

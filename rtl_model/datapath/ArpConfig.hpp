@@ -94,6 +94,12 @@ struct MemoryConfig {
   // The 32 x 32 tiles each memory holds (dp::TileMap's text, one string per memory; none: every tile of every
   // face present). `arpsim plan` writes the tiles its scene's motion can draw on.
   std::vector<std::string> tiles{};
+  // A tile pool per memory (one number per memory; none: no pool anywhere): that many 32 x 32 tile slots,
+  // shared by the memory's two buffers, each buffer's tile table naming the slot of each of its tiles. A
+  // tile whose own texels are first drawn while every slot is taken gets none until its buffer is cleared:
+  // its texels are lost and counted. 0: that memory has no pool (its tiles or whole faces, both buffers).
+  // `arpsim plan` sizes the pools from its scene's motion (docs/planning.md).
+  std::vector<int64_t> tile_pool{};
   // Object-level priority rendering (Regan & Pose): memory m is updated every
   // update_frames x update_ratio^m display frames (1, 2, 4, 8 by default).
   int update_frames = 1;
@@ -109,6 +115,7 @@ struct MemoryConfig {
     for (const int f : faces) n += f;
     return n;
   }
+  int64_t pool_slots(int m) const { return tile_pool.empty() ? 0 : tile_pool.at(static_cast<size_t>(m)); }  // 0: none
   std::string absent_face_names() const;  // "+Y, -Y" ("none" when every face is present)
   // Frames between host updates of memory m (validate() keeps it within kMaxUpdateFrames).
   int64_t frames_per_update(int m) const { return update_period_frames(update_frames, update_ratio, m); }

@@ -15,12 +15,14 @@ uint32_t MemoryFormat::pack_rgb8(int r8, int g8, int b8) const {
   return pack_color(q(r8, red_bits), q(g8, green_bits), q(b8, blue_bits));
 }
 
-DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f, TileMap tiles)
+DisplayMemoryBank::DisplayMemoryBank(const MemoryFormat& f, TileMap tiles, int64_t pool_slots)
     : fmt_(f),
       tiles_per_row_(tiles_per_row_of(f.face_size)),
       tiles_(std::move(tiles)),
       empty_tile_(kTileWords, f.empty_word()),
-      empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0) {
+      empty_index_(static_cast<size_t>(tiles_per_row_) * tiles_per_row_, 0),
+      pool_slots_(pool_slots) {
+  if (pool_slots < 0) throw std::invalid_argument("DisplayMemoryBank: a tile pool of " + std::to_string(pool_slots) + " slots");
   if (tiles_.tiles_per_row() != 0 && tiles_.tiles_per_row() != tiles_per_row_)
     throw std::invalid_argument("DisplayMemoryBank: a tile map of " + std::to_string(tiles_.tiles_per_row()) +
                                 " tiles a row for faces of " + std::to_string(tiles_per_row_));
@@ -83,6 +85,10 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
     ++lost_tiles_;
     return;
   }
+  if (!take_slot(face, tx, ty)) {
+    ++lost_pool_;
+    return;
+  }
   ++written_;
   put(face, tx, ty, lx, ly, word);
   mark_own(face, tx, ty);
@@ -90,6 +96,19 @@ void DisplayMemoryBank::write(int face, int x, int y, uint32_t color, uint32_t d
   if (lx == 0 && tx > 0) put(face, tx - 1, ty, kTile, ly, word);
   if (ly == 0 && ty > 0) put(face, tx, ty - 1, lx, kTile, word);
   if (lx == 0 && ly == 0 && tx > 0 && ty > 0) put(face, tx - 1, ty - 1, kTile, kTile, word);
+}
+
+bool DisplayMemoryBank::take_slot(int face, int tx, int ty, int64_t pending) {
+  if (pool_slots_ == 0 || own_here(face, tx, ty)) return true;
+  Buffer& b = buffers_[back_];
+  const size_t k = static_cast<size_t>(ty * tiles_per_row_ + tx);
+  auto& r = b.refused[static_cast<size_t>(face)];
+  if (!r.empty() && r[k]) return false;
+  if (buffers_[0].own_tiles + buffers_[1].own_tiles + pending < pool_slots_) return true;
+  if (r.empty()) r.assign(static_cast<size_t>(tiles_per_row_) * static_cast<size_t>(tiles_per_row_), 0);
+  r[k] = 1;
+  b.any_refused[static_cast<size_t>(face)] = true;
+  return false;
 }
 
 void DisplayMemoryBank::mark_own(int face, int tx, int ty) {
@@ -125,7 +144,7 @@ int64_t DisplayMemoryBank::write_face(int face, const uint64_t* words, uint64_t 
 // Tile (tx, ty) holds texels x0 .. x0 + 32 and y0 .. y0 + 32 (its apron: the first column and row of the
 // tiles to its right and below): it is touched iff a written texel lies in that window, as write() touches it.
 bool DisplayMemoryBank::window_written(int face, const uint64_t* words, int tx, int ty, uint64_t skip) const {
-  return (holds(face, tx, ty) && own_written(words, tx, ty, skip)) || apron_written(face, words, tx, ty, skip);
+  return (holds_back(face, tx, ty) && own_written(words, tx, ty, skip)) || apron_written(face, words, tx, ty, skip);
 }
 
 // Whether any word of tile (tx, ty)'s apron -- texel column x0 + 32 (rows y0 .. y0 + 31: the right
@@ -135,13 +154,13 @@ bool DisplayMemoryBank::apron_written(int face, const uint64_t* words, int tx, i
   const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
   const size_t row = static_cast<size_t>(S);
   const bool right = x0 + kTile < S, down = y0 + kTile < S;
-  if (right && holds(face, tx + 1, ty))
+  if (right && holds_back(face, tx + 1, ty))
     for (int y = y0; y < std::min(y0 + kTile, S); ++y)
       if (words[static_cast<size_t>(y) * row + static_cast<size_t>(x0 + kTile)] != skip) return true;
-  if (right && down && holds(face, tx + 1, ty + 1) &&
+  if (right && down && holds_back(face, tx + 1, ty + 1) &&
       words[static_cast<size_t>(y0 + kTile) * row + static_cast<size_t>(x0 + kTile)] != skip)
     return true;
-  if (down && holds(face, tx, ty + 1))
+  if (down && holds_back(face, tx, ty + 1))
     for (int x = x0; x < std::min(x0 + kTile, S); ++x)
       if (words[static_cast<size_t>(y0 + kTile) * row + static_cast<size_t>(x)] != skip) return true;
   return false;
@@ -192,7 +211,25 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
     if (bad) throw std::out_of_range("depth code wider than the memory's depth format");
     count[f] = c;
   }
-  int64_t stored = 0, lost = 0, lost_off = 0;
+  int64_t stored = 0, lost = 0, lost_off = 0, lost_pool = 0;
+  if (pool_slots_ > 0) {  // slots first, face by face, tiles row-major: which tiles store their own texels
+    int64_t promised = 0;
+    for (size_t f = 0; f < 6; ++f) {
+      if (!words[f] || !fmt_.present[f] || count[f] == 0) continue;
+      for (int ty = 0; ty < tiles_per_row_; ++ty)
+        for (int tx = 0; tx < tiles_per_row_; ++tx) {
+          const int face = static_cast<int>(f);
+          if (!holds(face, tx, ty) || own_here(face, tx, ty) || !own_written(words[f], tx, ty, skip)) continue;
+          if (take_slot(face, tx, ty, promised)) {
+            ++promised;
+            continue;
+          }
+          const int64_t texels = own_count(words[f], tx, ty, skip);
+          count[f] -= texels;
+          lost_pool += texels;
+        }
+    }
+  }
   std::vector<std::array<int, 3>> fresh;  // (face, tx, ty) of the tiles to allocate, in write_face's order
   std::vector<std::array<int, 3>> drawn;  // (face, tx, ty) of the tiles whose own texels are written in this buffer anew
   for (size_t f = 0; f < 6; ++f) {
@@ -217,7 +254,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
         const bool unallocated = table[ty * tiles_per_row_ + tx] == 0, unmarked = !own_here(static_cast<int>(f), tx, ty);
         if (!unallocated && !unmarked) continue;
         // Its own texels once; the apron (the next tile's first column and row) only if they are all skipped.
-        const bool own = holds(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip);
+        const bool own = holds_back(static_cast<int>(f), tx, ty) && own_written(words[f], tx, ty, skip);
         if (own && unmarked) drawn.push_back({static_cast<int>(f), tx, ty});
         if (unallocated && (own || apron_written(static_cast<int>(f), words[f], tx, ty, skip)))
           fresh.push_back({static_cast<int>(f), tx, ty});
@@ -233,6 +270,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   for (const auto& t : drawn) mark_own(t[0], t[1], t[2]);
   lost_ += lost;  // last: a failed allocation above leaves the counts as they were
   lost_tiles_ += lost_off;
+  lost_pool_ += lost_pool;
   written_ += stored;
   return stored;
 }
@@ -253,7 +291,7 @@ void DisplayMemoryBank::store_face(int face, const uint64_t* words, uint64_t ski
         continue;
       }
       uint64_t* out = pool + static_cast<size_t>(tile) * kTileWords;
-      if (face_sparse_[static_cast<size_t>(face)]) {
+      if (face_sparse_[static_cast<size_t>(face)] || buffers_[back_].any_refused[static_cast<size_t>(face)]) {
         store_window_held(face, words, tx, ty, skip, out);
         continue;
       }
@@ -273,8 +311,8 @@ void DisplayMemoryBank::store_window_held(int face, const uint64_t* words, int t
   const int S = fmt_.face_size, x0 = tx * kTile, y0 = ty * kTile;
   const int w = std::min(kTile, S - x0), h = std::min(kTile, S - y0);
   const bool right = x0 + kTile < S, down = y0 + kTile < S;
-  const bool own = holds(face, tx, ty), col = right && holds(face, tx + 1, ty), row = down && holds(face, tx, ty + 1),
-             corner = right && down && holds(face, tx + 1, ty + 1);
+  const bool own = holds_back(face, tx, ty), col = right && holds_back(face, tx + 1, ty), row = down && holds_back(face, tx, ty + 1),
+             corner = right && down && holds_back(face, tx + 1, ty + 1);
   auto copy = [&](int ly, int lx0, int n) {
     const uint64_t* src = words + static_cast<size_t>(y0 + ly) * static_cast<size_t>(S) + static_cast<size_t>(x0 + lx0);
     uint64_t* dst = out + tile_word(lx0, ly);
@@ -294,6 +332,8 @@ void DisplayMemoryBank::clear_back() {
   std::vector<uint64_t>().swap(b.pool);
   for (auto& o : b.own) std::fill(o.begin(), o.end(), uint8_t{0});
   b.own_tiles = 0;
+  for (auto& r : b.refused) std::fill(r.begin(), r.end(), uint8_t{0});
+  b.any_refused.fill(false);
 }
 
 bool DisplayMemoryBank::vblank() {
@@ -319,11 +359,15 @@ size_t DisplayMemoryBank::bytes_allocated() const {
   return bytes;
 }
 
-DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes) : fmt_(m), tiles_(m.tiles), eyes_(eyes), count_(m.count) {
+DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes)
+    : fmt_(m), tiles_(m.tiles), pool_(m.tile_pool), eyes_(eyes), count_(m.count) {
+  if (!pool_.empty() && static_cast<int>(pool_.size()) != count_)
+    throw std::invalid_argument("memory.tile_pool has " + std::to_string(pool_.size()) + " numbers for " + std::to_string(count_) +
+                                " memories (the configuration was not validated)");
   std::vector<TileMap> maps;
   if (std::string why; !tile_maps(m, maps, why)) throw std::invalid_argument("memory.tiles " + why + " (the configuration was not validated)");
   for (int e = 0; e < eyes; ++e)
-    for (int k = 0; k < count_; ++k) banks_.push_back(std::make_unique<DisplayMemoryBank>(fmt_, maps[static_cast<size_t>(k)]));
+    for (int k = 0; k < count_; ++k) banks_.push_back(std::make_unique<DisplayMemoryBank>(fmt_, maps[static_cast<size_t>(k)], m.pool_slots(k)));
 }
 
 void DisplayMemorySet::vblank() {
@@ -354,6 +398,12 @@ int64_t DisplayMemorySet::writes_lost_off_tiles() const {
   return n;
 }
 
+int64_t DisplayMemorySet::writes_lost_pool_full() const {
+  int64_t n = 0;
+  for (const auto& b : banks_) n += b->writes_lost_pool_full();
+  return n;
+}
+
 int64_t DisplayMemorySet::tiles_ever_written(int memory) const {
   int64_t n = 0;
   for (int e = 0; e < eyes_; ++e) n += bank(e, memory).tiles_ever_written();
@@ -377,7 +427,8 @@ bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
   const MemoryFormat want(c.memory);
   return mem.eyes() == c.timing.eyes && mem.count() == c.memory.count && f.face_size == want.face_size &&
          f.red_bits == want.red_bits && f.green_bits == want.green_bits && f.blue_bits == want.blue_bits &&
-         f.depth_bits == want.depth_bits && mem.tiles_text() == c.memory.tiles;
+         f.depth_bits == want.depth_bits && mem.tiles_text() == c.memory.tiles &&
+         mem.tile_pool() == c.memory.tile_pool;
 }
 
 bool DisplayMemoryBank::front_tiles_in_order() const {

@@ -77,7 +77,13 @@ class DisplayMemoryBank {
   // lost and counted (writes_lost_off_tiles), and so are its copies in its neighbours' aprons: such a tile reads
   // empty, as in a tile-sparse memory without it. A tile not held may still be allocated here to carry the
   // apron of a held neighbour (the model's copy of that neighbour's edge, not storage of its own).
-  explicit DisplayMemoryBank(const MemoryFormat& f, TileMap tiles = {});
+  // `pool_slots` > 0: a tile pool (memory.tile_pool) -- at most that many tiles, both buffers together, have
+  // their own texels stored; a tile whose first own texel is drawn while every slot is taken gets none until its
+  // buffer is cleared: its texels, and their copies in its neighbours' aprons, are lost and counted
+  // (writes_lost_pool_full), and it reads empty, as a tile not held does. Which tiles miss out depends on the
+  // order they are drawn in: write() texel by texel, write_face and reserve_faces face by face (+X .. -Z),
+  // tiles row-major. 0: no pool.
+  explicit DisplayMemoryBank(const MemoryFormat& f, TileMap tiles = {}, int64_t pool_slots = 0);
   DisplayMemoryBank(const DisplayMemoryBank&) = delete;
   DisplayMemoryBank& operator=(const DisplayMemoryBank&) = delete;
 
@@ -104,6 +110,8 @@ class DisplayMemoryBank {
   void store_face(int face, const uint64_t* words, uint64_t skip);
   int64_t writes_lost() const { return lost_; }  // texels written to absent faces, ever
   int64_t writes_lost_off_tiles() const { return lost_tiles_; }  // texels written to tiles not held on faces present, ever
+  int64_t writes_lost_pool_full() const { return lost_pool_; }  // texels written to held tiles the pool had no slot for, ever
+  int64_t pool_slots() const { return pool_slots_; }            // 0: no pool
   const TileMap& tiles() const { return tiles_; }
   bool holds(int face, int tx, int ty) const { return !tile_sparse_ || tiles_.has(face, tx, ty); }
   bool holds_every_tile() const { return !tile_sparse_; }  // of every face present
@@ -150,7 +158,19 @@ class DisplayMemoryBank {
     std::vector<uint64_t> pool;                 // empty until the first write; then tile 0 is the empty tile
     std::array<std::vector<uint8_t>, 6> own;    // per face, row-major by tile: 1 once its own texels are written here
     int64_t own_tiles = 0;                      // how many are 1
+    std::array<std::vector<uint8_t>, 6> refused;  // per face, row-major by tile: 1 once the pool had no slot for it
+    std::array<bool, 6> any_refused{};
   };
+  // Whether tile (tx, ty) stores its own texels in the back buffer: held (memory.tiles) and not refused a slot.
+  bool holds_back(int face, int tx, int ty) const {
+    if (!holds(face, tx, ty)) return false;
+    const auto& r = buffers_[back_].refused[static_cast<size_t>(face)];
+    return r.empty() || r[static_cast<size_t>(ty * tiles_per_row_ + tx)] == 0;
+  }
+  // A held tile whose own texels are not yet stored in the back buffer asks the pool for a slot: false (and the
+  // tile refused until the buffer is cleared) when every slot is taken. `pending`: slots promised but not yet
+  // marked (reserve_faces). Always true without a pool.
+  bool take_slot(int face, int tx, int ty, int64_t pending = 0);
   bool own_here(int face, int tx, int ty) const {  // its own texels written in the back buffer
     const auto& o = buffers_[back_].own[static_cast<size_t>(face)];
     return !o.empty() && o[static_cast<size_t>(ty * tiles_per_row_ + tx)] != 0;
@@ -190,6 +210,8 @@ class DisplayMemoryBank {
   std::vector<int32_t> empty_index_;   // the tile table of a never-written face: all tile 0
   int64_t lost_ = 0;
   int64_t lost_tiles_ = 0;
+  int64_t lost_pool_ = 0;
+  int64_t pool_slots_ = 0;
   int64_t written_ = 0;
   int64_t most_at_once_ = 0;
   std::array<std::vector<uint8_t>, 6> ever_;  // per face, row-major by tile: 1 once its own texels were written
@@ -204,6 +226,7 @@ class DisplayMemorySet {
  public:
   DisplayMemorySet(const MemoryConfig& m, int eyes);  // std::invalid_argument for a malformed memory.tiles
   const std::vector<std::string>& tiles_text() const { return tiles_; }
+  const std::vector<int64_t>& tile_pool() const { return pool_; }
   int eyes() const { return eyes_; }
   int count() const { return count_; }
   const MemoryFormat& format() const { return fmt_; }
@@ -216,6 +239,7 @@ class DisplayMemorySet {
   size_t tiles_allocated() const;  // written tiles, every bank
   int64_t writes_lost() const;     // texels written to absent faces (memory.faces), every bank
   int64_t writes_lost_off_tiles() const;  // texels written to tiles not held (memory.tiles), every bank
+  int64_t writes_lost_pool_full() const;  // texels written to tiles their pool had no slot for (memory.tile_pool), every bank
   int64_t texels_written() const;  // texels stored (host renders and preloads), every bank, ever
   int64_t tiles_ever_written(int memory) const;  // DisplayMemoryBank::tiles_ever_written, memory's banks (every eye)
   int64_t tiles_most_at_once(int memory) const;  // DisplayMemoryBank::tiles_most_at_once, the most of memory's banks
@@ -223,12 +247,13 @@ class DisplayMemorySet {
  private:
   MemoryFormat fmt_;
   std::vector<std::string> tiles_;  // memory.tiles
+  std::vector<int64_t> pool_;       // memory.tile_pool
   int eyes_, count_;
   std::vector<std::unique_ptr<DisplayMemoryBank>> banks_;
 };
 
 // Whether a memory set is the one a configuration describes: its eyes,
-// memory count, format (what a frame renderer reads it with) and tiles held.
+// memory count, format (what a frame renderer reads it with), tiles held and tile pools.
 bool matches(const DisplayMemorySet& mem, const ArpConfig& c);
 
 }  // namespace arp::dp
