@@ -264,6 +264,7 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
 int64_t ladder_memory_bytes(dp::ArpConfig c, const LadderLoad& L, int depth_bits) {
   c.memory.count = L.count;
   c.memory.tiles.clear();
+  c.memory.tile_pool.clear();
   c.memory.depth_bits = depth_bits;
   return display_memory_bytes(c);
 }
@@ -380,6 +381,16 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   return out;
 }
 
+// Every tile of the faces `c` has, as memory.tiles lists it.
+std::string every_tile_text(const dp::ArpConfig& c) {
+  dp::TileMap t(c.memory.face_size, true);
+  for (int f = 0; f < 6; ++f)
+    if (c.memory.faces[static_cast<size_t>(f)] == 0)
+      for (int ty = 0; ty < t.tiles_per_row(); ++ty)
+        for (int tx = 0; tx < t.tiles_per_row(); ++tx) t.set(f, tx, ty, false);
+  return t.text();
+}
+
 // The tiles each memory of `c` holds for a tile bound: only those it can be drawn on where that takes less
 // than whole faces (and `tile_sparse`), every tile of the faces present otherwise (a memory drawn on nearly
 // everywhere would pay for whole 32 x 32 slots and a tile table for little; one no object reaches keeps its
@@ -396,12 +407,7 @@ HeldTiles held_tiles(const dp::ArpConfig& c, const TileBound& b, bool tile_spars
     const bool sparse = tile_sparse && reach > 0 && tiles_take_less(c, reach);
     any |= sparse;
     out.sparse.push_back(sparse);
-    dp::TileMap held = b.maps[m];
-    if (!sparse)
-      for (int f = 0; f < 6; ++f)
-        for (int ty = 0; ty < b.tiles_per_row; ++ty)
-          for (int tx = 0; tx < b.tiles_per_row; ++tx) held.set(f, tx, ty, c.memory.faces[static_cast<size_t>(f)] != 0);
-    out.texts.push_back(held.text());
+    out.texts.push_back(sparse ? b.maps[m].text() : every_tile_text(c));
   }
   if (!any) out.texts.clear();
   return out;
@@ -410,6 +416,7 @@ HeldTiles held_tiles(const dp::ArpConfig& c, const TileBound& b, bool tile_spars
 // `c`'s hardware display memory holding the tiles of `b` as held_tiles puts them.
 int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse) {
   c.memory.tiles = held_tiles(c, b, tile_sparse).texts;
+  c.memory.tile_pool.clear();
   return display_memory_bytes(c);
 }
 
@@ -515,8 +522,10 @@ Plan make_plan(const PlanRequest& r) {
   // The tiles are planned anew (a plan started from a plan's configuration), and the starting configuration's
   // memory weighed as whole faces, as every ladder is.
   p.config.memory.tiles.clear();
+  p.config.memory.tile_pool.clear();
   dp::ArpConfig base_whole = r.base;
   base_whole.memory.tiles.clear();
+  base_whole.memory.tile_pool.clear();
   auto progress = [&](double f, const std::string& w) {
     if (r.progress) r.progress(f, w);
   };
@@ -883,9 +892,10 @@ Plan make_plan(const PlanRequest& r) {
     // Memory by memory: only the tiles where that takes less than whole faces (held_tiles).
     const int64_t whole = int64_t{p.config.memory.faces_present()} * p.tiles.tiles_per_row * p.tiles.tiles_per_row;
     const double whole_one = static_cast<double>(bank_bits_whole(p.config)) / 8;  // one eye's bank, whole faces
-    const HeldTiles held = held_tiles(p.config, p.tiles, r.tile_sparse);
+    HeldTiles held = held_tiles(p.config, p.tiles, r.tile_sparse);
     std::string value;
-    int64_t pooled_bits = 0;  // one eye's banks with a tile pool where that takes less (costed, not modelled)
+    int64_t pooled_bits = 0;  // one eye's banks with a tile pool where that takes less
+    std::vector<int64_t> pools(p.tiles.maps.size(), 0);
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
       const int64_t reach = p.tiles.per_memory[m];
       const double tiled_one = static_cast<double>(bank_bits_tiled(p.config, reach)) / 8;
@@ -897,10 +907,23 @@ Plan make_plan(const PlanRequest& r) {
                                 " slots " + fmt("%.1f", static_cast<double>(bank_bits_pooled(p.config, p.tiles.pooled[m])) / 8 / 1048576.0) + " MiB"
                           : std::string()) + ")";
       const int64_t held_bits = held.sparse[m] ? bank_bits_tiled(p.config, reach) : bank_bits_whole(p.config);
-      pooled_bits += reach > 0 ? std::min(held_bits, bank_bits_pooled(p.config, p.tiles.pooled[m])) : held_bits;
+      const bool pool = reach > 0 && bank_bits_pooled(p.config, p.tiles.pooled[m]) < held_bits;
+      pooled_bits += pool ? bank_bits_pooled(p.config, p.tiles.pooled[m]) : held_bits;
+      if (pool && r.tile_sparse && r.tile_pool) pools[m] = p.tiles.pooled[m];
     }
     p.memory_bytes_pooled = (int64_t{p.config.timing.eyes} * pooled_bits + 7) / 8;
+    p.memory_bytes_fixed_tiles = bytes_as_planned(p.config, p.tiles, r.tile_sparse);
+    // A memory with a pool holds every tile of the faces present: its tile tables address them all, and the pool
+    // bounds how many are stored at once.
+    bool any_pool = false, any_fixed = false;
+    for (size_t m = 0; m < pools.size(); ++m) {
+      any_pool |= pools[m] > 0;
+      if (pools[m] > 0 && !held.texts.empty()) held.texts[m] = every_tile_text(p.config);
+      any_fixed |= pools[m] == 0 && held.sparse[m];
+    }
+    if (!any_fixed) held.texts.clear();
     p.config.memory.tiles = held.texts;
+    if (any_pool) p.config.memory.tile_pool = pools;
     p.choices.push_back(
         {"memory.tiles", value,
          "each memory's objects' boxes (grown as for the faces above, and by how far an animated object moves in a sample "
@@ -908,16 +931,31 @@ Plan make_plan(const PlanRequest& r) {
          "put in within twice the slowest memory's period: a memory holds only those tiles (whole 32 x 32 slots, and a "
          "tile table for its bank) where that takes less than whole faces" +
              (!r.tile_sparse ? std::string(" (--whole-faces: every tile everywhere)") : std::string()) + "; all memories " +
-             fmt("%.1f", static_cast<double>(display_memory_bytes(p.config)) / 1048576.0) + " MiB against " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces. "
-             "A tile pool per bank instead (slots both buffers share, a tile allocated as it is drawn and freed when its "
-             "buffer is drawn again; costed here, not modelled) would need, per memory, the most tiles drawn on at one point of "
-             "the motion and at one to two update periods before together: " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes less. "
-             "A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
+             fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " MiB so against " +
+             fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces" +
+             (any_pool ? " (a memory with a tile pool below holds every tile instead: its pool bounds how many at once)" : "") +
+             ". A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
              "footprint.texels_lost_off_tiles, and the run warns); its report gives the tiles it drew on, every eye's banks "
              "together (footprint.display_memory_tiles_drawn_on)"});
+    std::string pool_value;
+    for (size_t m = 0; m < pools.size(); ++m) pool_value += (m ? ", " : "") + std::to_string(pools[m]);
+    p.choices.push_back(
+        {"memory.tile_pool", any_pool ? "[" + pool_value + "]" : "none",
+         "a tile pool per bank (slots both buffers share, a tile given a slot as its own texels are first drawn and the slot "
+         "freed when its buffer is cleared for the next render) needs, per memory, the most tiles drawn on at one point of the "
+         "motion and at one to two update periods before together (the image being drawn and the one shown; two periods for "
+         "a render skipped or a swap held for a slower memory): " +
+             fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes "
+             "less than its tiles or whole faces, against " + fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) +
+             " MiB with fixed tiles" +
+             (!r.tile_sparse ? std::string(": not taken (--whole-faces)")
+              : !r.tile_pool ? std::string(": not taken (--fixed-tiles)")
+              : !any_pool    ? std::string(": no memory's pool takes less")
+                             : std::string(". The bound is from the motion's sampled points, not a proof: a run whose pool "
+                                           "is full loses the texels of the tiles it had no slot for, counts them in "
+                                           "footprint.texels_lost_tile_pool_full and warns; its "
+                                           "footprint.display_memory_tiles_most_at_once gives the slots it used"))});
   }
   p.not_decided.push_back("a face size per memory (one face size for every memory)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
@@ -962,6 +1000,7 @@ Plan make_plan(const PlanRequest& r) {
       by_regions.memory.region_size_m = best->size_m;
       by_regions.memory.region_margin_m = best->margin_m;
       by_regions.memory.tiles.clear();
+      by_regions.memory.tile_pool.clear();
       by_regions.memory.depth_bits = std::max(p.config.memory.depth_bits, depth_bits_for(p.planned.count, r.base));
     }
     const bool saves = best && best->triangles_per_s < p.planned.triangles_per_s * (1 - r.load_tolerance);
@@ -1083,9 +1122,13 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   const std::string unused = p.config.memory.region_size_m > 0 ? ", object-level: not used by regions" : "";
   s += "| display memory, tile-sparse (the tiles the motion can draw on" + unused + ", MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
-  s += "| display memory with a tile pool per bank (costed, not modelled" + unused + ", MiB) | | " +
+  s += "| display memory, tile-sparse with fixed tiles where they take less (memory.tiles alone" + unused + ", MiB) | | " +
+       fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " |\n";
+  s += "| display memory with a tile pool per bank where that takes less (memory.tile_pool" + unused + ", MiB) | | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " |\n";
-  s += "| display memory as planned (" + std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") + ", hardware, MiB) | " +
+  const std::string held_as = std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") +
+                              (p.config.memory.tile_pool.empty() ? "" : ", memory.tile_pool");
+  s += "| display memory as planned (" + held_as + ", hardware, MiB) | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
        fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
   s += "\nThe tiles each memory can be drawn on are pictured in the `.tiles.png` `arpsim plan` writes beside this file: a row for each memory, "

@@ -50,6 +50,9 @@ struct PlanRequest {
   // false (--whole-faces): every tile of the faces present (no memory.tiles), a display memory without a
   // tile table; true: the tiles the motion can draw on where that takes less memory than whole faces.
   bool tile_sparse = true;
+  // false (--fixed-tiles): each memory keeps the fixed tiles above and no tile pool; true: a memory takes a tile
+  // pool (memory.tile_pool) where that takes less than its tiles or whole faces.
+  bool tile_pool = true;
   // false (--objects-only): keep object-level priority without weighing region priority rendering.
   bool weigh_regions = true;
   // true (--take-regions): take region priority rendering where the weighing finds it keeps objects within theta_t
@@ -111,7 +114,7 @@ struct TileBound {
   // they take less memory than whole faces.
   std::vector<dp::TileMap> maps;
   std::vector<int64_t> per_memory;  // tiles of one eye's bank of each memory (each eye's is bounded alike)
-  // A tile pool instead (costed by the plan, not modelled), per memory: the most tiles its objects can be drawn
+  // A tile pool instead (memory.tile_pool), per memory: the most tiles its objects can be drawn
   // on at one sample of the motion (one image's: `at_once`), and at one sample and one update period before
   // together (the image being drawn and the one shown: `pooled`, slots a pool both buffers share would need).
   std::vector<int64_t> at_once, pooled;
@@ -152,8 +155,9 @@ struct Plan {
   TileBound tiles;
   int64_t memory_bytes_tiled = 0;
   // The same memories each bank with a tile pool of tiles.pooled slots where that takes less than its tiles or
-  // whole faces (bank_bits_pooled; costed, not modelled), every eye.
-  int64_t memory_bytes_pooled = 0;
+  // whole faces (bank_bits_pooled), every eye -- what the plan takes unless --fixed-tiles -- and each memory with
+  // its fixed tiles where those take less than whole faces, no pool (memory.tiles alone).
+  int64_t memory_bytes_pooled = 0, memory_bytes_fixed_tiles = 0;
   // Region priority rendering weighed at each size (none with --objects-only, or standing); the one taken is
   // config.memory.region_size_m (0: objects).
   std::vector<RegionLoad> regions;

@@ -81,9 +81,14 @@ Runner add_plan_command(CLI::App& app) {
                          "Take region priority rendering where it keeps objects within theta_t as well as objects do and renders "
                          "less (by default it is weighed and reported only: its tearing between regions is not bounded)")
       ->excludes(objects_only);
-  cmd->add_flag_function("--whole-faces", [a](int64_t) { a->req.tile_sparse = false; },
-                "Keep every tile of the faces present (no memory.tiles: a display memory without a tile table); by "
-                "default the memories hold only the tiles the motion can draw on where that takes less memory");
+  auto* whole = cmd->add_flag_function("--whole-faces", [a](int64_t) { a->req.tile_sparse = false; },
+                "Keep every tile of the faces present (no memory.tiles, no memory.tile_pool: a display memory without a tile "
+                "table); by default the memories hold only the tiles the motion can draw on, or a tile pool, where that takes "
+                "less memory");
+  cmd->add_flag_function("--fixed-tiles", [a](int64_t) { a->req.tile_pool = false; },
+                         "Hold the tiles the motion can draw on without a tile pool (no memory.tile_pool); by default a memory "
+                         "takes a pool of the most tiles it draws on at once where that takes less memory")
+      ->excludes(whole);
   cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_plan(*a); };
