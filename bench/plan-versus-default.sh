@@ -49,15 +49,15 @@ still default
 # The plan's tiles (memory.tiles) are bounded for the walk: standing, the priority rule would put every object in
 # the slowest memory, outside them; the host keeps each in a memory holding its tiles (said after the table).
 still plan --config "$tmp/plan.json"
-echo "| configuration | memories | face | display memory, hardware MiB | tile-sparse MiB (the tiles this run drew on) | modelled peak MiB | texels lost walking (absent faces, tiles) | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
+echo "| configuration | memories | face | display memory, hardware MiB | tile-sparse MiB (the tiles this run drew on) | modelled peak MiB | texels lost walking (absent faces, tiles, tile pool full) | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for name in default plan; do
   jq -r --arg n "$name" --slurpfile still "$tmp/still-$name.json" '(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000 - .host.error.wall_seconds) as $pipe |
     "| \($n) | \(.config.memory.count) every \(.config.memory.update_frames) x \(.config.memory.update_ratio)^m | \(.config.memory.face_size) | " +
     "\(.footprint.display_memory_bytes_hardware / 1048576 * 10 | round / 10) | \(.footprint.display_memory_bytes_hardware_tiled / 1048576 * 10 | round / 10) | " +
-    "\(.footprint.display_memory_bytes_peak / 1048576 * 10 | round / 10) | \(.footprint.texels_lost_on_absent_faces), \(.footprint.texels_lost_off_tiles) | " +
+    "\(.footprint.display_memory_bytes_peak / 1048576 * 10 | round / 10) | \(.footprint.texels_lost_on_absent_faces), \(.footprint.texels_lost_off_tiles), \(.footprint.texels_lost_tile_pool_full) | " +
     "\(.host.host_wall_ms_per_frame * 10 | round / 10) | \(.simulation.pixel_clocks / $pipe / 1e4 | round / 100) | \(.host.triangles_per_s | round) | " +
     "\(.host.error.mean_psnr_db * 100 | round / 100) | \(.host.error.worst_share_showing_another_object * 10000 | round / 10000) | " +
     "\($still[0].host.error.mean_psnr_db * 100 | round / 100) |"' "$tmp/run-$name.json"
 done
-jq -r '"Standing and turning with the plan: \(.footprint.texels_lost_off_tiles) texels lost off its tiles, \(.host.object_frames_held_faster_for_tiles) object-frames kept in a faster memory than the rule'"'"'s for its tiles, \(.host.triangles_per_s | round) triangles/s."' "$tmp/still-plan.json"
+jq -r '"Standing and turning with the plan: \(.footprint.texels_lost_off_tiles) texels lost off its tiles, \(.footprint.texels_lost_tile_pool_full) for want of a tile slot, \(.host.object_frames_held_faster_for_tiles) object-frames kept in a faster memory than the rule'"'"'s for its tiles, \(.host.object_frames_moved_faster_for_tile_pool) moved to a faster memory for a full tile pool, \(.host.triangles_per_s | round) triangles/s."' "$tmp/still-plan.json"

@@ -957,7 +957,8 @@ Plan make_plan(const PlanRequest& r) {
                                            "footprint.texels_lost_tile_pool_full and warns; its "
                                            "footprint.display_memory_tiles_most_at_once gives the slots it used"))});
   }
-  p.not_decided.push_back("a face size per memory (one face size for every memory)");
+  p.not_decided.push_back("a face size per memory (one face size for every memory: the composition unit composes each bilinear "
+                          "tap across the memories at the same texel position)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
                           " points of the motion rendered for it: each other point interpolates the two around it, so an "
                           "object that comes close between two of them and leaves again is under-counted");

@@ -36,25 +36,65 @@ HostSimulation::HostSimulation(const Scene& scene, const PriorityConfig& pc, con
   // a walk sized for the far ones only) -- from eyes within half the eyes' distance of the walk's point, grown
   // by how far the eye and the object's own animation move before the engine starts the render (the planner's
   // bound is grown by a sample step, so a walk run as planned with no backlog is never held back).
-  bool sparse = false;
-  for (int m = 0; m < mem.count(); ++m) sparse |= !mem.bank(0, m).holds_every_tile();
+  bool sparse = false, pooled = false;
+  for (int m = 0; m < mem.count(); ++m) {
+    sparse |= !mem.bank(0, m).holds_every_tile();
+    pooled |= mem.bank(0, m).pool_slots() > 0;
+  }
+  if (!sparse && !pooled) return;
+  for (const SceneObject& o : scene.objects) boxes_.push_back(mesh_box(*o.mesh));
+  near_m_ = renderer_.depth().near_m;
   if (!sparse) return;
-  std::vector<std::array<glm::dvec3, 2>> boxes;
-  for (const SceneObject& o : scene.objects) boxes.push_back(mesh_box(*o.mesh));
-  const double near_m = renderer_.depth().near_m, reach = 0.5 * ipd;
-  sched_.set_fits([this, boxes = std::move(boxes), near_m, reach](size_t i, int m, const glm::dvec3& eye, double t) {
+  sched_.set_fits([this](size_t i, int m, const glm::dvec3& eye, double t) {
     const dp::DisplayMemoryBank& bank = mem_.bank(0, m);  // every eye's bank of a memory holds the same tiles
-    if (bank.holds_every_tile()) return true;
-    const int S = bank.format().face_size;
-    const double lag = std::max(0.0, engine_free_ - t);  // a render starts at max(t, engine free)
-    const double margin = reach + walk_.speed() * lag + animation_reach_m(scene_.objects[i], t, lag);
-    for (int f = 0; f < 6; ++f) {
-      if (!bank.format().present[static_cast<size_t>(f)]) continue;  // lost there whatever the memory
-      const TexelRect r = object_face_rect(scene_.objects[i], boxes[i], t, eye, margin, f, S, near_m);
-      if (!each_tile(r, [&](int tx, int ty) { return bank.holds(f, tx, ty); })) return false;
-    }
-    return true;
+    return bank.holds_every_tile() || each_object_tile(i, m, eye, t, [&](int f, int tx, int ty) { return bank.holds(f, tx, ty); });
   });
+}
+
+bool HostSimulation::each_object_tile(size_t i, int m, const glm::dvec3& eye, double t,
+                                      const std::function<bool(int, int, int)>& visit) const {
+  const dp::DisplayMemoryBank& bank = mem_.bank(0, m);
+  const int S = bank.format().face_size;
+  const double lag = std::max(0.0, engine_free_ - t);  // a render starts at max(t, engine free)
+  const double margin = 0.5 * ipd_ + walk_.speed() * lag + animation_reach_m(scene_.objects[i], t, lag);
+  for (int f = 0; f < 6; ++f) {
+    if (!bank.format().present[static_cast<size_t>(f)]) continue;  // lost there whatever the memory
+    const TexelRect r = object_face_rect(scene_.objects[i], boxes_[i], t, eye, margin, f, S, near_m_);
+    if (!each_tile(r, [&](int tx, int ty) { return visit(f, tx, ty); })) return false;
+  }
+  return true;
+}
+
+void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vector<char>& moved, const glm::dvec3& eye, double t) {
+  for (int m = mem_.count() - 1; m >= 0; --m) {
+    const int64_t slots = mem_.bank(0, m).pool_slots();
+    if (!render[static_cast<size_t>(m)] || slots == 0) continue;
+    // The image shown stays in its slots while the new one is drawn (the back buffer is cleared first).
+    int64_t room = slots;
+    for (int e = 0; e < mem_.eyes(); ++e) room = std::min(room, slots - mem_.bank(e, m).front_own_tiles());
+    const int tpr = mem_.bank(0, m).tiles_per_row();
+    std::vector<uint8_t> taken(static_cast<size_t>(6 * tpr * tpr), 0);
+    std::vector<size_t> fresh;
+    for (const size_t i : sched_.objects_in(m)) {
+      fresh.clear();
+      each_object_tile(i, m, eye, t, [&](int f, int tx, int ty) {
+        const size_t k = static_cast<size_t>((f * tpr + ty) * tpr + tx);
+        if (!taken[k]) fresh.push_back(k);
+        return true;
+      });
+      if (static_cast<int64_t>(fresh.size()) <= room) {
+        for (const size_t k : fresh) taken[k] = 1;
+        room -= static_cast<int64_t>(fresh.size());
+        continue;
+      }
+      int k = m - 1;
+      while (k >= 0 && !render[static_cast<size_t>(k)]) --k;
+      if (k < 0) continue;  // no faster memory renders now: drawn here, what the pool has no slot for lost
+      sched_.move_to(i, k);
+      moved[static_cast<size_t>(m)] = moved[static_cast<size_t>(k)] = 1;
+      ++moved_for_pool_;
+    }
+  }
 }
 
 void HostSimulation::use_regions(RegionScheduler* regions, std::vector<int> object_region,
@@ -80,6 +120,11 @@ std::vector<size_t> HostSimulation::objects_for(int m) const {
 void HostSimulation::prime(double t) {
   sched_.assign(walk_.position(t), walk_.speed(), t);
   sched_.settle();
+  if (!regions_ && !boxes_.empty()) {  // every memory renders now: the pools as at any frame
+    const std::vector<char> all(static_cast<size_t>(mem_.count()), 1);
+    std::vector<char> moved(all.size(), 0);
+    keep_within_pools(all, moved, walk_.position(t), t);
+  }
   for (int m = 0; m < mem_.count(); ++m) {
     if (regions_) regions_->rendered(m, walk_.position(t));
     const std::vector<size_t> objs = objects_for(m);
@@ -173,6 +218,7 @@ void HostSimulation::before_frame(int64_t f, double t) {
     sched_.move_to(i, target);
     moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(target)] = 1;
   }
+  if (!regions_ && !boxes_.empty()) keep_within_pools(render, moved, head_pos, t);
   int64_t handover_swap = -1;
   for (int m = 0; m < N; ++m) {
     if (!render[static_cast<size_t>(m)]) continue;

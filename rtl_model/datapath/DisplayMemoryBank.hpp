@@ -127,6 +127,7 @@ class DisplayMemoryBank {
   // The most tiles whose own texels were written, the two buffers together, at any time in the run: the slots
   // a tile pool both buffers share would need for what this run drew (a tile leaves a buffer when it is cleared).
   int64_t tiles_most_at_once() const { return most_at_once_; }
+  int64_t front_own_tiles() const { return buffers_[front_].own_tiles; }  // the image shown's: slots it takes in a pool
   void clear_back();  // the back buffer becomes empty and frees its tiles
   void commit() { committed_ = true; }
   bool committed() const { return committed_; }
