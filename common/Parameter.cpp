@@ -76,10 +76,11 @@ std::string format(const ParamValue& v) {
 }
 
 std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                       const std::vector<std::string>& choices, const std::string& alphabet) {
+                       const std::vector<std::string>& choices, const std::string& alphabet, size_t array_size) {
   switch (t) {
     case ParamType::TextList: return "up to " + compact(imax) + " strings of " + alphabet;
     case ParamType::IntegerList:
+      return "up to " + std::to_string(array_size) + " numbers, each " + compact(imin) + " .. " + compact(imax);
     case ParamType::Integer:
     case ParamType::IntegerArray: return compact(imin) + " .. " + compact(imax);
     case ParamType::Real:

@@ -237,7 +237,7 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
                         const std::vector<std::string>& choices, size_t array_size, const std::string& alphabet,
                         const ParamValue& v);
 std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
-                       const std::vector<std::string>& choices, const std::string& alphabet);
+                       const std::vector<std::string>& choices, const std::string& alphabet, size_t array_size = 0);
 std::string format(const ParamValue& v);
 }  // namespace param_detail
 
@@ -247,7 +247,7 @@ std::string Parameter<Root>::range_error(const ParamValue& v) const {
 }
 template <class Root>
 std::string Parameter<Root>::range_text() const {
-  return param_detail::range_text(type, int_min, int_max, real_min, real_max, choices, alphabet);
+  return param_detail::range_text(type, int_min, int_max, real_min, real_max, choices, alphabet, array_size);
 }
 template <class Root>
 std::string Parameter<Root>::format(const ParamValue& v) {

@@ -1024,7 +1024,10 @@ Plan make_plan(const PlanRequest& r) {
       // The rows above that regions change, rewritten: every tile, the depth code, the memories' updates.
       for (PlanChoice& c : p.choices) {
         const std::string then = " -- replaced: region priority rendering was taken (memory.region_size_m below)";
-        if (c.keys == "memory.tiles") {
+        if (c.keys == "memory.tile_pool") {
+          c.value = "none";
+          c.reason = "regions place objects by region, not where their tiles are: no pool was sized for them" + then;
+        } else if (c.keys == "memory.tiles") {
           c.value = "every tile of the faces present";
           c.reason = "regions place objects by region, not where their tiles are: the object-level bound (plan.md's figures, "
                      "the .tiles.png) is not used" + then;

@@ -115,8 +115,9 @@ struct TileBound {
   std::vector<dp::TileMap> maps;
   std::vector<int64_t> per_memory;  // tiles of one eye's bank of each memory (each eye's is bounded alike)
   // A tile pool instead (memory.tile_pool), per memory: the most tiles its objects can be drawn
-  // on at one sample of the motion (one image's: `at_once`), and at one sample and one update period before
-  // together (the image being drawn and the one shown: `pooled`, slots a pool both buffers share would need).
+  // on at one sample of the motion (one image's: `at_once`), and at one sample and the most of one to two update
+  // periods before together (the image being drawn and the one shown: `pooled`, the slots a pool both buffers
+  // share needs).
   std::vector<int64_t> at_once, pooled;
   bool reachable(int memory, int face, int tx, int ty) const { return maps[static_cast<size_t>(memory)].has(face, tx, ty); }
 };

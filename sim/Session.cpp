@@ -833,7 +833,7 @@ RunSummary Session::run() {
     }
     char b[600];
     std::snprintf(b, sizeof b,
-                  "  warning: %" PRId64 " texels the host drew were lost for want of a tile slot: the tile pool of %s "
+                  "  warning: %" PRId64 " texels drawn into the display memories were lost for want of a tile slot: the tile pool of %s "
                   "was full when they were drawn (memory.tile_pool was sized for another scene, motion or theta_t, or "
                   "is too small; footprint.texels_lost_tile_pool_full)",
                   lost, full.c_str());

@@ -32,6 +32,7 @@ StillFrame render_still(const StillSpec& spec) {
   s.memory_bytes = mem.bytes_allocated();
   s.lost_on_absent_faces = mem.writes_lost();
   s.lost_off_tiles = mem.writes_lost_off_tiles();
+  s.lost_pool_full = mem.writes_lost_pool_full();
   s.refresh_hz = model.timing().refresh_hz();
   return s;
 }
@@ -48,6 +49,7 @@ nlohmann::json still_report(const StillSpec& spec, const StillFrame& f, const st
           {"display_memory_bytes", f.memory_bytes},
           {"texels_lost_on_absent_faces", f.lost_on_absent_faces},
           {"texels_lost_off_tiles", f.lost_off_tiles},
+          {"texels_lost_tile_pool_full", f.lost_pool_full},
           {"config", config::to_json(spec.config)}};
 }
 

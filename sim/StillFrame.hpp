@@ -27,7 +27,8 @@ struct StillFrame {
   double refresh_hz = 0, render_ms = 0;
   int64_t first_photon_ps = 0, last_photon_ps = 0;
   size_t memory_bytes = 0;  // display memory allocated
-  int64_t lost_on_absent_faces = 0, lost_off_tiles = 0;  // texels the fill drew where the memories have no storage
+  // Texels the fill drew where the memories have no storage: absent faces, tiles not held, a full tile pool.
+  int64_t lost_on_absent_faces = 0, lost_off_tiles = 0, lost_pool_full = 0;
 };
 
 StillFrame render_still(const StillSpec& spec);

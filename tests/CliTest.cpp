@@ -39,6 +39,20 @@ TEST(Cli, FrameWritesTheStereoImageAndReport) {
   EXPECT_EQ(d.entries(), 2u);
 }
 
+// The calibration pattern fills memory 0's six faces of each eye, every texel: with a pool of 10 tiles there, the
+// first 10 tiles (face +X, row-major) are stored and every other texel is lost -- 6 x 512^2 - 10 x 32^2 an eye --
+// counted in the report and warned about once.
+TEST(Cli, AFrameWhoseTilePoolIsFullSaysSo) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " frame --set memory.tile_pool=[10,0,0,0] --out " + d.file("f.png") + " --report " + d.file("f.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("lost for want of a tile slot"), std::string::npos) << r.output;
+  std::ifstream in(d.file("f.json"));
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["texels_lost_tile_pool_full"], 2 * (6 * 512 * 512 - 10 * 32 * 32));
+  EXPECT_EQ(j["texels_lost_off_tiles"], 0);
+}
+
 TEST(Cli, BadInputFailsClearlyAndLeavesNoOutput) {
   TempDir d;
   std::ofstream(d.file("bad.json")) << R"({"datapath": {"vec_frac": 40}})";

@@ -528,6 +528,35 @@ TEST(DisplayMemoryBank, ATileThePoolHasNoSlotForIsLostAsATileNotHeld) {
     EXPECT_EQ(pooled_texels.writes_lost_pool_full(), lost_texel_order) << S;
     EXPECT_EQ(pooled_texels.texels_written(), mapped_texels.texels_written()) << S;
     expect_same_tiles(pooled_texels, mapped_texels, {2});
+    // Faces reserved together and stored on two threads (the renderer's path): slots in face order, the pool
+    // filling up on the second face after two of its tiles.
+    {
+      TileMap map2(S, false);
+      int second = 0;
+      for (int ty = 0; ty < T; ++ty)
+        for (int tx = 0; tx < T; ++tx) {
+          bool own = false;
+          for (int y = ty * 32; y < std::min(S, ty * 32 + 32); ++y)
+            for (int x = tx * 32; x < std::min(S, tx * 32 + 32); ++x) own |= at(x, y) != fmt.empty_word();
+          if (!own) continue;
+          map2.set(0, tx, ty, true);
+          if (second++ < 2) map2.set(2, tx, ty, true);
+        }
+      const int64_t slots = static_cast<int64_t>(own_texels.size()) + 2;
+      DisplayMemoryBank pooled2(fmt, {}, slots), mapped2(fmt, map2);
+      std::array<const uint64_t*, 6> both{};
+      both[0] = both[2] = words.data();
+      for (DisplayMemoryBank* b : {&pooled2, &mapped2}) {
+        b->reserve_faces(both, fmt.empty_word());
+        std::thread other([&] { b->store_face(2, words.data(), fmt.empty_word()); });
+        b->store_face(0, words.data(), fmt.empty_word());
+        other.join();
+      }
+      EXPECT_EQ(pooled2.writes_lost_pool_full(), lost_beyond(2)) << S;
+      EXPECT_EQ(mapped2.writes_lost_off_tiles(), lost_beyond(2)) << S;
+      EXPECT_EQ(pooled2.tiles_most_at_once(), slots);
+      expect_same_tiles(pooled2, mapped2, {0, 2});
+    }
     // Both buffers share the slots: an image of P tiles shown keeps them, so the back buffer, cleared, gets none
     // of a pool of P; a pool of 2P gives it P. Drawing again on the tiles a buffer has takes no slot.
     std::vector<uint64_t> first_p = words;  // the texels of the first P tiles only
@@ -562,6 +591,27 @@ TEST(DisplayMemoryBank, ATileThePoolHasNoSlotForIsLostAsATileNotHeld) {
       EXPECT_EQ(b.writes_lost_pool_full() - lost_last, lost_beyond(slots)) << slots;
     }
   }
+}
+
+// A memory set gives each memory's banks, every eye's, its pool; it matches a configuration whose pools are its
+// own (no list and a list of zeros alike: no pool).
+TEST(DisplayMemorySet, EachMemoryHasItsOwnPool) {
+  MemoryConfig mc;
+  mc.count = 3;
+  mc.tile_pool = {0, 12, 0};
+  const DisplayMemorySet set(mc, 2);
+  for (int e = 0; e < 2; ++e)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(set.bank(e, k).pool_slots(), k == 1 ? 12 : 0);
+  ArpConfig c;
+  c.memory = mc;
+  EXPECT_TRUE(matches(set, c));
+  c.memory.tile_pool = {0, 11, 0};
+  EXPECT_FALSE(matches(set, c));
+  c.memory.tile_pool.clear();
+  EXPECT_FALSE(matches(set, c));
+  mc.tile_pool = {0, 0, 0};
+  const DisplayMemorySet none(mc, 2);
+  EXPECT_TRUE(matches(none, c));
 }
 
 // A memory set gives each memory's banks, every eye's, that memory's tiles.

@@ -69,6 +69,10 @@ int run_frame(FrameArgs& a) {
     std::printf("  warning: %lld texels fell on faces (memory.faces) or tiles (memory.tiles) the configuration leaves out and were "
                 "lost: it was planned for another scene or motion\n",
                 static_cast<long long>(s.lost_on_absent_faces + s.lost_off_tiles));
+  if (s.lost_pool_full > 0)
+    std::printf("  warning: %lld texels were lost for want of a tile slot: a tile pool (memory.tile_pool) was full when they "
+                "were drawn (it was sized for another scene or motion, or is too small)\n",
+                static_cast<long long>(s.lost_pool_full));
   if (!a.report.empty()) write_text_atomic(a.report, dump_json(sim::still_report(spec, s, a.out), 2) + "\n");
   return 0;
 }

@@ -65,21 +65,23 @@ bool HostSimulation::each_object_tile(size_t i, int m, const glm::dvec3& eye, do
   return true;
 }
 
-void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vector<char>& moved, const glm::dvec3& eye, double t) {
+void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t) {
   for (int m = mem_.count() - 1; m >= 0; --m) {
-    const int64_t slots = mem_.bank(0, m).pool_slots();
+    const dp::DisplayMemoryBank& bank = mem_.bank(0, m);
+    const int64_t slots = bank.pool_slots();
     if (!render[static_cast<size_t>(m)] || slots == 0) continue;
     // The image shown stays in its slots while the new one is drawn (the back buffer is cleared first).
     int64_t room = slots;
     for (int e = 0; e < mem_.eyes(); ++e) room = std::min(room, slots - mem_.bank(e, m).front_own_tiles());
-    const int tpr = mem_.bank(0, m).tiles_per_row();
+    const int tpr = bank.tiles_per_row();
     std::vector<uint8_t> taken(static_cast<size_t>(6 * tpr * tpr), 0);
     std::vector<size_t> fresh;
-    for (const size_t i : sched_.objects_in(m)) {
+    for (size_t i = 0; i < target.size(); ++i) {
+      if (target[i] != m) continue;
       fresh.clear();
       each_object_tile(i, m, eye, t, [&](int f, int tx, int ty) {
         const size_t k = static_cast<size_t>((f * tpr + ty) * tpr + tx);
-        if (!taken[k]) fresh.push_back(k);
+        if (!taken[k] && bank.holds(f, tx, ty)) fresh.push_back(k);  // (a tile not held takes no slot: lost anyway)
         return true;
       });
       if (static_cast<int64_t>(fresh.size()) <= room) {
@@ -87,12 +89,12 @@ void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vec
         room -= static_cast<int64_t>(fresh.size());
         continue;
       }
-      int k = m - 1;
-      while (k >= 0 && !render[static_cast<size_t>(k)]) --k;
-      if (k < 0) continue;  // no faster memory renders now: drawn here, what the pool has no slot for lost
-      sched_.move_to(i, k);
-      moved[static_cast<size_t>(m)] = moved[static_cast<size_t>(k)] = 1;
-      ++moved_for_pool_;
+      for (int k = m - 1; k >= 0; --k)
+        if (render[static_cast<size_t>(k)] && sched_.fits(i, k, eye, t)) {
+          target[i] = k;  // counted again where it lands (a faster memory comes later in this loop)
+          ++kept_for_pool_;
+          break;
+        }  // none: drawn here, what the pool has no slot for lost
     }
   }
 }
@@ -121,9 +123,10 @@ void HostSimulation::prime(double t) {
   sched_.assign(walk_.position(t), walk_.speed(), t);
   sched_.settle();
   if (!regions_ && !boxes_.empty()) {  // every memory renders now: the pools as at any frame
-    const std::vector<char> all(static_cast<size_t>(mem_.count()), 1);
-    std::vector<char> moved(all.size(), 0);
-    keep_within_pools(all, moved, walk_.position(t), t);
+    std::vector<int> target(scene_.objects.size());
+    for (size_t i = 0; i < target.size(); ++i) target[i] = sched_.memory_of(i);
+    keep_within_pools(std::vector<char>(static_cast<size_t>(mem_.count()), 1), target, walk_.position(t), t);
+    for (size_t i = 0; i < target.size(); ++i) sched_.place(i, target[i]);
   }
   for (int m = 0; m < mem_.count(); ++m) {
     if (regions_) regions_->rendered(m, walk_.position(t));
@@ -200,8 +203,10 @@ void HostSimulation::before_frame(int64_t f, double t) {
   // rendered, where its validity from then covers that memory's period, and
   // validity is direction-free (Validity.hpp), so the image stays within
   // theta_t until the memory's next scheduled render re-places it (tested).
-  for (size_t i = 0; i < scene_.objects.size() && !regions_; ++i) {
+  std::vector<int> moves_to(regions_ ? 0 : scene_.objects.size());  // each object's memory after this frame's moves
+  for (size_t i = 0; i < moves_to.size(); ++i) {
     const int from = sched_.memory_of(i);
+    moves_to[i] = from;
     if (!render[static_cast<size_t>(from)]) continue;
     int target = sched_.belongs_in(i);
     while (target != from && !render[static_cast<size_t>(target)]) target += target > from ? -1 : 1;
@@ -214,11 +219,15 @@ void HostSimulation::before_frame(int64_t f, double t) {
           target = k;
           break;
         }
-    if (target == from) continue;
-    sched_.move_to(i, target);
-    moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(target)] = 1;
+    moves_to[i] = target;
   }
-  if (!regions_ && !boxes_.empty()) keep_within_pools(render, moved, head_pos, t);
+  if (!moves_to.empty() && !boxes_.empty()) keep_within_pools(render, moves_to, head_pos, t);
+  for (size_t i = 0; i < moves_to.size(); ++i) {
+    const int from = sched_.memory_of(i);
+    if (moves_to[i] == from) continue;
+    sched_.move_to(i, moves_to[i]);
+    moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(moves_to[i])] = 1;
+  }
   int64_t handover_swap = -1;
   for (int m = 0; m < N; ++m) {
     if (!render[static_cast<size_t>(m)]) continue;

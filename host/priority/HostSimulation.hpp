@@ -81,9 +81,9 @@ class HostSimulation {
   double engine_busy_until() const { return engine_free_; }
   // Object-frames whose destination was a faster memory than the rule's, for its tiles (memory.tiles).
   int64_t held_back() const { return held_back_; }
-  // Object-frames moved to a faster memory rendering at the same frame because the slower memory's tile pool
-  // (memory.tile_pool) had no room for the tiles they cover.
-  int64_t moved_for_pool() const { return moved_for_pool_; }
+  // Object-frames sent to (or kept in) a faster memory rendering at the same frame than the one the rule's move
+  // would have drawn them in, because that memory's tile pool (memory.tile_pool) had no room for their tiles.
+  int64_t kept_for_pool() const { return kept_for_pool_; }
   // Triangles a full render of the whole scene would set up now (both eyes): the baseline's load per frame.
   int64_t full_render_triangles(double t_s) const;
   // Where the eye was when memory m's displayed image was rendered (NaN before the first).
@@ -129,12 +129,13 @@ class HostSimulation {
   // and its own animation move before the engine starts); false as soon as visit returns false.
   bool each_object_tile(size_t i, int m, const glm::dvec3& eye, double t, const std::function<bool(int, int, int)>& visit) const;
   // Memories with a tile pool rendering now, slowest first: an object whose tiles would overfill the pool (with
-  // the image shown) goes to the next faster memory rendering now.
-  void keep_within_pools(const std::vector<char>& render, std::vector<char>& moved, const glm::dvec3& eye, double t);
+  // the image shown) goes to the slowest faster memory rendering now that holds its tiles (none: it stays).
+  // `target`: each object's memory after this frame's moves, changed here.
+  void keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t);
   std::vector<std::array<glm::dvec3, 2>> boxes_;  // each object's mesh box, where memories hold some tiles or pools
   double near_m_ = 0;
   double engine_free_ = -1e300;
-  int64_t held_back_ = 0, moved_for_pool_ = 0;
+  int64_t held_back_ = 0, kept_for_pool_ = 0;
 };
 
 }  // namespace arp::host

@@ -73,6 +73,7 @@ class PriorityScheduler {
   void settle() {  // every object where it belongs (before a run)
     for (size_t i = 0; i < memory_.size(); ++i) memory_[i] = desired_[i];
   }
+  void place(size_t object, int m) { memory_[object] = m; }  // where it is before a run (not a move)
   // The objects currently in memory m, in scene order.
   std::vector<size_t> objects_in(int m) const;
   int64_t moves() const { return moves_; }  // objects promoted or demoted so far

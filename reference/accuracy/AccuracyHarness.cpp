@@ -486,6 +486,7 @@ Report run(const ArpConfig& cfg, const Options& opt) {
     bc.pipeline.aa = AaMode::Bilinear;
     bc.memory.faces = MemoryConfig{}.faces;  // the test pattern on every texel: the datapath's colour, not a plan's storage
     bc.memory.tiles.clear();
+    bc.memory.tile_pool.clear();
     const FunctionalModel bmodel(bc);
     DisplayMemorySet mem(bc.memory, E);
     fill_color_test_memories(mem);

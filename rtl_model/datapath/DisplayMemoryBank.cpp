@@ -212,6 +212,7 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
     count[f] = c;
   }
   int64_t stored = 0, lost = 0, lost_off = 0, lost_pool = 0;
+  std::vector<std::array<int, 3>> refused;  // tiles refused a slot by this call (undone if the allocation fails)
   if (pool_slots_ > 0) {  // slots first, face by face, tiles row-major: which tiles store their own texels
     int64_t promised = 0;
     for (size_t f = 0; f < 6; ++f) {
@@ -220,10 +221,12 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
         for (int tx = 0; tx < tiles_per_row_; ++tx) {
           const int face = static_cast<int>(f);
           if (!holds(face, tx, ty) || own_here(face, tx, ty) || !own_written(words[f], tx, ty, skip)) continue;
+          const bool was_refused = !holds_back(face, tx, ty);
           if (take_slot(face, tx, ty, promised)) {
             ++promised;
             continue;
           }
+          if (!was_refused) refused.push_back({face, tx, ty});
           const int64_t texels = own_count(words[f], tx, ty, skip);
           count[f] -= texels;
           lost_pool += texels;
@@ -265,7 +268,13 @@ int64_t DisplayMemoryBank::reserve_faces(const std::array<const uint64_t*, 6>& w
   // stay linear).
   std::vector<uint64_t>& pool = buffers_[back_].pool;
   const size_t need = std::max(pool.size(), size_t{kTileWords}) + fresh.size() * kTileWords;
-  if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
+  try {
+    if (!fresh.empty() && need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 4));
+  } catch (...) {
+    for (const auto& t : refused)
+      buffers_[back_].refused[static_cast<size_t>(t[0])][static_cast<size_t>(t[2] * tiles_per_row_ + t[1])] = 0;
+    throw;
+  }
   for (const auto& t : fresh) back_tile(t[0], t[1], t[2]);
   for (const auto& t : drawn) mark_own(t[0], t[1], t[2]);
   lost_ += lost;  // last: a failed allocation above leaves the counts as they were
@@ -360,9 +369,9 @@ size_t DisplayMemoryBank::bytes_allocated() const {
 }
 
 DisplayMemorySet::DisplayMemorySet(const MemoryConfig& m, int eyes)
-    : fmt_(m), tiles_(m.tiles), pool_(m.tile_pool), eyes_(eyes), count_(m.count) {
-  if (!pool_.empty() && static_cast<int>(pool_.size()) != count_)
-    throw std::invalid_argument("memory.tile_pool has " + std::to_string(pool_.size()) + " numbers for " + std::to_string(count_) +
+    : fmt_(m), tiles_(m.tiles), eyes_(eyes), count_(m.count) {
+  if (!m.tile_pool.empty() && static_cast<int>(m.tile_pool.size()) != count_)
+    throw std::invalid_argument("memory.tile_pool has " + std::to_string(m.tile_pool.size()) + " numbers for " + std::to_string(count_) +
                                 " memories (the configuration was not validated)");
   std::vector<TileMap> maps;
   if (std::string why; !tile_maps(m, maps, why)) throw std::invalid_argument("memory.tiles " + why + " (the configuration was not validated)");
@@ -425,10 +434,13 @@ size_t DisplayMemorySet::tiles_allocated() const {
 bool matches(const DisplayMemorySet& mem, const ArpConfig& c) {
   const MemoryFormat& f = mem.format();
   const MemoryFormat want(c.memory);
-  return mem.eyes() == c.timing.eyes && mem.count() == c.memory.count && f.face_size == want.face_size &&
-         f.red_bits == want.red_bits && f.green_bits == want.green_bits && f.blue_bits == want.blue_bits &&
-         f.depth_bits == want.depth_bits && mem.tiles_text() == c.memory.tiles &&
-         mem.tile_pool() == c.memory.tile_pool;
+  if (!(mem.eyes() == c.timing.eyes && mem.count() == c.memory.count && f.face_size == want.face_size &&
+        f.red_bits == want.red_bits && f.green_bits == want.green_bits && f.blue_bits == want.blue_bits &&
+        f.depth_bits == want.depth_bits && mem.tiles_text() == c.memory.tiles))
+    return false;
+  for (int k = 0; k < mem.count(); ++k)  // (no list and a list of zeros are the same: no pool)
+    if (mem.bank(0, k).pool_slots() != c.memory.pool_slots(k)) return false;
+  return true;
 }
 
 bool DisplayMemoryBank::front_tiles_in_order() const {

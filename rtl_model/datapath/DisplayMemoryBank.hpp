@@ -227,7 +227,6 @@ class DisplayMemorySet {
  public:
   DisplayMemorySet(const MemoryConfig& m, int eyes);  // std::invalid_argument for a malformed memory.tiles
   const std::vector<std::string>& tiles_text() const { return tiles_; }
-  const std::vector<int64_t>& tile_pool() const { return pool_; }
   int eyes() const { return eyes_; }
   int count() const { return count_; }
   const MemoryFormat& format() const { return fmt_; }
@@ -248,7 +247,6 @@ class DisplayMemorySet {
  private:
   MemoryFormat fmt_;
   std::vector<std::string> tiles_;  // memory.tiles
-  std::vector<int64_t> pool_;       // memory.tile_pool
   int eyes_, count_;
   std::vector<std::unique_ptr<DisplayMemoryBank>> banks_;
 };

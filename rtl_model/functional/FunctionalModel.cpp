@@ -69,7 +69,7 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
 void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStream& orientation, int64_t frame,
                              HmdFrame& out, const RenderOptions& opt) const {
   if (!matches(mem, cfg_))
-    throw InputError("display memories", "", "eyes, count, format or tiles (memory.tiles) differ from the configuration");
+    throw InputError("display memories", "", "eyes, count, format, tiles (memory.tiles) or tile pools (memory.tile_pool) differ from the configuration");
   if (orientation.size() == 0) throw InputError("orientation", "", "no orientation samples");
   if (frame < 0) throw InputError("frame", "", "frame index must not be negative");
   const bool bilinear = cfg_.pipeline.aa == AaMode::Bilinear;

@@ -26,7 +26,7 @@ VerilatedFrameModel::VerilatedFrameModel(const dp::ArpConfig& cfg)
 void VerilatedFrameModel::render(const dp::DisplayMemorySet& mem, const dp::OrientationStream& orientation,
                                  int64_t frame, HmdFrame& out, bool photon_times) const {
   if (!dp::matches(mem, cfg_))
-    throw InputError("display memories", "", "eyes, count, format or tiles (memory.tiles) differ from the configuration");
+    throw InputError("display memories", "", "eyes, count, format, tiles (memory.tiles) or tile pools (memory.tile_pool) differ from the configuration");
   if (orientation.size() == 0) throw InputError("orientation", "", "no orientation samples");
   if (frame < 0) throw InputError("frame", "", "frame index must not be negative");
   const int W = lens_.width(), H = lens_.height(), E = lens_.eyes(), N = mem.count();
