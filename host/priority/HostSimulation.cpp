@@ -65,7 +65,8 @@ bool HostSimulation::each_object_tile(size_t i, int m, const glm::dvec3& eye, do
   return true;
 }
 
-void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t) {
+void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t,
+                                       bool first) {
   for (int m = mem_.count() - 1; m >= 0; --m) {
     const dp::DisplayMemoryBank& bank = mem_.bank(0, m);
     const int64_t slots = bank.pool_slots();
@@ -76,26 +77,30 @@ void HostSimulation::keep_within_pools(const std::vector<char>& render, std::vec
     const int tpr = bank.tiles_per_row();
     std::vector<uint8_t> taken(static_cast<size_t>(6 * tpr * tpr), 0);
     std::vector<size_t> fresh;
-    for (size_t i = 0; i < target.size(); ++i) {
-      if (target[i] != m) continue;
-      fresh.clear();
-      each_object_tile(i, m, eye, t, [&](int f, int tx, int ty) {
-        const size_t k = static_cast<size_t>((f * tpr + ty) * tpr + tx);
-        if (!taken[k] && bank.holds(f, tx, ty)) fresh.push_back(k);  // (a tile not held takes no slot: lost anyway)
-        return true;
-      });
-      if (static_cast<int64_t>(fresh.size()) <= room) {
-        for (const size_t k : fresh) taken[k] = 1;
-        room -= static_cast<int64_t>(fresh.size());
-        continue;
+    // The objects already in the memory first, then those joining it: a newcomer is taken only where both buffers
+    // could hold its tiles, so that it still fits at the memory's next render, when this image is the one shown
+    // (without that, a pool too small for two images of everything the rule puts there hands the same objects to
+    // a faster memory and back, render after render). At the first render every object is a newcomer.
+    for (const bool joining : {false, true})
+      for (size_t i = 0; i < target.size(); ++i) {
+        if (target[i] != m || (first || sched_.memory_of(i) != m) != joining) continue;
+        fresh.clear();
+        each_object_tile(i, m, eye, t, [&](int f, int tx, int ty) {
+          const size_t k = static_cast<size_t>((f * tpr + ty) * tpr + tx);
+          if (!taken[k] && bank.holds(f, tx, ty)) fresh.push_back(k);  // (a tile not held takes no slot: lost anyway)
+          return true;
+        });
+        const int64_t n = static_cast<int64_t>(fresh.size());
+        if ((joining ? 2 * n : n) > room)
+          for (int k = m - 1; k >= 0; --k)
+            if (render[static_cast<size_t>(k)] && sched_.fits(i, k, eye, t)) {
+              target[i] = k;  // counted again where it lands (a faster memory comes later in this loop)
+              break;
+            }
+        if (target[i] != m) continue;
+        for (const size_t k : fresh) taken[k] = 1;  // drawn here (it fits, or has nowhere faster: what has no slot lost)
+        room = std::max<int64_t>(0, room - n);
       }
-      for (int k = m - 1; k >= 0; --k)
-        if (render[static_cast<size_t>(k)] && sched_.fits(i, k, eye, t)) {
-          target[i] = k;  // counted again where it lands (a faster memory comes later in this loop)
-          ++kept_for_pool_;
-          break;
-        }  // none: drawn here, what the pool has no slot for lost
-    }
   }
 }
 
@@ -125,7 +130,7 @@ void HostSimulation::prime(double t) {
   if (!regions_ && !boxes_.empty()) {  // every memory renders now: the pools as at any frame
     std::vector<int> target(scene_.objects.size());
     for (size_t i = 0; i < target.size(); ++i) target[i] = sched_.memory_of(i);
-    keep_within_pools(std::vector<char>(static_cast<size_t>(mem_.count()), 1), target, walk_.position(t), t);
+    keep_within_pools(std::vector<char>(static_cast<size_t>(mem_.count()), 1), target, walk_.position(t), t, true);
     for (size_t i = 0; i < target.size(); ++i) sched_.place(i, target[i]);
   }
   for (int m = 0; m < mem_.count(); ++m) {
@@ -221,7 +226,11 @@ void HostSimulation::before_frame(int64_t f, double t) {
         }
     moves_to[i] = target;
   }
-  if (!moves_to.empty() && !boxes_.empty()) keep_within_pools(render, moves_to, head_pos, t);
+  if (!moves_to.empty() && !boxes_.empty()) {
+    const std::vector<int> rule = moves_to;
+    keep_within_pools(render, moves_to, head_pos, t, false);
+    for (size_t i = 0; i < moves_to.size(); ++i) kept_for_pool_ += moves_to[i] < rule[i] ? 1 : 0;
+  }
   for (size_t i = 0; i < moves_to.size(); ++i) {
     const int from = sched_.memory_of(i);
     if (moves_to[i] == from) continue;

@@ -130,8 +130,8 @@ class HostSimulation {
   bool each_object_tile(size_t i, int m, const glm::dvec3& eye, double t, const std::function<bool(int, int, int)>& visit) const;
   // Memories with a tile pool rendering now, slowest first: an object whose tiles would overfill the pool (with
   // the image shown) goes to the slowest faster memory rendering now that holds its tiles (none: it stays).
-  // `target`: each object's memory after this frame's moves, changed here.
-  void keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t);
+  // `target`: each object's memory after this frame's moves, changed here; `first`: the run's first render.
+  void keep_within_pools(const std::vector<char>& render, std::vector<int>& target, const glm::dvec3& eye, double t, bool first);
   std::vector<std::array<glm::dvec3, 2>> boxes_;  // each object's mesh box, where memories hold some tiles or pools
   double near_m_ = 0;
   double engine_free_ = -1e300;

@@ -115,7 +115,9 @@ struct MemoryConfig {
     for (const int f : faces) n += f;
     return n;
   }
-  int64_t pool_slots(int m) const { return tile_pool.empty() ? 0 : tile_pool.at(static_cast<size_t>(m)); }  // 0: none
+  int64_t pool_slots(int m) const {  // 0: none (also past the list's end, in a configuration not validated)
+    return static_cast<size_t>(m) < tile_pool.size() ? tile_pool[static_cast<size_t>(m)] : 0;
+  }
   std::string absent_face_names() const;  // "+Y, -Y" ("none" when every face is present)
   // Frames between host updates of memory m (validate() keeps it within kMaxUpdateFrames).
   int64_t frames_per_update(int m) const { return update_period_frames(update_frames, update_ratio, m); }
