@@ -78,7 +78,8 @@ std::string format(const ParamValue& v) {
 std::string range_text(ParamType t, int64_t imin, int64_t imax, double rmin, double rmax,
                        const std::vector<std::string>& choices, const std::string& alphabet, size_t array_size) {
   switch (t) {
-    case ParamType::TextList: return "up to " + compact(imax) + " strings of " + alphabet;
+    case ParamType::TextList:
+      return "up to " + compact(imax) + " strings of " + (alphabet.empty() ? std::string("printable ASCII") : alphabet);
     case ParamType::IntegerList:
       return "up to " + std::to_string(array_size) + " numbers, each " + compact(imin) + " .. " + compact(imax);
     case ParamType::Integer:
@@ -103,10 +104,22 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
       if (static_cast<int64_t>(a.size()) > imax)
         return "has " + std::to_string(a.size()) + " strings, at most " + std::to_string(imax) + " allowed";
       for (size_t i = 0; i < a.size(); ++i) {
-        const size_t bad = a[i].find_first_not_of(alphabet);
-        if (bad != std::string::npos)
-          return "string " + std::to_string(i) + " has \"" + quoted(a[i].substr(bad, 1)) + "\" at character " + std::to_string(bad) +
-                 ": only " + alphabet + " allowed";
+        // An empty alphabet: any printable ASCII character (space to '~').
+        size_t bad = std::string::npos;
+        if (alphabet.empty()) {
+          for (size_t j = 0; j < a[i].size() && bad == std::string::npos; ++j)
+            if (a[i][j] < ' ' || a[i][j] > '~') bad = j;
+        } else {
+          bad = a[i].find_first_not_of(alphabet);
+        }
+        if (bad != std::string::npos) {
+          const unsigned char ch = static_cast<unsigned char>(a[i][bad]);
+          char code[8];
+          std::snprintf(code, sizeof code, "0x%02x", ch);
+          return "string " + std::to_string(i) + " has " +
+                 (ch >= ' ' && ch <= '~' ? "\"" + quoted(a[i].substr(bad, 1)) + "\"" : std::string("byte ") + code) + " at character " + std::to_string(bad) +
+                 ": only " + (alphabet.empty() ? std::string("printable ASCII") : alphabet) + " allowed";
+        }
       }
       return "";
     }

@@ -52,7 +52,8 @@ std::string enum_choices(const EnumNames<E>& names) {  // "a, b, c"
   return s;
 }
 
-// TextList: a list of strings of any length up to int_max, each of the characters in `alphabet` only (what
+// TextList: a list of strings of any length up to int_max, each of the characters in `alphabet` only (empty:
+// any printable ASCII character) (what
 // the strings mean is checked where the configuration is validated as a whole). IntegerList: a list of
 // integers of any length up to array_size, each in [int_min, int_max] (IntegerArray's length is fixed).
 enum class ParamType { Integer, Real, Choice, IntegerArray, RealArray, TextList, IntegerList };

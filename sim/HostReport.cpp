@@ -37,6 +37,8 @@ nlohmann::json host_report(const host::HostSimulation& h, const RunSpec& spec, d
       {"object_moves", h.scheduler().moves()},
       {"object_frames_held_faster_for_tiles", h.held_back()},
       {"object_frames_kept_faster_for_tile_pool", h.kept_for_pool()},
+      {"object_frames_held_slower_by_assignment", h.scheduler().held_slower()},
+      {"object_frames_held_faster_by_assignment", h.scheduler().held_faster()},
       {"triangles_per_s", static_cast<double>(tris) / secs},
       {"full_render_every_frame_triangles_per_s", static_cast<double>(baseline_triangles) / secs},
       {"load_reduction", tris > 0 ? static_cast<double>(baseline_triangles) / static_cast<double>(tris) : 0.0},

@@ -259,6 +259,44 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
+// Each object's memories over the motion at the planned ladder, by the run's own rule (the scheduler replayed
+// over every sample, as ladder_load does): the fastest and slowest it is put in, every object of one name
+// together (memory.assignment names objects), in the order the names first appear in the scene. A name
+// memory.assignment cannot hold (empty, not printable ASCII, spaces around it, which its strings trim) is left
+// to the rule alone and returned in `unnamed`.
+std::vector<dp::ObjectAssignment> object_memories(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
+                                                  double hz, double threshold_rad, const LadderLoad& L,
+                                                  std::vector<std::string>& unnamed) {
+  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
+  const size_t n = scene.objects.size();
+  std::vector<int> lo(n, L.count - 1), hi(n, 0);
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    for (size_t i = 0; i < n; ++i) {
+      lo[i] = std::min(lo[i], sched.belongs_in(i));
+      hi[i] = std::max(hi[i], sched.belongs_in(i));
+    }
+  }
+  std::vector<dp::ObjectAssignment> out;
+  std::map<std::string, size_t> at;  // a name's entry in out
+  for (size_t i = 0; i < n && !ms.t.empty(); ++i) {
+    const std::string& name = scene.objects[i].name;
+    const bool printable = std::all_of(name.begin(), name.end(), [](char ch) { return ch >= ' ' && ch <= '~'; });
+    if (name.empty() || !printable || name.front() == ' ' || name.back() == ' ' || name.find(':') != std::string::npos) {
+      if (std::find(unnamed.begin(), unnamed.end(), name) == unnamed.end()) unnamed.push_back(name);
+      continue;
+    }
+    if (const auto e = at.find(name); e != at.end()) {
+      out[e->second].fastest = std::min(out[e->second].fastest, lo[i]);
+      out[e->second].slowest = std::max(out[e->second].slowest, hi[i]);
+    } else {
+      at[name] = out.size();
+      out.push_back({name, lo[i], hi[i]});
+    }
+  }
+  return out;
+}
+
 // A ladder's hardware display memory, as whole faces: the configuration `c` (face size, faces) with its
 // memories and a depth code of `depth_bits`.
 int64_t ladder_memory_bytes(dp::ArpConfig c, const LadderLoad& L, int depth_bits) {
@@ -870,6 +908,40 @@ Plan make_plan(const PlanRequest& r) {
                                      : "0: one texel at the planned face size (" + fmt("%.4f", rad_to_deg(p.threshold_rad)) +
                                            " deg), the theta_t the memories were sized for"});
 
+  // The object-to-memory assignment: where the rule puts each object over this motion, written as keys.
+  p.config.memory.assignment.clear();
+  if (p.planned.count > 1 && n > 0) {
+    std::vector<std::string> unnamed;
+    const std::vector<dp::ObjectAssignment> a = object_memories(scene, walk, ms, hz, p.threshold_rad, p.planned, unnamed);
+    std::vector<int> pinned(static_cast<size_t>(p.planned.count), 0);
+    int moving = 0;
+    for (const dp::ObjectAssignment& e : a) {
+      p.config.memory.assignment.push_back(e.text());
+      if (e.fastest == e.slowest) ++pinned[static_cast<size_t>(e.fastest)];
+      else ++moving;
+    }
+    std::string in_one;  // "memory 2: 1, memory 3: 4"
+    for (size_t m = 0; m < pinned.size(); ++m)
+      if (pinned[m] > 0) in_one += (in_one.empty() ? "" : ", ") + ("memory " + std::to_string(m)) + ": " + std::to_string(pinned[m]);
+    p.assignment = a;
+    p.choices.push_back(
+        {"memory.assignment", std::to_string(a.size()) + " names (plan.md's last table)",
+         "the memories the run's priority rule puts each object in over the " + std::to_string(p.samples) +
+             " points of the motion at the planned ladder and theta_t (every object of one name together): " +
+             std::to_string(a.size() - static_cast<size_t>(moving)) + " stay in one memory" +
+             (in_one.empty() ? std::string() : " (" + in_one + ")") + ", " + std::to_string(moving) +
+             " move between memories as the user walks. A run over this motion keeps within them, so they change nothing "
+             "there; over another motion they bound the rule, and a name edited to one memory pins its objects there" +
+             (r.base.memory.assignment.empty() ? std::string() : " (" + r.base_source + "'s memory.assignment is not kept)") +
+             (unnamed.empty() ? std::string()
+                              : "; " + std::to_string(unnamed.size()) + " names the key cannot hold (not printable ASCII, a colon, "
+                                "or spaces at an end) are left to the rule")});
+  } else {
+    p.choices.push_back({"memory.assignment", "none",
+                         n == 0 ? "the scene is empty: no object to place"
+                                : "one memory: every object is in it"});
+  }
+
   // 4. Faces (worked out before the memories, whose hardware size they set).
   const int present = p.config.memory.faces_present();
   p.choices.push_back(
@@ -966,7 +1038,6 @@ Plan make_plan(const PlanRequest& r) {
     p.not_decided.push_back("a bound on the depth code's composition: it is measured from the walk's point at the " +
                             std::to_string(p.composition.points) + " points rendered, each memory as if rendered there and "
                             "then; a run renders a slower memory from where the head was at its last update");
-  p.not_decided.push_back("the object-to-memory assignment as keys (the run assigns by the same rule, frame by frame)");
   // 6. FIFO depths: the smallest the configuration allows. In this pipeline nothing but an injected stall
   // holds a stage back -- the host writes through its own port (timed.host_*), never the pipeline's read
   // port -- so at any host load each inter-stage FIFO holds one token and the scan-out FIFO the issue slack
@@ -1002,6 +1073,7 @@ Plan make_plan(const PlanRequest& r) {
       by_regions.memory.region_margin_m = best->margin_m;
       by_regions.memory.tiles.clear();
       by_regions.memory.tile_pool.clear();
+      by_regions.memory.assignment.clear();
       by_regions.memory.depth_bits = std::max(p.config.memory.depth_bits, depth_bits_for(p.planned.count, r.base));
     }
     const bool saves = best && best->triangles_per_s < p.planned.triangles_per_s * (1 - r.load_tolerance);
@@ -1024,7 +1096,10 @@ Plan make_plan(const PlanRequest& r) {
       // The rows above that regions change, rewritten: every tile, the depth code, the memories' updates.
       for (PlanChoice& c : p.choices) {
         const std::string then = " -- replaced: region priority rendering was taken (memory.region_size_m below)";
-        if (c.keys == "memory.tile_pool") {
+        if (c.keys == "memory.assignment") {
+          c.value = "none";
+          c.reason = "regions place objects by region: the object-level assignment (plan.md's last table) is not used" + then;
+        } else if (c.keys == "memory.tile_pool") {
           c.value = "none";
           c.reason = "regions place objects by region, not where their tiles are: no pool was sized for them" + then;
         } else if (c.keys == "memory.tiles") {
@@ -1189,6 +1264,15 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
       s += "| " + std::to_string(w) + " | " + std::to_string(p.composition.wrong[static_cast<size_t>(w)]) + " | " +
            fmt("%.3g", p.composition.share(w)) + " | " +
            (w == p.config.memory.depth_bits ? "planned" : w == r.base.memory.depth_bits ? r.base_source : "") + " |\n";
+  }
+  if (!p.assignment.empty()) {
+    s += "\n## Each object's memories over the motion\n\nBy the run's own priority rule at the planned ladder and theta_t, at "
+         "every point of the motion (objects of one name together): the fastest and slowest memory it is put in, memory 0 "
+         "the fastest. memory.assignment holds them" +
+         std::string(p.config.memory.region_size_m > 0 ? " (not used: region priority rendering was taken)" : "") +
+         ".\n\n| object | fastest | slowest |\n| --- | --- | --- |\n";
+    for (const dp::ObjectAssignment& a : p.assignment)
+      s += "| " + a.name + " | " + std::to_string(a.fastest) + " | " + std::to_string(a.slowest) + " |\n";
   }
   s += "\n## Not decided by this plan\n\n";
   for (const auto& n : p.not_decided) s += "- " + n + "\n";

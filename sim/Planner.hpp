@@ -159,6 +159,8 @@ struct Plan {
   // whole faces (bank_bits_pooled), every eye -- what the plan takes unless --fixed-tiles -- and each memory with
   // its fixed tiles where those take less than whole faces, no pool (memory.tiles alone).
   int64_t memory_bytes_pooled = 0, memory_bytes_fixed_tiles = 0;
+  // Each object's memories over the motion at the planned ladder (memory.assignment's entries; none with one memory).
+  std::vector<dp::ObjectAssignment> assignment;
   // Region priority rendering weighed at each size (none with --objects-only, or standing); the one taken is
   // config.memory.region_size_m (0: objects).
   std::vector<RegionLoad> regions;

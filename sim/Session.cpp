@@ -303,6 +303,30 @@ void Session::warn_if_planned_for_another_motion() const {
                  cfg.c_str(), static_cast<long long>(planned), tiles, spec_.host.walk.c_str(), walk_->speed(), static_cast<long long>(h));
 }
 
+// memory.assignment against the scene: a name no object has is an error in a configuration written for this
+// scene (or for none), and a warning where the plan was made for another (said once, as the scene is); by
+// regions or the baseline the assignment is not used, which is said once too.
+void Session::check_assignment() const {
+  const dp::MemoryConfig& m = spec_.config.memory;
+  if (m.assignment.empty()) return;
+  const std::string where = spec_.config_source + ": memory.assignment";
+  if (spec_.host.baseline || regions_) {
+    std::fprintf(stderr, "arpsim: warning: %s is not used: %s places every object itself\n", where.c_str(),
+                 spec_.host.baseline ? "the baseline" : "region priority rendering");
+    return;
+  }
+  const auto& unknown = host_->scheduler().unknown_names();
+  if (unknown.empty()) return;
+  std::string names;
+  for (size_t i = 0; i < unknown.size() && i < 5; ++i) names += (i ? ", \"" : "\"") + unknown[i] + "\"";
+  if (unknown.size() > 5) names += " and " + std::to_string(unknown.size() - 5) + " more";
+  const std::string what = std::to_string(unknown.size()) + " of its names are no object of scene " + scene_->name + ": " + names;
+  const int64_t planned = spec_.config.plan.scene_hash;
+  if (planned == 0 || planned == host::scene_hash(*scene_)) throw InputError(spec_.config_source, "memory.assignment", what);
+  std::fprintf(stderr, "arpsim: warning: %s: %s (the plan was made for another scene; those strings are not used)\n",
+               where.c_str(), what.c_str());
+}
+
 double HostSpec::threshold_rad(double deg) {
   if (!(deg >= 0) || deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
   return deg_to_rad(deg);
@@ -498,6 +522,7 @@ void Session::build_memories() {
   }
   host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
                                                  timing_.refresh_hz());
+  check_assignment();
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);
     if (!(h.warp_falloff >= 0) || h.warp_falloff > region_m) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
@@ -837,6 +862,15 @@ RunSummary Session::run() {
                   "was full when they were drawn (memory.tile_pool was sized for another scene, motion or theta_t, or "
                   "is too small; footprint.texels_lost_tile_pool_full)",
                   lost, full.c_str());
+    s.notes.push_back(b);
+  }
+  if (host_ && !regions_ && !spec_.host.baseline && host_->scheduler().held_slower() > 0) {
+    char b[500];
+    std::snprintf(b, sizeof b,
+                  "  warning: memory.assignment kept objects in memories slower than the priority rule put them %" PRId64
+                  " times (object-frames): their images may have moved more than theta_t (%g deg) before they were "
+                  "re-rendered (host.object_frames_held_slower_by_assignment)",
+                  host_->scheduler().held_slower(), rad_to_deg(host_->scheduler().threshold_rad()));
     s.notes.push_back(b);
   }
   if (!o.tear_image.empty() && probe_) s.notes.push_back(probe_->write_tear_image());

@@ -34,6 +34,7 @@ dp::ArpConfig truth_config(const dp::ArpConfig& run, int face_size) {
   c.memory.count = 1;
   c.memory.tiles.clear();  // it holds every tile: a reference, not the run's tile-sparse hardware
   c.memory.tile_pool.clear();
+  c.memory.assignment.clear();  // one memory: nothing to place
   if (face_size == 0) return c;
   const dp::ArpConfig builtin;
   c.widths = builtin.widths;

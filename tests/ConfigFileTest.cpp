@@ -70,7 +70,7 @@ TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
     EXPECT_FALSE(p.doc.empty()) << p.key;
     EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
   }
-  EXPECT_EQ(n, 12u + 3 + 12 + 15 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
+  EXPECT_EQ(n, 12u + 3 + 12 + 16 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
   // The table and the JSON writer agree: every key written is declared, and the other way round.
   const json j = config::to_json(dp::ArpConfig{});
   size_t written = 0;
@@ -197,6 +197,49 @@ TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
   EXPECT_EQ(pooled.memory.pool_slots(1), 0);
   EXPECT_EQ(dp::arp_parameters().find("memory.tile_pool")->format(dp::arp_parameters().find("memory.tile_pool")->get(pooled)), "[100, 0]");
   EXPECT_EQ(config::apply_overrides({}, {"memory.tile_pool=[7, 0, 0, 3]"}).memory.tile_pool, (std::vector<int64_t>{7, 0, 0, 3}));
+  // memory.assignment: "name: m" or "name: a-b", a the faster (lower), both memories of this configuration, each
+  // name once; any printable text for the name (it may hold colons: the last one ends it).
+  const auto assignment_error = [](const std::string& entry) {
+    return error_of([&] { parse(R"({"memory": {"count": 4, "assignment": ["floor: 3", )" + entry + "]}}"); });
+  };
+  for (const auto& [entry, why] : std::vector<std::pair<std::string, std::string>>{
+           {R"("wall")", "string 1 (\"wall\") has no colon"},
+           {R"(" : 2")", "string 1 (\" : 2\") names no object before its colon"},
+           {R"("wall: 4")", "memory 4 is past memory.count (4 memories, 0 .. 3)"},
+           {R"("wall: 1-4")", "memory 4 is past memory.count"},
+           {R"("wall: 3-1")", "runs from memory 3 to the faster memory 1"},
+           {R"("wall: -1")", "\"\" is not a memory number"},
+           {R"("wall: x")", "\"x\" is not a memory number"},
+           {R"("wall: 1.5")", "\"1.5\" is not a memory number"},
+           {R"("wall: ")", "\"\" is not a memory number"},
+           {R"("floor : 0-1")", "strings 0 and 1 both name \"floor\""},
+           {R"("wall\t: 1")", "string 1 has byte 0x09 at character 4: only printable ASCII allowed"}}) {
+    e = assignment_error(entry);
+    EXPECT_EQ(e.place(), "memory.assignment") << entry;
+    EXPECT_NE(e.reason().find(why), std::string::npos) << entry << ": " << e.reason();
+  }
+  e = error_of([] { parse(R"({"memory": {"assignment": "floor: 1"}})"); });
+  EXPECT_NE(e.reason().find("must be an array of strings"), std::string::npos) << e.reason();
+  const dp::ArpConfig assigned = parse(R"({"memory": {"count": 4, "assignment": ["floor: 3", " room 2: pillar :1 - 2 "]}})");
+  std::vector<dp::ObjectAssignment> a;
+  std::string why;
+  ASSERT_TRUE(dp::object_assignments(assigned.memory, a, why)) << why;
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].name, "floor");
+  EXPECT_EQ(a[0].fastest, 3);
+  EXPECT_EQ(a[0].slowest, 3);
+  EXPECT_EQ(a[1].name, "room 2: pillar");
+  EXPECT_EQ(a[1].fastest, 1);
+  EXPECT_EQ(a[1].slowest, 2);
+  EXPECT_EQ(a[0].text(), "floor: 3");
+  EXPECT_EQ(a[1].text(), "room 2: pillar: 1-2");  // and read back as itself
+  dp::ObjectAssignment back;
+  ASSERT_TRUE(dp::ObjectAssignment::parse(a[1].text(), 4, back, why)) << why;
+  EXPECT_EQ(back.name, a[1].name);
+  EXPECT_EQ(back.fastest, 1);
+  EXPECT_EQ(back.slowest, 2);
+  EXPECT_EQ(config::apply_overrides({}, {R"(memory.assignment=["floor: 0-2"])"}).memory.assignment,
+            (std::vector<std::string>{"floor: 0-2"}));
 }
 
 TEST(ConfigFile, SyntaxErrorsGiveLineAndColumn) {

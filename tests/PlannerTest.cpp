@@ -178,7 +178,9 @@ int64_t tiles_in_text(const std::string& text, int T);  // below
 // Standing still, the priority rule puts every object in the slowest memory, whose tiles a plan for a walk
 // sized for the objects it holds walking. The host then keeps each object no slower than a memory holding
 // its tiles: a run of the plan standing at the walk's start loses nothing, keeping objects faster than the
-// rule would (seen losing texels with the host's tile test left out).
+// rule would (seen losing texels with the host's tile test left out). The plan's memory.assignment, which
+// bounds each ball to the memories it had walking, is left out here: it alone keeps the nearest balls faster
+// than the rule standing (a run with it: below).
 TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   TempDir d;
   PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
@@ -186,11 +188,12 @@ TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   const Plan p = make_plan(r);
   ASSERT_GT(p.config.memory.count, 1);
   ASSERT_FALSE(p.config.memory.tiles.empty());
-  nlohmann::json rep[2];
-  for (int every = 0; every < 2; ++every) {
+  nlohmann::json rep[3];
+  for (int every = 0; every < 3; ++every) {
     RunSpec spec;
     spec.config = p.config;
-    if (every) spec.config.memory.tiles.clear();
+    if (every < 2) spec.config.memory.assignment.clear();
+    if (every == 1) spec.config.memory.tiles.clear();
     spec.memories.scene = d.file("row.json");
     spec.host.walk = d.file("walk.json");
     spec.host.walk_speed = 0.0;
@@ -206,6 +209,11 @@ TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   EXPECT_GT(rep[0]["host"]["object_frames_held_faster_for_tiles"].get<int64_t>(), 0);
   EXPECT_EQ(rep[1]["host"]["object_frames_held_faster_for_tiles"], 0);  // every tile: the rule's own choice
   EXPECT_GT(rep[0]["host"]["triangles_per_s"].get<double>(), rep[1]["host"]["triangles_per_s"].get<double>());
+  // With the assignment: the balls the walk never put in the slowest memory are held faster standing.
+  EXPECT_EQ(p.config.memory.assignment[0].substr(0, 4), "b0: ");
+  EXPECT_NE(p.config.memory.assignment[0].back() - '0', p.config.memory.count - 1);
+  EXPECT_GT(rep[2]["host"]["object_frames_held_faster_by_assignment"].get<int64_t>(), 0);
+  EXPECT_EQ(rep[2]["footprint"]["texels_lost_off_tiles"], 0);
 }
 
 // A tile pool too small for every object the rule puts in a memory: standing still beside the row of balls,
@@ -1401,6 +1409,92 @@ TEST(Planner, APlannedTilePoolHoldsWhatARunDrawsAndChangesNoTexel) {
   const dp::ArpConfig c = config::load_file(d.file("fixed.json"));
   EXPECT_EQ(c.memory.tile_pool, fixed.config.memory.tile_pool);
   EXPECT_EQ(c.memory.tiles, fixed.config.memory.tiles);
+}
+
+// The plan writes each object's memories over its motion (memory.assignment): one string per name, in the
+// scene's order, each the fastest and slowest memory the rule put that object in. A run of the walk with them is
+// frame for frame the run without them, nothing held either way (so no range is too narrow); the nearest ball
+// reaches memory 0 and the farthest does not. Edited, they bind: the farthest ball pinned to memory 0 is drawn
+// at every update of memory 0 (one object more each update and eye, exactly), held faster and not slower; the nearest
+// held in the slowest memory is held slower, and the run warns of it once; a name no object has is an error
+// naming the key and the scene, and a warning where the plan was made for another scene.
+TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
+  TempDir d;
+  PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
+  r.tile_sparse = false;  // whole faces: an object pinned anywhere has its tiles there
+  const Plan p = make_plan(r);
+  const int M = p.config.memory.count;
+  ASSERT_GT(M, 1);
+  ASSERT_EQ(p.config.memory.assignment.size(), 5u);
+  std::vector<dp::ObjectAssignment> a;
+  std::string why;
+  ASSERT_TRUE(dp::object_assignments(p.config.memory, a, why)) << why;
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(a[static_cast<size_t>(i)].name, "b" + std::to_string(i));
+  EXPECT_EQ(a[0].fastest, 0);
+  EXPECT_GT(a[4].fastest, 0);
+  EXPECT_EQ(p.assignment.size(), 5u);
+  EXPECT_NE(plan_markdown(p, r).find("| b4 | " + std::to_string(a[4].fastest) + " | " + std::to_string(a[4].slowest) + " |"),
+            std::string::npos);
+  std::ofstream(d.file("plan.json")) << config::to_json(p.config).dump(2);
+  dp::ArpConfig none = p.config;
+  none.memory.assignment.clear();
+  std::ofstream(d.file("none.json")) << config::to_json(none).dump(2);
+  const int frames = static_cast<int>(std::ceil(3.0 * dp::VideoTiming(p.config.timing).refresh_hz()));
+  const auto run = [&](const std::string& config, const std::string& name, int n) {
+    const std::string j = d.file("report-" + name + ".json");
+    const auto o = run_command(kArpsim + " run -q --frames " + std::to_string(n) + " --every 0 --error-every 0 --config " + config +
+                               " --scene " + d.file("row.json") + " --walk " + d.file("walk.json") + " --report " + j);
+    return std::pair{o, o.status == 0 ? test::load_json(j) : nlohmann::json()};
+  };
+  const auto [o1, with] = run(d.file("plan.json"), "with", frames);
+  const auto [o2, without] = run(d.file("none.json"), "without", frames);
+  ASSERT_EQ(o1.status, 0) << o1.output;
+  ASSERT_EQ(o2.status, 0) << o2.output;
+  EXPECT_TRUE(with["frames"] == without["frames"]) << "the frames differ";
+  EXPECT_TRUE(with["host"]["memories"] == without["host"]["memories"]) << with["host"]["memories"].dump();
+  EXPECT_EQ(with["host"]["object_frames_held_slower_by_assignment"], 0);
+  EXPECT_EQ(with["host"]["object_frames_held_faster_by_assignment"], 0);
+  EXPECT_EQ(o1.output.find("memory.assignment"), std::string::npos) << o1.output;
+  // Edited: b4 pinned to memory 0, b0 held in the slowest.
+  const auto edited = [&](const std::string& file, std::vector<std::string> list) {
+    dp::ArpConfig c = p.config;
+    c.memory.assignment = std::move(list);
+    std::ofstream(d.file(file)) << config::to_json(c).dump(2);
+    return d.file(file);
+  };
+  const int n = 30;
+  const auto [o3, base] = run(d.file("plan.json"), "base", n);
+  const auto [o4, pinned] = run(edited("pinned.json", {"b4: 0"}), "pinned", n);
+  ASSERT_EQ(o3.status, 0) << o3.output;
+  ASSERT_EQ(o4.status, 0) << o4.output;
+  const int64_t updates = pinned["host"]["memories"][0]["updates"].get<int64_t>();
+  ASSERT_EQ(updates, base["host"]["memories"][0]["updates"].get<int64_t>());
+  EXPECT_NEAR(pinned["host"]["memories"][0]["objects_per_update"].get<double>(),
+              base["host"]["memories"][0]["objects_per_update"].get<double>() + 2.0, 1e-9);  // (counted for each eye)
+  EXPECT_EQ(pinned["host"]["object_frames_held_faster_by_assignment"], n + 1);  // each frame, and before the first
+  EXPECT_EQ(pinned["host"]["object_frames_held_slower_by_assignment"], 0);
+  EXPECT_EQ(o4.output.find("warning"), std::string::npos) << o4.output;
+  const auto [o5, slow] = run(edited("slow.json", {"b0: " + std::to_string(M - 1)}), "slow", n);
+  ASSERT_EQ(o5.status, 0) << o5.output;
+  EXPECT_GT(slow["host"]["object_frames_held_slower_by_assignment"].get<int64_t>(), 0);
+  size_t warnings = 0;
+  for (size_t at = o5.output.find("memory.assignment kept objects"); at != std::string::npos;
+       at = o5.output.find("memory.assignment kept objects", at + 1))
+    ++warnings;
+  EXPECT_EQ(warnings, 1u) << o5.output;
+  // A name no object of the scene has.
+  const auto [o6, ghost] = run(edited("ghost.json", {"b1: 1", "ghost: 0"}), "ghost", 2);
+  EXPECT_NE(o6.status, 0);
+  EXPECT_NE(o6.output.find("ghost.json"), std::string::npos) << o6.output;
+  EXPECT_NE(o6.output.find("memory.assignment"), std::string::npos) << o6.output;
+  EXPECT_NE(o6.output.find("1 of its names are no object of scene row: \"ghost\""), std::string::npos) << o6.output;
+  EXPECT_FALSE(std::filesystem::exists(d.file("report-ghost.json")));
+  dp::ArpConfig other = config::load_file(d.file("ghost.json"));
+  other.plan.scene_hash = p.scene_hash + 1;
+  std::ofstream(d.file("other.json")) << config::to_json(other).dump(2);
+  const auto [o7, elsewhere] = run(d.file("other.json"), "elsewhere", 2);
+  ASSERT_EQ(o7.status, 0) << o7.output;
+  EXPECT_NE(o7.output.find("the plan was made for another scene"), std::string::npos) << o7.output;
 }
 
 // A tile-sparse memory's bytes in closed form: the default texel is 24 + 16 bits; a bank with 3 tiles holds

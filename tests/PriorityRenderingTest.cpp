@@ -4,6 +4,7 @@
 // their timing rules.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -99,6 +100,67 @@ TEST(PriorityScheduler, AnObjectGoesNoSlowerThanAMemoryHoldingItsTiles) {
     EXPECT_EQ(sch.rule_choice(i), 3) << i;
     EXPECT_EQ(sch.fits(i, 0, {}, 0), i != 7) << i;
   }
+}
+
+// memory.assignment bounds the rule: each object's memory is the rule's choice clamped to its name's range, worked
+// out here from the validity formula (the slowest memory m whose period 2^m / 60 s is within it). Walking at 5 m/s,
+// a near ball's rule is memory 0 and a far one's memory 3; every "mid" ball, whatever its rule, stays in 1 .. 2.
+TEST(PriorityScheduler, ObjectsNamedInTheAssignmentStayInTheirMemories) {
+  Scene s;
+  auto ball = std::make_shared<Mesh>(make_sphere(0.1, 8));
+  add_object(s, "near", ball, {0, 0, -0.5}, {});
+  add_object(s, "far", ball, {0, 0, -80}, {});
+  for (int i = 0; i < 100; ++i) add_object(s, "mid", ball, {0, 0, -0.5 - 0.5 * i}, {});  // to 50 m: rules 0 .. 2
+  add_object(s, "free", ball, {0, 0, -60}, {});
+  add_object(s, "free", ball, {0, 0, -200}, {});  // the rule's slowest: at its range's end, not past it
+  PriorityConfig pc;
+  pc.threshold_rad = 0.5 * kPi / 180;
+  for (const char* a : {"near: 2-3", "far: 0", "mid: 1-2", "ghost: 1"}) {
+    dp::ObjectAssignment e;
+    std::string why;
+    ASSERT_TRUE(dp::ObjectAssignment::parse(a, 4, e, why)) << why;
+    pc.assignment.push_back(e);
+  }
+  PriorityScheduler sch(s, pc, 512);
+  EXPECT_EQ(sch.unknown_names(), std::vector<std::string>{"ghost"});
+  const auto range = [&](size_t i) {
+    const std::string& n = s.objects[i].name;
+    return n == "near" ? std::pair{2, 3} : n == "far" ? std::pair{0, 0} : n == "mid" ? std::pair{1, 2} : std::pair{0, 3};
+  };
+  int64_t slower = 0, faster = 0;
+  bool near_rule_fast = false, far_rule_slow = false, mid_at_end = false, free_at_end = false;
+  for (double t = 0; t < 1; t += 0.125) {
+    const glm::dvec3 eye{0, 0, -5 * t};
+    sch.assign(eye, 5.0, t);
+    for (size_t i = 0; i < s.objects.size(); ++i) {
+      const Sphere b = s.objects[i].world_bound(t);
+      const double p = validity({glm::length(b.center - eye), b.radius, 5.0, 0}, pc.threshold_rad).period_s();
+      int rule = 0;
+      while (rule < 3 && std::pow(2.0, rule + 1) / 60.0 <= p) ++rule;
+      const auto [lo, hi] = range(i);
+      slower += rule < lo ? 1 : 0;
+      faster += rule > hi ? 1 : 0;
+      near_rule_fast = near_rule_fast || (i == 0 && rule == 0);
+      far_rule_slow = far_rule_slow || (i == 1 && rule == 3);
+      mid_at_end = mid_at_end || (s.objects[i].name == "mid" && rule == 2);
+      free_at_end = free_at_end || (s.objects[i].name == "free" && rule == 3);
+      EXPECT_EQ(sch.belongs_in(i), std::clamp(rule, lo, hi)) << i << " at " << t;
+      EXPECT_EQ(sch.fastest_allowed(i), lo);
+      EXPECT_EQ(sch.slowest_allowed(i), hi);
+    }
+  }
+  EXPECT_TRUE(near_rule_fast && far_rule_slow);  // the clamps bite both ways
+  EXPECT_TRUE(mid_at_end && free_at_end);         // and rules at a range's end are not counted
+  EXPECT_GE(slower, 8);  // (near: every step)
+  EXPECT_GE(faster, 8);  // (far: every step)
+  EXPECT_EQ(sch.held_slower(), slower);
+  EXPECT_EQ(sch.held_faster(), faster);
+  // The baseline places every object itself: memory 0, the assignment not used.
+  pc.baseline = true;
+  PriorityScheduler base(s, pc, 512);
+  base.assign({0, 0, 0}, 5.0, 0);
+  EXPECT_EQ(base.objects_in(0).size(), s.objects.size());
+  EXPECT_EQ(base.held_slower() + base.held_faster(), 0);
 }
 
 TEST(WalkPath, WalksAtItsSpeedLoopsAndRefusesDegeneratePaths) {

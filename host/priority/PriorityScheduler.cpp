@@ -1,5 +1,6 @@
 #include "PriorityScheduler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include "common/Units.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
@@ -20,7 +21,20 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
       threshold_(cfg.threshold_rad > 0 ? cfg.threshold_rad : dp::texel_angle_rad(face_size)),
       memory_(scene.objects.size(), 0),
       desired_(scene.objects.size(), 0),
-      rule_(scene.objects.size(), 0) {}
+      rule_(scene.objects.size(), 0),
+      fastest_(scene.objects.size(), 0),
+      slowest_(scene.objects.size(), std::max(0, cfg.memories - 1)) {
+  for (const dp::ObjectAssignment& a : cfg_.assignment) {
+    bool found = false;
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+      if (scene.objects[i].name == a.name) {
+        fastest_[i] = std::min(a.fastest, cfg_.memories - 1);
+        slowest_[i] = std::min(a.slowest, cfg_.memories - 1);
+        found = true;
+      }
+    if (!found) unknown_.push_back(a.name);
+  }
+}
 
 void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double t) {
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -28,6 +42,9 @@ void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double 
     if (!cfg_.baseline) {
       const double p = object_validity(scene_.objects[i], eye, user_speed, t, threshold_).period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
+      held_slower_ += m < fastest_[i] ? 1 : 0;
+      held_faster_ += m > slowest_[i] ? 1 : 0;
+      m = std::clamp(m, fastest_[i], slowest_[i]);
     }
     rule_[i] = m;
     if (fits_ && m > 0) {

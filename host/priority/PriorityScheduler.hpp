@@ -8,10 +8,13 @@
 // nor by none (HostSimulation decides when; tested). The baseline renders
 // everything into memory 0 every frame. Where memories hold only some tiles
 // (memory.tiles), an object goes no slower than the slowest memory at or
-// below its rule's choice that holds the tiles it draws on (set_fits).
+// below its rule's choice that holds the tiles it draws on (set_fits). Objects named in memory.assignment
+// are kept within their memories: the rule's choice is clamped to them (before the tiles' choice).
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "Validity.hpp"
@@ -26,10 +29,14 @@ struct PriorityConfig {
   double display_hz = 60.0;
   double threshold_rad = 0.0;   // 0: the angle of one display-memory texel at a face centre, (pi/2) / face_size
   bool baseline = false;        // everything in memory 0, rendered every frame
+  std::vector<dp::ObjectAssignment> assignment;  // memory.assignment: the memories named objects are kept in
 
-  // The memories and their update ladder as a configuration sets them (memory.count, memory.update_*).
+  // The memories and their update ladder as a configuration sets them (memory.count, memory.update_*,
+  // memory.assignment; std::invalid_argument where the last does not parse: a configuration not validated).
   static PriorityConfig of(const dp::MemoryConfig& m, double display_hz) {
     PriorityConfig pc;
+    std::string why;
+    if (!dp::object_assignments(m, pc.assignment, why)) throw std::invalid_argument("memory.assignment: " + why);
     pc.memories = m.count;
     pc.update_frames = m.update_frames;
     pc.update_ratio = m.update_ratio;
@@ -62,7 +69,16 @@ class PriorityScheduler {
   using Fits = std::function<bool(size_t object, int memory, const glm::dvec3& eye, double t_s)>;
   void set_fits(Fits f) { fits_ = std::move(f); }
   bool fits(size_t object, int m, const glm::dvec3& eye, double t_s) const { return !fits_ || fits_(object, m, eye, t_s); }
-  int rule_choice(size_t object) const { return rule_[object]; }  // where the rule alone puts it (before the tiles)
+  int rule_choice(size_t object) const { return rule_[object]; }  // where the rule puts it (assignment, not the tiles)
+  // The memories memory.assignment keeps an object in (every memory where it names none of that name).
+  int fastest_allowed(size_t object) const { return fastest_[object]; }
+  int slowest_allowed(size_t object) const { return slowest_[object]; }
+  // memory.assignment's names no object of the scene has, in the order given.
+  const std::vector<std::string>& unknown_names() const { return unknown_; }
+  // Object placements (assign() calls times objects) the assignment kept slower than the validity rule put
+  // them (their images may move further than theta_t before the next update), and faster.
+  int64_t held_slower() const { return held_slower_; }
+  int64_t held_faster() const { return held_faster_; }
   int memory_of(size_t object) const { return memory_[object]; }    // where it is
   int belongs_in(size_t object) const { return desired_[object]; }  // where it should go
   void move(size_t object) { move_to(object, desired_[object]); }
@@ -82,8 +98,9 @@ class PriorityScheduler {
   const Scene& scene_;
   PriorityConfig cfg_;
   double threshold_;
-  std::vector<int> memory_, desired_, rule_;
-  int64_t moves_ = 0;
+  std::vector<int> memory_, desired_, rule_, fastest_, slowest_;
+  std::vector<std::string> unknown_;
+  int64_t moves_ = 0, held_slower_ = 0, held_faster_ = 0;
   Fits fits_;
 };
 

@@ -141,6 +141,11 @@ ParameterTable<ArpConfig> make_parameters() {
            "priority rendering's threshold angle theta_t: an object is re-rendered before its image moves this far "
            "(0: one texel at a face's centre, 90 deg / face_size; arpsim plan records the one it planned for; "
            "--threshold-deg overrides)");
+  t.text_list("memory.assignment", [](auto& c) -> auto& { return c.memory.assignment; }, 65536, "", "",
+              "the memories objects are kept in, one string per object name (none: the priority rule alone): \"name: m\" "
+              "pins every object of that name to memory m, \"name: a-b\" keeps them in memories a to b (0 the fastest); the "
+              "rule's choice is clamped to that range, and the tile and pool guards may still send one faster (arpsim plan "
+              "writes the memories its rule gives each object over the motion; docs/planning.md)");
   t.number("memory.region_size_m", [](auto& c) -> auto& { return c.memory.region_size_m; }, 0.0, 100000.0, "m",
            "region priority rendering (Chow, Pose & Regan 2005) with a walk: the world cut into square columns of this size, "
            "each region's objects in the memory of its ring around the user's region; 0: object-level priority "
@@ -215,6 +220,75 @@ std::string MemoryConfig::absent_face_names() const {
   return s.empty() ? "none" : s;
 }
 
+namespace {
+std::string trimmed(const std::string& s) {
+  const size_t b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+// A memory index in decimal digits only, below `memories`.
+bool memory_index(const std::string& s, int memories, int& out, std::string& why) {
+  if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) {
+    why = "\"" + s + "\" is not a memory number";
+    return false;
+  }
+  out = std::stoi(s);
+  if (out >= memories) {
+    why = "memory " + s + " is past memory.count (" + std::to_string(memories) + " memories, 0 .. " +
+          std::to_string(memories - 1) + ")";
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+std::string ObjectAssignment::text() const {
+  return name + ": " + (fastest == slowest ? std::to_string(fastest) : std::to_string(fastest) + "-" + std::to_string(slowest));
+}
+
+bool ObjectAssignment::parse(const std::string& text, int memories, ObjectAssignment& out, std::string& why) {
+  const size_t colon = text.rfind(':');
+  if (colon == std::string::npos) {
+    why = "has no colon: expected \"name: m\" or \"name: a-b\"";
+    return false;
+  }
+  ObjectAssignment a;
+  a.name = trimmed(text.substr(0, colon));
+  if (a.name.empty()) {
+    why = "names no object before its colon";
+    return false;
+  }
+  const std::string range = trimmed(text.substr(colon + 1));
+  const size_t dash = range.find('-');
+  if (!memory_index(trimmed(range.substr(0, dash)), memories, a.fastest, why)) return false;
+  a.slowest = a.fastest;
+  if (dash != std::string::npos && !memory_index(trimmed(range.substr(dash + 1)), memories, a.slowest, why)) return false;
+  if (a.slowest < a.fastest) {
+    why = "runs from memory " + std::to_string(a.fastest) + " to the faster memory " + std::to_string(a.slowest) +
+          ": write the faster (lower) memory first";
+    return false;
+  }
+  out = std::move(a);
+  return true;
+}
+
+bool object_assignments(const MemoryConfig& m, std::vector<ObjectAssignment>& out, std::string& why) {
+  out.clear();
+  for (size_t i = 0; i < m.assignment.size(); ++i) {
+    ObjectAssignment a;
+    if (!ObjectAssignment::parse(m.assignment[i], m.count, a, why)) {
+      why = "string " + std::to_string(i) + " (\"" + m.assignment[i] + "\") " + why;
+      return false;
+    }
+    for (size_t j = 0; j < out.size(); ++j)
+      if (out[j].name == a.name) {
+        why = "strings " + std::to_string(j) + " and " + std::to_string(i) + " both name \"" + a.name + "\"";
+        return false;
+      }
+    out.push_back(std::move(a));
+  }
+  return true;
+}
+
 std::vector<ConfigIssue> validate(const ArpConfig& c) {
   // Every declared range first, then what ties keys together.
   std::vector<ConfigIssue> issues = arp_parameters().check_ranges(c);
@@ -245,6 +319,11 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
   if (!c.memory.tile_pool.empty() && static_cast<int>(c.memory.tile_pool.size()) != c.memory.count)
     ck.fail("memory.tile_pool", "has " + std::to_string(c.memory.tile_pool.size()) + " numbers and memory.count is " +
                                     std::to_string(c.memory.count) + ": one for each memory, or none (no pool)");
+  if (issues.empty() && !c.memory.assignment.empty()) {
+    std::vector<ObjectAssignment> a;
+    std::string why;
+    if (!object_assignments(c.memory, a, why)) ck.fail("memory.assignment", why);
+  }
   const auto& l = c.lens;
   if (std::abs(l.center_offset_px) >= t.h_active / 2.0)
     ck.fail("lens.center_offset_px", "must be less than half of display.h_active in magnitude");

@@ -105,6 +105,9 @@ struct MemoryConfig {
   int update_frames = 1;
   int update_ratio = 2;
   double threshold_deg = 0;  // theta_t: an object is re-rendered before its image moves this far (0: one texel)
+  // The objects' memories, bounding the priority rule (ObjectAssignment's text, one string per object name; none:
+  // the rule alone). `arpsim plan` writes the memories its rule gives each object over the motion.
+  std::vector<std::string> assignment{};
   // Region priority rendering (Chow, Pose & Regan 2005) instead of object-level: the world cut into square
   // columns of region_size_m (0: object-level), re-assigned once the user is region_margin_m inside a new one.
   double region_size_m = 0;
@@ -123,6 +126,20 @@ struct MemoryConfig {
   int64_t frames_per_update(int m) const { return update_period_frames(update_frames, update_ratio, m); }
   static constexpr int64_t kMaxUpdateFrames = int64_t{1} << 20;
 };
+
+// One string of memory.assignment: the objects named `name` (every object of the scene with that name) are kept
+// in memories fastest .. slowest (memory 0 the fastest): the priority rule's choice for them is clamped to that
+// range, before the storage guards (tiles, pools), which may still send one faster. Written "name: m" (fastest =
+// slowest = m, pinned) or "name: a-b"; the name is everything before the last colon, spaces around it trimmed.
+struct ObjectAssignment {
+  std::string name;
+  int fastest = 0, slowest = 0;
+  std::string text() const;  // what parse() reads back as this entry
+  // False, with why, where `text` is not such a string or names a memory past `memories`.
+  static bool parse(const std::string& text, int memories, ObjectAssignment& out, std::string& why);
+};
+// memory.assignment's entries; false with why (naming the string) where one does not parse or a name repeats.
+bool object_assignments(const MemoryConfig& m, std::vector<ObjectAssignment>& out, std::string& why);
 
 // The host's simulated rendering engine (host::RenderEngine): how long a render
 // takes, from what it drew -- never the wall-clock time of arpsim's own code, so
