@@ -49,6 +49,10 @@ still default
 # The plan's tiles (memory.tiles) are bounded for the walk: standing, the priority rule would put every object in
 # the slowest memory, outside them; the host keeps each in a memory holding its tiles (said after the table).
 still plan --config "$tmp/plan.json"
+# The plan's memory.assignment keeps each object within the memories the walk put it in: standing, it holds the
+# objects the walk never let the rule put in the slowest memory faster than the rule would. Without it, the rule
+# alone (and the tile and pool guards).
+still plan-unassigned --config "$tmp/plan.json" --set 'memory.assignment=[]'
 echo "| configuration | memories | face | display memory, hardware MiB | tile-sparse MiB (the tiles this run drew on) | modelled peak MiB | texels lost walking (absent faces, tiles, tile pool full) | host ms/frame (wall) | pipeline M pixel clocks/s (host and truth excluded) | host triangles/s (modelled) | mean PSNR dB (truth at $TRUTH) | worst share of another object | PSNR dB standing, turning 30 deg/s (truth at $STILL_TRUTH, 2 x 2 area) |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for name in default plan; do
@@ -61,3 +65,4 @@ for name in default plan; do
     "\($still[0].host.error.mean_psnr_db * 100 | round / 100) |"' "$tmp/run-$name.json"
 done
 jq -r '"Standing and turning with the plan: \(.footprint.texels_lost_off_tiles) texels lost off its tiles, \(.footprint.texels_lost_tile_pool_full) for want of a tile slot, \(.host.object_frames_held_faster_for_tiles) object-frames kept in a faster memory than the rule'"'"'s for its tiles, \(.host.object_frames_kept_faster_for_tile_pool) kept in a faster memory than the rule'"'"'s for a full tile pool, \(.host.triangles_per_s | round) triangles/s."' "$tmp/still-plan.json"
+jq -r --slurpfile walk "$tmp/run-plan.json" --slurpfile free "$tmp/still-plan-unassigned.json" '"memory.assignment: walking, \($walk[0].host.object_frames_held_slower_by_assignment) object-frames held slower than the rule, \($walk[0].host.object_frames_held_faster_by_assignment) faster; standing and turning, \(.host.object_frames_held_slower_by_assignment) slower, \(.host.object_frames_held_faster_by_assignment) faster. Standing and turning without it: \($free[0].host.triangles_per_s | round) triangles/s, \($free[0].host.error.mean_psnr_db * 100 | round / 100) dB, texels lost \($free[0].footprint.texels_lost_off_tiles) off tiles and \($free[0].footprint.texels_lost_tile_pool_full) for a slot."' "$tmp/still-plan.json"

@@ -263,7 +263,7 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
 // over every sample, as ladder_load does): the fastest and slowest it is put in, every object of one name
 // together (memory.assignment names objects), in the order the names first appear in the scene. A name
 // memory.assignment cannot hold (empty, not printable ASCII, spaces around it, which its strings trim) is left
-// to the rule alone and returned in `unnamed`.
+// to the rule alone and returned in `unnamed`. (A colon is held: a string's name ends at its last colon.)
 std::vector<dp::ObjectAssignment> object_memories(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
                                                   double hz, double threshold_rad, const LadderLoad& L,
                                                   std::vector<std::string>& unnamed) {
@@ -282,7 +282,7 @@ std::vector<dp::ObjectAssignment> object_memories(const host::Scene& scene, cons
   for (size_t i = 0; i < n && !ms.t.empty(); ++i) {
     const std::string& name = scene.objects[i].name;
     const bool printable = std::all_of(name.begin(), name.end(), [](char ch) { return ch >= ' ' && ch <= '~'; });
-    if (name.empty() || !printable || name.front() == ' ' || name.back() == ' ' || name.find(':') != std::string::npos) {
+    if (name.empty() || !printable || name.front() == ' ' || name.back() == ' ') {
       if (std::find(unnamed.begin(), unnamed.end(), name) == unnamed.end()) unnamed.push_back(name);
       continue;
     }
@@ -557,13 +557,16 @@ Plan make_plan(const PlanRequest& r) {
   config::check(r.base, r.base_source);
   Plan p;
   p.config = r.base;
-  // The tiles are planned anew (a plan started from a plan's configuration), and the starting configuration's
-  // memory weighed as whole faces, as every ladder is.
+  // The tiles and the assignment are planned anew (a plan started from a plan's configuration: its lists name
+  // its own memories, and would make every ladder with fewer invalid), and the starting configuration's memory
+  // weighed as whole faces, as every ladder is.
   p.config.memory.tiles.clear();
   p.config.memory.tile_pool.clear();
+  p.config.memory.assignment.clear();
   dp::ArpConfig base_whole = r.base;
   base_whole.memory.tiles.clear();
   base_whole.memory.tile_pool.clear();
+  base_whole.memory.assignment.clear();
   auto progress = [&](double f, const std::string& w) {
     if (r.progress) r.progress(f, w);
   };
@@ -934,7 +937,7 @@ Plan make_plan(const PlanRequest& r) {
              "there; over another motion they bound the rule, and a name edited to one memory pins its objects there" +
              (r.base.memory.assignment.empty() ? std::string() : " (" + r.base_source + "'s memory.assignment is not kept)") +
              (unnamed.empty() ? std::string()
-                              : "; " + std::to_string(unnamed.size()) + " names the key cannot hold (not printable ASCII, a colon, "
+                              : "; " + std::to_string(unnamed.size()) + " names the key cannot hold (empty, not printable ASCII, "
                                 "or spaces at an end) are left to the rule")});
   } else {
     p.choices.push_back({"memory.assignment", "none",
@@ -1029,6 +1032,9 @@ Plan make_plan(const PlanRequest& r) {
                                            "footprint.texels_lost_tile_pool_full and warns; its "
                                            "footprint.display_memory_tiles_most_at_once gives the slots it used"))});
   }
+  if (!p.config.memory.assignment.empty())
+    p.not_decided.push_back("an assignment other than the rule's: memory.assignment is where the rule put each object over the "
+                            "motion (objects of one name together), not chosen to spare moves between memories or pool slots");
   p.not_decided.push_back("a face size per memory (one face size for every memory: the composition unit composes each bilinear "
                           "tap across the memories at the same texel position)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
@@ -1271,8 +1277,11 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
          "the fastest. memory.assignment holds them" +
          std::string(p.config.memory.region_size_m > 0 ? " (not used: region priority rendering was taken)" : "") +
          ".\n\n| object | fastest | slowest |\n| --- | --- | --- |\n";
-    for (const dp::ObjectAssignment& a : p.assignment)
-      s += "| " + a.name + " | " + std::to_string(a.fastest) + " | " + std::to_string(a.slowest) + " |\n";
+    for (const dp::ObjectAssignment& a : p.assignment) {
+      std::string name;  // a '|' would end the cell
+      for (const char ch : a.name) name += ch == '|' ? std::string("\\|") : std::string(1, ch);
+      s += "| " + name + " | " + std::to_string(a.fastest) + " | " + std::to_string(a.slowest) + " |\n";
+    }
   }
   s += "\n## Not decided by this plan\n\n";
   for (const auto& n : p.not_decided) s += "- " + n + "\n";

@@ -494,6 +494,7 @@ void Session::build_memories() {
   scene_ = std::make_unique<host::Scene>(spec_.memories.load_scene());
   host::PriorityConfig pc = host::PriorityConfig::of(c.memory, timing_.refresh_hz());
   pc.baseline = h.baseline;
+  if (h.baseline || c.memory.region_size_m != 0) pc.assignment.clear();  // they place objects themselves (check_assignment says so)
   auto head = [this](double tt) {
     // The host may render ahead of the frame (a memory queued behind a busy
     // engine): the generated motion is extended to whatever time it asks for.

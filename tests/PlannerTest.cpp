@@ -179,8 +179,8 @@ int64_t tiles_in_text(const std::string& text, int T);  // below
 // sized for the objects it holds walking. The host then keeps each object no slower than a memory holding
 // its tiles: a run of the plan standing at the walk's start loses nothing, keeping objects faster than the
 // rule would (seen losing texels with the host's tile test left out). The plan's memory.assignment, which
-// bounds each ball to the memories it had walking, is left out here: it alone keeps the nearest balls faster
-// than the rule standing (a run with it: below).
+// bounds each ball to the memories it had walking, is left out here (it too keeps the nearest balls faster than
+// the rule standing: a run with it, below).
 TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   TempDir d;
   PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
@@ -210,8 +210,12 @@ TEST(Planner, StandingStillARunKeepsObjectsInMemoriesHoldingTheirTiles) {
   EXPECT_EQ(rep[1]["host"]["object_frames_held_faster_for_tiles"], 0);  // every tile: the rule's own choice
   EXPECT_GT(rep[0]["host"]["triangles_per_s"].get<double>(), rep[1]["host"]["triangles_per_s"].get<double>());
   // With the assignment: the balls the walk never put in the slowest memory are held faster standing.
-  EXPECT_EQ(p.config.memory.assignment[0].substr(0, 4), "b0: ");
-  EXPECT_NE(p.config.memory.assignment[0].back() - '0', p.config.memory.count - 1);
+  std::vector<dp::ObjectAssignment> a;
+  std::string why;
+  ASSERT_TRUE(dp::object_assignments(p.config.memory, a, why)) << why;
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a[0].name, "b0");
+  EXPECT_LT(a[0].slowest, p.config.memory.count - 1);
   EXPECT_GT(rep[2]["host"]["object_frames_held_faster_by_assignment"].get<int64_t>(), 0);
   EXPECT_EQ(rep[2]["footprint"]["texels_lost_off_tiles"], 0);
 }
@@ -1482,6 +1486,17 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
        at = o5.output.find("memory.assignment kept objects", at + 1))
     ++warnings;
   EXPECT_EQ(warnings, 1u) << o5.output;
+  // Region priority rendering and the baseline place objects themselves: the key is not used, and the run says so.
+  for (const std::string mode : {" --regions 2", " --baseline"}) {
+    const std::string j = d.file("report-mode.json");
+    const auto o = run_command(kArpsim + " run -q --frames 4 --every 0 --error-every 0 --config " + edited("mode.json", {"b0: 2", "b4: 0"}) +
+                               " --scene " + d.file("row.json") + " --walk " + d.file("walk.json") + mode + " --report " + j);
+    ASSERT_EQ(o.status, 0) << o.output;
+    EXPECT_NE(o.output.find("memory.assignment is not used"), std::string::npos) << mode << o.output;
+    const nlohmann::json m = test::load_json(j);
+    EXPECT_EQ(m["host"]["object_frames_held_slower_by_assignment"], 0) << mode;
+    EXPECT_EQ(m["host"]["object_frames_held_faster_by_assignment"], 0) << mode;
+  }
   // A name no object of the scene has.
   const auto [o6, ghost] = run(edited("ghost.json", {"b1: 1", "ghost: 0"}), "ghost", 2);
   EXPECT_NE(o6.status, 0);
@@ -1495,6 +1510,50 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
   const auto [o7, elsewhere] = run(d.file("other.json"), "elsewhere", 2);
   ASSERT_EQ(o7.status, 0) << o7.output;
   EXPECT_NE(o7.output.find("the plan was made for another scene"), std::string::npos) << o7.output;
+}
+
+// Objects of one name share one string: its range is the union of theirs, as the same scene with the two
+// named apart plans them (a name may hold colons: the string's name ends at its last colon). A plan made from
+// that plan plans the same again: the starting configuration's assignment is not kept, and leaves no ladder out.
+TEST(Planner, ObjectsOfOneNameShareTheUnionOfTheirMemoriesAndAPlanFromAPlanIsTheSame) {
+  TempDir d;
+  const auto scene = [&](const std::string& file, const std::string& first, const std::string& second) {
+    write(d.file(file), R"({"name": "pair", "objects": [{"name": ")" + first + R"(", "sphere": 0.5, "position": [2, 1.6, -1.5]},
+      {"name": "far", "sphere": 0.5, "position": [2, 1.6, -12]},
+      {"name": ")" + second + R"(", "sphere": 0.5, "position": [2, 1.6, -40]}]})");
+  };
+  scene("apart.json", "pair: near", "pair: far");
+  scene("shared.json", "pair: x", "pair: x");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3]]})");
+  const auto plan = [&](const std::string& file, const dp::ArpConfig& base) {
+    PlanRequest r = request(d.file(file), d.file("walk.json"));
+    r.base = base;
+    r.threshold_deg = 0.5;
+    r.size_widths = false;
+    r.tile_sparse = false;
+    r.memory_limit_mib = 0;  // (by default a plan from a plan is held to that plan's memory)
+    return make_plan(r);
+  };
+  const Plan apart = plan("apart.json", small_display()), shared = plan("shared.json", small_display());
+  ASSERT_GT(apart.config.memory.count, 1);
+  std::vector<dp::ObjectAssignment> a, b;
+  std::string why;
+  ASSERT_TRUE(dp::object_assignments(apart.config.memory, a, why)) << why;
+  ASSERT_TRUE(dp::object_assignments(shared.config.memory, b, why)) << why;
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(a[0].name, "pair: near");
+  EXPECT_EQ(a[2].name, "pair: far");
+  EXPECT_LT(a[0].slowest, a[2].fastest);  // the near ball is always faster than the far one: the union spans both
+  EXPECT_EQ(b[0].name, "pair: x");
+  EXPECT_EQ(b[0].fastest, a[0].fastest);
+  EXPECT_EQ(b[0].slowest, a[2].slowest);
+  EXPECT_EQ(b[1].text(), a[1].text());
+  // Planned again from the plan (with more memories than one ladder weighed has).
+  const Plan again = plan("apart.json", apart.config);
+  EXPECT_EQ(again.ladders.size(), apart.ladders.size());
+  EXPECT_EQ(again.config.memory.count, apart.config.memory.count);
+  EXPECT_EQ(again.config.memory.assignment, apart.config.memory.assignment);
 }
 
 // A tile-sparse memory's bytes in closed form: the default texel is 24 + 16 bits; a bank with 3 tiles holds

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include "common/Units.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
@@ -24,15 +25,19 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
       rule_(scene.objects.size(), 0),
       fastest_(scene.objects.size(), 0),
       slowest_(scene.objects.size(), std::max(0, cfg.memories - 1)) {
+  std::map<std::string, std::vector<size_t>> named;  // name -> its objects
+  if (!cfg_.assignment.empty())
+    for (size_t i = 0; i < scene.objects.size(); ++i) named[scene.objects[i].name].push_back(i);
   for (const dp::ObjectAssignment& a : cfg_.assignment) {
-    bool found = false;
-    for (size_t i = 0; i < scene.objects.size(); ++i)
-      if (scene.objects[i].name == a.name) {
-        fastest_[i] = std::min(a.fastest, cfg_.memories - 1);
-        slowest_[i] = std::min(a.slowest, cfg_.memories - 1);
-        found = true;
-      }
-    if (!found) unknown_.push_back(a.name);
+    const auto objects = named.find(a.name);
+    if (objects == named.end()) {
+      unknown_.push_back(a.name);
+      continue;
+    }
+    for (const size_t i : objects->second) {
+      fastest_[i] = std::min(a.fastest, cfg_.memories - 1);
+      slowest_[i] = std::min(a.slowest, cfg_.memories - 1);
+    }
   }
 }
 

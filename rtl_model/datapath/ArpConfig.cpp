@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 
 #include "CubeFaceAddressGenerator.hpp"
 #include "PipelineSchedule.hpp"
@@ -273,17 +274,17 @@ bool ObjectAssignment::parse(const std::string& text, int memories, ObjectAssign
 
 bool object_assignments(const MemoryConfig& m, std::vector<ObjectAssignment>& out, std::string& why) {
   out.clear();
+  std::map<std::string, size_t> seen;  // name -> its string
   for (size_t i = 0; i < m.assignment.size(); ++i) {
     ObjectAssignment a;
     if (!ObjectAssignment::parse(m.assignment[i], m.count, a, why)) {
       why = "string " + std::to_string(i) + " (\"" + m.assignment[i] + "\") " + why;
       return false;
     }
-    for (size_t j = 0; j < out.size(); ++j)
-      if (out[j].name == a.name) {
-        why = "strings " + std::to_string(j) + " and " + std::to_string(i) + " both name \"" + a.name + "\"";
-        return false;
-      }
+    if (const auto [at, fresh] = seen.emplace(a.name, i); !fresh) {
+      why = "strings " + std::to_string(at->second) + " and " + std::to_string(i) + " both name \"" + a.name + "\"";
+      return false;
+    }
     out.push_back(std::move(a));
   }
   return true;
