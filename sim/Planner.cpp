@@ -451,10 +451,31 @@ HeldTiles held_tiles(const dp::ArpConfig& c, const TileBound& b, bool tile_spars
   return out;
 }
 
-// `c`'s hardware display memory holding the tiles of `b` as held_tiles puts them.
-int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse) {
-  c.memory.tiles = held_tiles(c, b, tile_sparse).texts;
-  c.memory.tile_pool.clear();
+// Each memory's tile pool for a tile bound (memory.tile_pool; empty: none anywhere): the slots the motion needs
+// (TileBound::pooled) where a pool takes less than the tiles held_tiles gives it, or its whole faces.
+std::vector<int64_t> pools_taken(const dp::ArpConfig& c, const TileBound& b, const HeldTiles& held) {
+  std::vector<int64_t> pools(b.maps.size(), 0);
+  bool any = false;
+  for (size_t m = 0; m < b.maps.size(); ++m) {
+    const int64_t reach = b.per_memory[m];
+    const int64_t held_bits = held.sparse[m] ? bank_bits_tiled(c, reach) : bank_bits_whole(c);
+    if (reach > 0 && bank_bits_pooled(c, b.pooled[m]) < held_bits) {
+      pools[m] = b.pooled[m];
+      any = true;
+    }
+  }
+  if (!any) pools.clear();
+  return pools;
+}
+
+// `c`'s hardware display memory holding the tiles of `b` as held_tiles puts them, and with `tile_pool` a pool
+// wherever pools_taken takes one (a pooled memory's tables address every tile of its faces).
+int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse, bool tile_pool) {
+  const HeldTiles held = held_tiles(c, b, tile_sparse);
+  c.memory.tiles = held.texts;
+  c.memory.tile_pool = tile_sparse && tile_pool ? pools_taken(c, b, held) : std::vector<int64_t>{};
+  for (size_t m = 0; m < c.memory.tile_pool.size(); ++m)
+    if (c.memory.tile_pool[m] > 0 && !c.memory.tiles.empty()) c.memory.tiles[m] = every_tile_text(c);
   return display_memory_bytes(c);
 }
 
@@ -765,7 +786,7 @@ Plan make_plan(const PlanRequest& r) {
       dp::ArpConfig c = p.config;
       c.memory.count = L.count;
       c.memory.depth_bits = depth_bits_for(L.count, r.base);
-      L.memory_bytes_tiled = bytes_as_planned(c, b, true);
+      L.memory_bytes_tiled = bytes_as_planned(c, b, true, r.tile_pool && r.weigh_pools);
     }
     const auto least = *std::min_element(candidates.begin(), candidates.end(), [](const LadderLoad& a, const LadderLoad& b) {
       return a.memory_bytes_weighed() < b.memory_bytes_weighed();
@@ -775,7 +796,7 @@ Plan make_plan(const PlanRequest& r) {
       throw InputError("--memory-limit", fmt("%g", limit_mib),
                        "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
                            fmt("%.1f", static_cast<double>(least.memory_bytes_weighed()) / 1048576.0) + " MiB (" + ladder_text(least) +
-                           (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole ? ", tile-sparse" : "") + ")");
+                           (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole ? ", tile-sparse or pooled" : "") + ")");
     const size_t before = candidates.size();
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                     [&](const LadderLoad& L) { return L.memory_bytes_weighed() > p.memory_limit_bytes; }),
@@ -843,7 +864,7 @@ Plan make_plan(const PlanRequest& r) {
     while (p.memory_limit_bytes > 0 && top > base_bits) {
       dp::ArpConfig c = p.config;
       c.memory.depth_bits = top;
-      if (bytes_as_planned(c, p.tiles, r.tile_sparse) <= p.memory_limit_bytes) break;
+      if (bytes_as_planned(c, p.tiles, r.tile_sparse, r.tile_pool) <= p.memory_limit_bytes) break;
       --top;
     }
     p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
@@ -885,7 +906,7 @@ Plan make_plan(const PlanRequest& r) {
                       std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4" +
                       (p.memory_limit_bytes > 0 ? ", the engine can carry, within " +
                                                       fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
-                                                      " MiB of display memory" + (r.tile_sparse ? " (as whole faces, or as planned tile-sparse where those are over)" : "") + " (--memory-limit" +
+                                                      " MiB of display memory" + (r.tile_sparse ? std::string(" (as whole faces, or as planned -- tile-sparse") + (r.tile_pool && r.weigh_pools ? " or with tile pools, --weigh-pools" : "") + " -- where those are over)" : std::string()) + " (--memory-limit" +
                                                       (r.memory_limit_mib ? std::string(")")
                                                        : p.memory_limit_bytes > display_memory_bytes(base_whole)
                                                            ? ": the least any ladder takes at this face size, more than " + r.base_source + "'s)"
@@ -971,6 +992,7 @@ Plan make_plan(const PlanRequest& r) {
     std::string value;
     int64_t pooled_bits = 0;  // one eye's banks with a tile pool where that takes less
     std::vector<int64_t> pools(p.tiles.maps.size(), 0);
+    const std::vector<int64_t> cheaper = pools_taken(p.config, p.tiles, held);  // (the figure, whatever the flags)
     for (size_t m = 0; m < p.tiles.maps.size(); ++m) {
       const int64_t reach = p.tiles.per_memory[m];
       const double tiled_one = static_cast<double>(bank_bits_tiled(p.config, reach)) / 8;
@@ -981,13 +1003,12 @@ Plan make_plan(const PlanRequest& r) {
                (reach > 0 ? "; at most " + std::to_string(p.tiles.at_once[m]) + " at once, a pool of " + std::to_string(p.tiles.pooled[m]) +
                                 " slots " + fmt("%.1f", static_cast<double>(bank_bits_pooled(p.config, p.tiles.pooled[m])) / 8 / 1048576.0) + " MiB"
                           : std::string()) + ")";
-      const int64_t held_bits = held.sparse[m] ? bank_bits_tiled(p.config, reach) : bank_bits_whole(p.config);
-      const bool pool = reach > 0 && bank_bits_pooled(p.config, p.tiles.pooled[m]) < held_bits;
-      pooled_bits += pool ? bank_bits_pooled(p.config, p.tiles.pooled[m]) : held_bits;
-      if (pool && r.tile_sparse && r.tile_pool) pools[m] = p.tiles.pooled[m];
+      const bool pool = m < cheaper.size() && cheaper[m] > 0;
+      pooled_bits += pool ? bank_bits_pooled(p.config, cheaper[m]) : held.sparse[m] ? bank_bits_tiled(p.config, reach) : bank_bits_whole(p.config);
+      if (pool && r.tile_sparse && r.tile_pool) pools[m] = cheaper[m];
     }
     p.memory_bytes_pooled = (int64_t{p.config.timing.eyes} * pooled_bits + 7) / 8;
-    p.memory_bytes_fixed_tiles = bytes_as_planned(p.config, p.tiles, r.tile_sparse);
+    p.memory_bytes_fixed_tiles = bytes_as_planned(p.config, p.tiles, r.tile_sparse, false);
     // A memory with a pool holds every tile of the faces present: its tile tables address them all, and the pool
     // bounds how many are stored at once.
     bool any_pool = false, any_fixed = false;
@@ -1224,7 +1245,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
        "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as weighed against "
        "the limit -- where whole faces are over it, each memory holding only the tiles its objects can be drawn on over the "
-       "motion where that takes less; the planned ladder as planned, at its depth code. Ladders the engine cannot "
+       "motion where that takes less (with --weigh-pools, or a tile pool where that takes less still); the planned ladder "
+       "as planned, at its depth code. Ladders the engine cannot "
        "carry, or over the limit either way, are not listed.\n\n"
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
        "display memory, whole faces, MiB | display memory as weighed, MiB |\n"
@@ -1238,7 +1260,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
          fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " +
-         mib(whole) + " | " + (held < whole ? mib(held) + " tile-sparse" : "whole faces") + (planned ? " (planned)" : "") + " |\n";
+         mib(whole) + " | " + (held < whole ? mib(held) + (!planned && r.tile_pool && r.weigh_pools ? " tile-sparse or pooled" : " tile-sparse") : "whole faces") + (planned ? " (planned)" : "") + " |\n";
   }
   if (!p.regions.empty()) {
     s += "\n## Region priority rendering weighed\n\nWith the planned " + std::to_string(p.planned.count) +

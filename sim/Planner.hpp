@@ -53,6 +53,9 @@ struct PlanRequest {
   // false (--fixed-tiles): each memory keeps the fixed tiles above and no tile pool; true: a memory takes a tile
   // pool (memory.tile_pool) where that takes less than its tiles or whole faces.
   bool tile_pool = true;
+  // true (--weigh-pools): a ladder is held to the memory limit with the tile pools it would take (with tile_pool);
+  // false: with its fixed tiles (a pool, taken after, only lowers the memory).
+  bool weigh_pools = false;
   // false (--objects-only): keep object-level priority without weighing region priority rendering.
   bool weigh_regions = true;
   // true (--take-regions): take region priority rendering where the weighing finds it keeps objects within theta_t
@@ -82,8 +85,9 @@ struct LadderLoad {
   std::vector<double> objects;    // mean objects in each memory
   // Its hardware display memory at the planned face size and faces, with the depth code it is weighed at: as
   // whole faces, and as it would be planned -- each memory holding only the tiles its objects can be drawn on
-  // over the motion where that takes less (0: not bounded, where whole faces are within the memory limit or
-  // the plan keeps whole faces). The memory limit holds the less of the two.
+  // over the motion where that takes less, or with --weigh-pools a tile pool where that takes less still (0: not
+  // bounded, where whole faces are within the memory limit or the plan keeps whole faces). The memory limit holds
+  // the less of the two.
   int64_t memory_bytes_whole = 0, memory_bytes_tiled = 0;
   int64_t memory_bytes_weighed() const {
     return memory_bytes_tiled > 0 ? std::min(memory_bytes_whole, memory_bytes_tiled) : memory_bytes_whole;

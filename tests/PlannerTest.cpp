@@ -589,6 +589,94 @@ TEST(Planner, TheMemoryLimitWeighsTileSparseMemoriesWhereWholeFacesAreOver) {
 // ahead spinning (a fast memory) inside a still one 0.1 mm larger (a slow memory, nearer everywhere): 16-bit
 // codes (steps of 1.5 mm there) tie, 32-bit ones do not. With no wrong texel allowed the plan needs more than
 // 16 bits; held to two memories at 16 bits it is refused, naming the limit; with no limit it is wider.
+// With --weigh-pools, a ladder is weighed against the limit as it would be planned, pools included: at a limit that
+// one ladder meets only with its pools, that ladder is weighed with pools and left out with fixed tiles, and by
+// default (pools taken after the ladder, which is held to the limit with fixed tiles); the plan's bytes are its
+// banks' in closed form -- a pooled bank P slots of 32 x 32 texels and a table for
+// each buffer of F x T x T entries numbering P slots (and none), a fixed-tile bank its tiles twice and one table,
+// a whole bank its faces twice.
+TEST(Planner, TheMemoryLimitWeighsTilePoolsWhereFixedTilesAreOver) {
+  TempDir d;
+  PlanRequest r = ball_row(d, 6, [](int i) { return -std::pow(3.0, i + 1); }, 2, 1);
+  r.memory_limit_mib = 0;
+  r.tile_pool = false;
+  const Plan fixed = make_plan(r);
+  r.tile_pool = true;
+  r.weigh_pools = true;
+  const Plan pooled = make_plan(r);
+  ASSERT_EQ(fixed.ladders.size(), pooled.ladders.size());  // no limit: every ladder, none bounded
+  // Bound them: a limit of one memory's whole faces (as TheMemoryLimitWeighsTileSparseMemoriesWhereWholeFacesAreOver).
+  const int64_t S = fixed.config.memory.face_size, faces = fixed.config.memory.faces_present(), T = (S + 31) / 32;
+  const int64_t one = 2 * 1 * 2 * faces * S * S * 25 / 8;
+  r.memory_limit_mib = static_cast<double>(one) / 1048576.0;
+  r.tile_pool = false;
+  const Plan f1 = make_plan(r);
+  r.tile_pool = true;
+  const Plan p1 = make_plan(r);
+  // A ladder whose pools take less than its fixed tiles and more than nothing: held to exactly its pooled figure.
+  const auto key = [](const LadderLoad& L) { return std::to_string(L.count) + "/" + std::to_string(L.update_ratio); };
+  const LadderLoad* chosen = nullptr;
+  int64_t fixed_bytes = 0;
+  for (const LadderLoad& a : p1.ladders)
+    for (const LadderLoad& b : f1.ladders)
+      if (key(a) == key(b) && a.count > 1 && a.memory_bytes_tiled > 0 && a.memory_bytes_tiled < b.memory_bytes_tiled &&
+          (!chosen || a.count > chosen->count)) {
+        chosen = &a;
+        fixed_bytes = b.memory_bytes_tiled;
+      }
+  ASSERT_NE(chosen, nullptr) << "no ladder takes less with pools";
+  r.memory_limit_mib = static_cast<double>(chosen->memory_bytes_tiled) / 1048576.0;
+  r.tile_pool = false;
+  const Plan f2 = make_plan(r);
+  r.tile_pool = true;
+  r.weigh_pools = false;
+  const Plan d2 = make_plan(r);
+  r.weigh_pools = true;
+  const Plan p2 = make_plan(r);
+  const auto weighed = [&](const Plan& p) {
+    for (const LadderLoad& L : p.ladders)
+      if (key(L) == key(*chosen)) return true;
+    return false;
+  };
+  EXPECT_TRUE(weighed(p2)) << key(*chosen) << " at " << chosen->memory_bytes_tiled << " bytes";
+  EXPECT_FALSE(weighed(f2)) << key(*chosen) << ": " << fixed_bytes << " bytes with fixed tiles";
+  EXPECT_FALSE(weighed(d2)) << key(*chosen) << ": by default weighed with fixed tiles";
+  // The command's --weigh-pools gives the library's plan.
+  char limit[64];
+  std::snprintf(limit, sizeof limit, "%.17g", *r.memory_limit_mib);
+  const auto o = run_command(kArpsim + " plan -q --scene " + d.file("row.json") + " --walk " + d.file("walk.json") +
+                             " --threshold-deg 1 --keep-widths --objects-only --set display.h_active=160 --set display.v_active=120"
+                             " --memory-limit " + limit + " --weigh-pools -o " + d.file("weighed.json"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const dp::ArpConfig c = config::load_file(d.file("weighed.json"));
+  EXPECT_EQ(c.memory.count, p2.config.memory.count);
+  EXPECT_EQ(c.memory.tile_pool, p2.config.memory.tile_pool);
+  EXPECT_EQ(c.memory.update_ratio, p2.config.memory.update_ratio);
+  EXPECT_LE(p2.memory_bytes_planned, p2.memory_limit_bytes);
+  // The planned bytes in closed form.
+  const int64_t bits = 24 + p2.config.memory.depth_bits;
+  std::vector<dp::TileMap> maps;
+  std::string why;
+  ASSERT_TRUE(dp::tile_maps(p2.config.memory, maps, why)) << why;
+  const auto entry_bits = [](int64_t n) { return static_cast<int64_t>(std::floor(std::log2(static_cast<double>(n)))) + 1; };
+  int64_t total = 0;
+  int pools = 0;
+  for (int m = 0; m < p2.config.memory.count; ++m) {
+    const int64_t slots = p2.config.memory.pool_slots(m);
+    const int64_t held = maps.empty() ? faces * T * T : maps[static_cast<size_t>(m)].tiles();
+    if (slots > 0) {
+      ++pools;
+      total += 2 * (slots * 1024 * bits + 2 * faces * T * T * entry_bits(slots));
+    } else if (held < faces * T * T) {
+      total += 2 * (2 * held * 1024 * bits + faces * T * T * entry_bits(held));
+    } else {
+      total += 2 * 2 * faces * S * S * bits;
+    }
+  }
+  EXPECT_GT(pools, 0);
+  EXPECT_EQ(p2.memory_bytes_planned, (total + 7) / 8);
+}
+
 TEST(Planner, ADepthCodeIsNeverWiderThanTheMemoryLimitAllows) {
   TempDir d;
   write(d.file("balls.json"), R"({"name": "balls", "objects": [

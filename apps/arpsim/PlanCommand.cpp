@@ -85,10 +85,16 @@ Runner add_plan_command(CLI::App& app) {
                 "Keep every tile of the faces present (no memory.tiles, no memory.tile_pool: a display memory without a tile "
                 "table); by default the memories hold only the tiles the motion can draw on, or a tile pool, where that takes "
                 "less memory");
-  cmd->add_flag_function("--fixed-tiles", [a](int64_t) { a->req.tile_pool = false; },
+  auto* fixed = cmd->add_flag_function("--fixed-tiles", [a](int64_t) { a->req.tile_pool = false; },
                          "Hold the tiles the motion can draw on without a tile pool (no memory.tile_pool); by default a memory "
                          "takes a pool of the most tiles it draws on at once where that takes less memory")
       ->excludes(whole);
+  cmd->add_flag_function("--weigh-pools", [a](int64_t) { a->req.weigh_pools = true; },
+                         "Hold each ladder to --memory-limit with the tile pools it would take (by default with its fixed tiles, "
+                         "the pools taken after): deeper ladders fit, rendering less, their slower memories showing objects "
+                         "further within theta_t (docs/planning.md, item 3)")
+      ->excludes(whole)
+      ->excludes(fixed);
   cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_plan(*a); };
