@@ -796,7 +796,9 @@ Plan make_plan(const PlanRequest& r) {
       throw InputError("--memory-limit", fmt("%g", limit_mib),
                        "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
                            fmt("%.1f", static_cast<double>(least.memory_bytes_weighed()) / 1048576.0) + " MiB (" + ladder_text(least) +
-                           (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole ? ", tile-sparse or pooled" : "") + ")");
+                           (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole
+                                ? (r.tile_pool && r.weigh_pools ? ", tile-sparse or pooled" : ", tile-sparse")
+                                : "") + ")");
     const size_t before = candidates.size();
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                     [&](const LadderLoad& L) { return L.memory_bytes_weighed() > p.memory_limit_bytes; }),
@@ -864,7 +866,7 @@ Plan make_plan(const PlanRequest& r) {
     while (p.memory_limit_bytes > 0 && top > base_bits) {
       dp::ArpConfig c = p.config;
       c.memory.depth_bits = top;
-      if (bytes_as_planned(c, p.tiles, r.tile_sparse, r.tile_pool) <= p.memory_limit_bytes) break;
+      if (bytes_as_planned(c, p.tiles, r.tile_sparse, r.tile_pool && r.weigh_pools) <= p.memory_limit_bytes) break;
       --top;
     }
     p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
@@ -906,7 +908,9 @@ Plan make_plan(const PlanRequest& r) {
                       std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4" +
                       (p.memory_limit_bytes > 0 ? ", the engine can carry, within " +
                                                       fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
-                                                      " MiB of display memory" + (r.tile_sparse ? std::string(" (as whole faces, or as planned -- tile-sparse") + (r.tile_pool && r.weigh_pools ? " or with tile pools, --weigh-pools" : "") + " -- where those are over)" : std::string()) + " (--memory-limit" +
+                                                      " MiB of display memory" + (r.tile_sparse ? std::string(r.tile_pool && r.weigh_pools ? " (as whole faces, or as planned tile-sparse or with tile pools, --weigh-pools, where those are over)"
+                                                                                                         : " (as whole faces, or as planned tile-sparse where those are over)")
+                                                                    : std::string()) + " (--memory-limit" +
                                                       (r.memory_limit_mib ? std::string(")")
                                                        : p.memory_limit_bytes > display_memory_bytes(base_whole)
                                                            ? ": the least any ladder takes at this face size, more than " + r.base_source + "'s)"
@@ -1053,9 +1057,6 @@ Plan make_plan(const PlanRequest& r) {
                                            "footprint.texels_lost_tile_pool_full and warns; its "
                                            "footprint.display_memory_tiles_most_at_once gives the slots it used"))});
   }
-  if (!p.config.memory.assignment.empty())
-    p.not_decided.push_back("an assignment other than the rule's: memory.assignment is where the rule put each object over the "
-                            "motion (objects of one name together), not chosen to spare moves between memories or pool slots");
   p.not_decided.push_back("a face size per memory (one face size for every memory: the composition unit composes each bilinear "
                           "tap across the memories at the same texel position)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
@@ -1158,6 +1159,9 @@ Plan make_plan(const PlanRequest& r) {
                            (p.regions.empty() ? std::string() : "; each size weighed by the run's region rule stepped at every frame of the motion (plan.md)")});
   if (taken)  // its figures: the whole faces it holds, and the tiles not used
     p.memory_bytes_whole = display_memory_bytes(p.config);
+  if (!p.config.memory.assignment.empty())  // (regions, taken, clear it)
+    p.not_decided.push_back("an assignment other than the rule's: memory.assignment is where the rule put each object over the "
+                            "motion (objects of one name together), not chosen to spare moves between memories or pool slots");
   p.not_decided.push_back("the region size at other memory counts than the ladder's, and the tearing between regions (measured by a "
                           "run, not the plan); the host clock and the write port's bandwidth (timed.host_*): a run renders through "
                           "the modelled engine (host.*), which the check above sizes, and uses the write port only for host write jobs");
@@ -1245,8 +1249,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
        "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as weighed against "
        "the limit -- where whole faces are over it, each memory holding only the tiles its objects can be drawn on over the "
-       "motion where that takes less (with --weigh-pools, or a tile pool where that takes less still); the planned ladder "
-       "as planned, at its depth code. Ladders the engine cannot "
+       "motion where that takes less" + std::string(r.tile_pool && r.weigh_pools ? ", or a tile pool where that takes less still (--weigh-pools)" : "") +
+       "; the planned ladder as planned, at its depth code. Ladders the engine cannot "
        "carry, or over the limit either way, are not listed.\n\n"
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
        "display memory, whole faces, MiB | display memory as weighed, MiB |\n"

@@ -66,7 +66,7 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_option_function<double>(
       "--memory-limit", [a](double v) { a->req.memory_limit_mib = v; },
       "The most hardware display memory a ladder of memories may take, MiB, as whole faces or, where those are over it, "
-      "tile-sparse as it would be planned (default: the starting configuration's, or the least any ladder takes at the "
+      "tile-sparse as it would be planned (with its tile pools: --weigh-pools) (default: the starting configuration's, or the least any ladder takes at the "
       "planned face size where that is more; 0: no limit)");
   cmd->add_option_function<double>(
       "--depth-error", [a](double v) { a->req.depth_error = v; },
@@ -91,8 +91,8 @@ Runner add_plan_command(CLI::App& app) {
       ->excludes(whole);
   cmd->add_flag_function("--weigh-pools", [a](int64_t) { a->req.weigh_pools = true; },
                          "Hold each ladder to --memory-limit with the tile pools it would take (by default with its fixed tiles, "
-                         "the pools taken after): deeper ladders fit, rendering less, their slower memories showing objects "
-                         "further within theta_t (docs/planning.md, item 3)")
+                         "the pools taken after): deeper ladders fit, rendering less at more error walking (docs/planning.md, "
+                         "item 3)")
       ->excludes(whole)
       ->excludes(fixed);
   cmd->add_option("--out,-o", a->out, "The configuration written (its account beside it, .md)")->capture_default_str();
