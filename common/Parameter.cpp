@@ -104,11 +104,11 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
       if (static_cast<int64_t>(a.size()) > imax)
         return "has " + std::to_string(a.size()) + " strings, at most " + std::to_string(imax) + " allowed";
       for (size_t i = 0; i < a.size(); ++i) {
-        // An empty alphabet: any printable ASCII character (space to '~').
+        // An empty alphabet: any printable ASCII character.
         size_t bad = std::string::npos;
         if (alphabet.empty()) {
           for (size_t j = 0; j < a[i].size() && bad == std::string::npos; ++j)
-            if (a[i][j] < ' ' || a[i][j] > '~') bad = j;
+            if (!printable_ascii(a[i][j])) bad = j;
         } else {
           bad = a[i].find_first_not_of(alphabet);
         }
@@ -117,7 +117,7 @@ std::string range_error(ParamType t, int64_t imin, int64_t imax, double rmin, do
           char code[8];
           std::snprintf(code, sizeof code, "0x%02x", ch);
           return "string " + std::to_string(i) + " has " +
-                 (ch >= ' ' && ch <= '~' ? "\"" + quoted(a[i].substr(bad, 1)) + "\"" : std::string("byte ") + code) + " at character " + std::to_string(bad) +
+                 (printable_ascii(static_cast<char>(ch)) ? "\"" + quoted(a[i].substr(bad, 1)) + "\"" : std::string("byte ") + code) + " at character " + std::to_string(bad) +
                  ": only " + (alphabet.empty() ? std::string("printable ASCII") : alphabet) + " allowed";
         }
       }

@@ -19,6 +19,9 @@
 
 namespace arp {
 
+// A character of printable ASCII (space to '~'): what a TextList parameter with an empty alphabet takes.
+inline bool printable_ascii(char ch) { return ch >= ' ' && ch <= '~'; }
+
 // One violated constraint: the dotted key path and the reason.
 struct ConfigIssue {
   std::string key;

@@ -281,7 +281,7 @@ std::vector<dp::ObjectAssignment> object_memories(const host::Scene& scene, cons
   std::map<std::string, size_t> at;  // a name's entry in out
   for (size_t i = 0; i < n && !ms.t.empty(); ++i) {
     const std::string& name = scene.objects[i].name;
-    const bool printable = std::all_of(name.begin(), name.end(), [](char ch) { return ch >= ' ' && ch <= '~'; });
+    const bool printable = std::all_of(name.begin(), name.end(), printable_ascii);
     if (name.empty() || !printable || name.front() == ' ' || name.back() == ' ') {
       if (std::find(unnamed.begin(), unnamed.end(), name) == unnamed.end()) unnamed.push_back(name);
       continue;
@@ -936,8 +936,8 @@ Plan make_plan(const PlanRequest& r) {
                                      : "0: one texel at the planned face size (" + fmt("%.4f", rad_to_deg(p.threshold_rad)) +
                                            " deg), the theta_t the memories were sized for"});
 
-  // The object-to-memory assignment: where the rule puts each object over this motion, written as keys.
-  p.config.memory.assignment.clear();
+  // The object-to-memory assignment: where the rule puts each object over this motion, written as keys (the
+  // starting configuration's was cleared at the start).
   if (p.planned.count > 1 && n > 0) {
     std::vector<std::string> unnamed;
     const std::vector<dp::ObjectAssignment> a = object_memories(scene, walk, ms, hz, p.threshold_rad, p.planned, unnamed);
