@@ -66,7 +66,7 @@ void BM_SchedulerAssign(benchmark::State& state) {
   PriorityScheduler sch(s, pc, 512);
   double t = 0;
   for (auto _ : state) {
-    sch.assign({t, 1.6, 0}, 1.0, t);
+    sch.assign({t, 1.6, 0}, 1.0, {}, t);
     t += 1.0 / 60;
   }
   state.counters["objects_per_s"] =

@@ -16,7 +16,7 @@ nlohmann::json host_report(const host::HostSimulation& h, const RunSpec& spec, d
     tris += L.triangles;
     const double n = L.updates > 0 ? static_cast<double>(L.updates) : 1.0;
     mems.push_back({{"memory", m},
-                    {"objects_now", h.scheduler().objects_in(static_cast<int>(m)).size()},
+                    {"objects_now", h.objects_for(static_cast<int>(m)).size()},
                     {"updates", L.updates},
                     {"skipped_overload", L.skipped},
                     {"update_rate_hz", static_cast<double>(L.updates) / secs},

@@ -117,17 +117,29 @@ std::string widths_text(const dp::DatapathWidths& w) {
 // The motion planned over: the walk's points at display-frame times, at most kMaxSamples of them.
 struct MotionSamples {
   std::vector<double> t;
+  std::vector<host::EyeTurn> turn;  // at each: the eyes' turning, as the run's rule takes it (walk_turn)
   double span_s = 0;
   double step_s = 0;  // between samples
 };
-MotionSamples sample_motion(const host::WalkPath& walk, double hz) {
+
+// The eyes' motion at t from the head turning as the walk faces where it goes, over the frame before t: what a
+// run's rule takes from the head it shows (HostSimulation; on a walk with no head motion, these orientations),
+// for eyes ipd_m apart (0: one eye).
+host::EyeTurn walk_turn(const host::WalkPath& walk, double t, double hz, double ipd_m) {
+  return host::eye_turn(host::turn_rate_rad_s([&walk](double s) { return walk.facing(s); }, t, 1.0 / hz), ipd_m);
+}
+
+MotionSamples sample_motion(const host::WalkPath& walk, double hz, double ipd_m) {
   MotionSamples m;
   m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : 0.0;
   // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
   // (every sample within the motion: past its end a looping walk would be back at its start)
   const int64_t frames = static_cast<int64_t>(std::clamp(std::floor(m.span_s * hz) + 1, 1.0, 1099511627776.0));
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
-  for (int64_t f = 0; f < frames; f += step) m.t.push_back(static_cast<double>(f) / hz);
+  for (int64_t f = 0; f < frames; f += step) {
+    m.t.push_back(static_cast<double>(f) / hz);
+    m.turn.push_back(walk_turn(walk, m.t.back(), hz, ipd_m));
+  }
   m.step_s = static_cast<double>(step) / hz;
   return m;
 }
@@ -240,7 +252,7 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   const size_t n = scene.objects.size();
   int64_t late = 0;
   for (size_t k = 0; k < ms.t.size(); ++k) {
-    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
     for (size_t i = 0; i < n; ++i) {
       const int m = sched.belongs_in(i);
       L.objects[static_cast<size_t>(m)] += 1.0;
@@ -271,7 +283,7 @@ std::vector<dp::ObjectAssignment> object_memories(const host::Scene& scene, cons
   const size_t n = scene.objects.size();
   std::vector<int> lo(n, L.count - 1), hi(n, 0);
   for (size_t k = 0; k < ms.t.size(); ++k) {
-    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
     for (size_t i = 0; i < n; ++i) {
       lo[i] = std::min(lo[i], sched.belongs_in(i));
       hi[i] = std::max(hi[i], sched.belongs_in(i));
@@ -327,7 +339,7 @@ CompositionDepth measure_composition(const host::Scene& scene, const host::WalkP
   const size_t samples = ms.t.size(), points = std::min<size_t>(samples, kFillPoints);
   std::vector<int> memory_of(scene.objects.size());
   for (size_t k = 0, j = 0; k < samples && j < points; ++k) {
-    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
     if (k != rendered_sample(j, points, samples)) continue;
     for (size_t i = 0; i < memory_of.size(); ++i) memory_of[i] = sched.belongs_in(i);
     add_composition_depth(scene, memory_of, L.count, ms.t[k], walk.position(ms.t[k]), S, out);
@@ -357,7 +369,7 @@ TileBound bound_tiles(const host::Scene& scene, const host::WalkPath& walk, cons
   for (size_t i = 0; i < n; ++i) box[i] = host::mesh_box(*scene.objects[i].mesh);
   std::vector<int> desired(samples * n);
   for (size_t k = 0; k < samples; ++k) {
-    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.t[k]);
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
     for (size_t i = 0; i < n; ++i) desired[k * n + i] = sched.belongs_in(i);
   }
   // The waiting window in samples, and how many samples of it put each object in each memory (sliding).
@@ -484,7 +496,8 @@ int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse, 
 // frame of the motion as if every memory were free to render, each update rendering the pieces of that
 // memory for each eye, sent to every face their bound reaches (the engine's cost of set-up and triangles).
 RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz, double threshold_rad,
-                       int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
+                       int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, double ipd_m,
+                       const FillSamples& fill) {
   RegionLoad out;
   out.size_m = size_m;
   out.margin_m = host::swept_margin_m(size_m);
@@ -518,11 +531,12 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   for (int64_t f = 0; f < frames; ++f) {
     const double t = static_cast<double>(f) / hz;
     const glm::dvec3 head = walk.position(t);
+    const host::EyeTurn turn = walk_turn(walk, t, hz, ipd_m);
     const host::RegionScheduler::Step st = sched.step(head, true);
     for (size_t i = 0; i < seg.scene.objects.size(); ++i) {  // each piece's memory this frame, once
       memory_of[i] = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
       late += period_s[static_cast<size_t>(memory_of[i])] >
-              host::object_validity(seg.scene.objects[i], head, walk.speed(), t, threshold_rad).period_s();
+              host::object_validity(seg.scene.objects[i], head, walk.speed(), turn, t, threshold_rad).period_s();
     }
     for (const int m : st.update) {
       sched.rendered(m, head);
@@ -604,7 +618,8 @@ Plan make_plan(const PlanRequest& r) {
   hs.walk_speed = r.walk_speed;
   const host::WalkPath walk = hs.make_walk();
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
-  const MotionSamples ms = sample_motion(walk, hz);
+  const double ipd_m = r.base.timing.eyes > 1 ? r.memories.ipd_m : 0.0;  // (the run's rule: HostSimulation)
+  const MotionSamples ms = sample_motion(walk, hz, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
@@ -713,7 +728,7 @@ Plan make_plan(const PlanRequest& r) {
   for (size_t k = 0; k < ms.t.size(); ++k) {
     const glm::dvec3 eye = walk.position(ms.t[k]);
     for (size_t i = 0; i < n; ++i) {
-      const double v = host::object_validity(scene.objects[i], eye, walk.speed(), ms.t[k], p.threshold_rad).period_s();
+      const double v = host::object_validity(scene.objects[i], eye, walk.speed(), ms.turn[k], ms.t[k], p.threshold_rad).period_s();
       validity_s[k * n + i] = v;
       p.fastest_need_frames = std::min(p.fastest_need_frames, v * hz);
     }
@@ -821,7 +836,8 @@ Plan make_plan(const PlanRequest& r) {
     for (size_t k = 0; k < ms.t.size(); ++k)
       for (size_t i = 0; i < n; ++i)
         base_validity[k * n + i] =
-            host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.t[k], base_threshold).period_s();
+            host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k], base_threshold)
+                .period_s();
   // Its fill at its own face size.
   const FillSamples base_fill =
       r.base.memory.face_size == S || n == 0
@@ -1089,7 +1105,7 @@ Plan make_plan(const PlanRequest& r) {
   if (r.weigh_regions && n > 0 && walk.speed() > 0) {
     progress(1.0, "weighing region priority rendering");
     for (const double size : {2.0, 4.0, 8.0})
-      p.regions.push_back(region_load(scene, walk, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, fill));
+      p.regions.push_back(region_load(scene, walk, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
     const RegionLoad* best = nullptr;
     for (const RegionLoad& R : p.regions)
       if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&

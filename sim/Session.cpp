@@ -420,11 +420,7 @@ Session::MorePoses Session::pose_source(bool consume) const {
 // On a walk the head faces where it goes, turning on top of that.
 void Session::face_walk(std::vector<tracker::PoseSample>& poses) const {
   if (!walk_) return;
-  for (auto& p : poses) {
-    const glm::dvec3 v = walk_->velocity(seconds_of(p.time_ps));
-    const double yaw = std::atan2(-v.x, -v.z);  // yaw 0 looks down -z; positive turns left
-    p.orientation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * p.orientation;
-  }
+  for (auto& p : poses) p.orientation = walk_->facing(seconds_of(p.time_ps)) * p.orientation;
 }
 
 // The head's mean angular speed over each frame of the run, degrees per

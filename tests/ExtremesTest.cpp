@@ -416,5 +416,63 @@ TEST(Extremes, ThresholdAnglesAtBothEndsAndWalksAt0And100MetresPerSecond) {
   EXPECT_NE(std::string(e.what()).find("--speed"), std::string::npos) << e.what();
 }
 
+// Standing and turning: a turning head moves the eyes (half the IPD either side of its centre), so the near
+// objects' images go stale and the priority rule renders them faster. Balls at surface distances 0.5, 1, 2, 4
+// and 8 m around a viewer standing still, turning about the vertical at 0, 300 and 3000 deg/s, theta_t 0.5
+// deg: each ball is in the slowest memory m whose period P the eye's largest move, min(omega r P, 2 r) (the
+// chord of its circle), keeps within the ball's allowed d sqrt(2 (1 - cos theta_t)) -- worked out here from
+// the displacement, not the rule's validity time. Still, every ball is in the slowest memory; at 3000 deg/s
+// all but the farthest (beyond the reach of the IPD) are in memory 0. (Seen failing with the run's rule
+// given no turning: every ball in the slowest memory at every rate.)
+TEST(Extremes, StandingAndTurningTheNearObjectsAreRenderedAsOftenAsTheEyesMovementNeeds) {
+  test::TempDir dir;
+  const std::vector<double> surface{0.5, 1.0, 2.0, 4.0, 8.0};
+  std::string objs;
+  const glm::dvec3 dirs[] = {{0, 0, -1}, {1, 0, 0}, {0, 0, 1}, {-1, 0, 0}, {0.6, 0, -0.8}};
+  for (size_t i = 0; i < surface.size(); ++i) {
+    const glm::dvec3 c = glm::dvec3(0, 1.6, 0) + dirs[i] * (surface[i] + 0.1);
+    objs += std::string(i ? "," : "") + R"({"name": "b)" + std::to_string(i) + R"(", "sphere": 0.1, "position": [)" + std::to_string(c.x) + "," +
+            std::to_string(c.y) + "," + std::to_string(c.z) + "]}";
+  }
+  std::ofstream(dir.file("balls.json")) << R"({"name": "balls", "objects": [)" + objs + "]}";
+  std::ofstream(dir.file("stand.json")) << R"({"speed": 0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})";
+  const double th = 0.5 * 3.14159265358979323846 / 180, r = 0.032;
+  for (const double rate : {0.0, 300.0, 3000.0}) {
+    sim::RunSpec spec;
+    spec.config.memory.face_size = 128;  // (the default display: its 60 Hz gives the memories' periods)
+    spec.memories.scene = dir.file("balls.json");
+    spec.host.walk = dir.file("stand.json");
+    spec.host.threshold_deg = 0.5;
+    spec.motion.motion = "rotate";
+    spec.motion.rate = rate;
+    spec.motion.axis = "0,1,0";
+    spec.frames = 10;
+    spec.out.every = 0;
+    spec.out.error_every = 0;
+    spec.out.out_dir = dir.file("out");
+    spec.out.report = dir.file("turn.json");
+    sim::Session(spec).run();
+    std::ifstream in(spec.out.report);
+    const nlohmann::json host = nlohmann::json::parse(in)["host"];
+    const double hz = dp::VideoTiming(spec.config.timing).refresh_hz(), omega = rate * 3.14159265358979323846 / 180;
+    const int M = spec.config.memory.count;
+    std::vector<int> balls_in(static_cast<size_t>(M), 0);
+    for (const double d : surface) {
+      const double allowed = d * std::sqrt(2 * (1 - std::cos(th)));
+      int m = 0;
+      for (int k = 1; k < M; ++k)
+        if (std::min(omega * r * std::pow(2.0, k) / hz, 2 * r) <= allowed) m = k;
+      ++balls_in[static_cast<size_t>(m)];
+    }
+    // (What the worked-out memories come to, at this display's rate.)
+    const std::vector<int> expected = rate == 0 ? std::vector<int>{0, 0, 0, 5} : rate == 300 ? std::vector<int>{1, 1, 1, 2} : std::vector<int>{4, 0, 0, 1};
+    EXPECT_EQ(balls_in, expected) << rate << " deg/s at " << hz << " Hz";
+    for (int m = 0; m < M; ++m)
+      EXPECT_DOUBLE_EQ(host["memories"][static_cast<size_t>(m)]["objects_per_update"].get<double>(), 2.0 * balls_in[static_cast<size_t>(m)])
+          << rate << " deg/s, memory " << m << ": " << host["memories"].dump();
+    EXPECT_EQ(host["object_moves"].get<int>(), 0) << rate;  // a steady turn: each ball stays where it was put
+  }
+}
+
 }  // namespace
 }  // namespace arp

@@ -12,6 +12,7 @@
 
 #include "TestSupport.hpp"
 #include "common/InputError.hpp"
+#include "host/motion/WalkPath.hpp"
 #include "host/priority/PriorityScheduler.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
 #include "host/render/CubeFaceRenderer.hpp"
@@ -1601,6 +1602,56 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
   const auto [o7, elsewhere] = run(d.file("other.json"), "elsewhere", 2);
   ASSERT_EQ(o7.status, 0) << o7.output;
   EXPECT_NE(o7.output.find("the plan was made for another scene"), std::string::npos) << o7.output;
+}
+
+// On a walk the head faces where it goes, so at a corner it turns, and the eyes with it: the run's rule renders
+// the objects it brings beyond theta_t faster there, and the plan replays that turning too. A plan of a walk
+// round a corner past balls near and far gives ranges that hold every choice of the run's rule over the walk
+// (nothing held either way), and some ball's range reaches a faster memory than walking straight past it
+// would: at the corner. (Seen failing with the plan's replay given no turning: object-frames held slower.)
+TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
+  TempDir d;
+  write(d.file("balls.json"), R"({"name": "corner", "objects": [
+    {"name": "near", "sphere": 0.3, "position": [1.5, 1.6, -2]},
+    {"name": "mid", "sphere": 0.3, "position": [-3, 1.6, -6]},
+    {"name": "far", "sphere": 0.3, "position": [-9, 1.6, 2]}]})");
+  write(d.file("corner.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3], [3, 1.6, -3]]})");
+  PlanRequest r = request(d.file("balls.json"), d.file("corner.json"));
+  r.threshold_deg = 0.5;
+  r.size_widths = false;
+  r.tile_sparse = false;
+  const Plan p = make_plan(r);
+  ASSERT_GT(p.config.memory.count, 1);
+  std::ofstream(d.file("plan.json")) << config::to_json(p.config).dump(2);
+  const std::string j = d.file("report.json");
+  const int frames = static_cast<int>(5.9 * dp::VideoTiming(p.config.timing).refresh_hz());  // the walk, once (it loops at 6 s)
+  const auto o = run_command(kArpsim + " run -q --frames " + std::to_string(frames) + " --every 0 --error-every 0 --config " +
+                             d.file("plan.json") + " --scene " + d.file("balls.json") + " --walk " + d.file("corner.json") + " --report " + j);
+  ASSERT_EQ(o.status, 0) << o.output;
+  const nlohmann::json rep = test::load_json(j);
+  EXPECT_EQ(rep["host"]["object_frames_held_slower_by_assignment"], 0) << p.config.memory.assignment.size();
+  EXPECT_EQ(rep["host"]["object_frames_held_faster_by_assignment"], 0);
+  EXPECT_EQ(o.output.find("memory.assignment"), std::string::npos) << o.output;
+  // The turn at the corner: some ball's fastest memory is faster than the rule, blind to turning, would ever put it
+  // in over the same walk at the plan's ladder (the scheduler replayed here with no turning, at every frame).
+  std::vector<dp::ObjectAssignment> planned;
+  std::string why;
+  ASSERT_TRUE(dp::object_assignments(p.config.memory, planned, why)) << why;
+  ASSERT_EQ(planned.size(), 3u);
+  const host::Scene scene = host::load_scene_file(d.file("balls.json"));
+  const double hz = dp::VideoTiming(p.config.timing).refresh_hz();
+  dp::MemoryConfig rule_only = p.config.memory;
+  rule_only.assignment.clear();
+  host::PriorityScheduler blind(scene, host::PriorityConfig::of(rule_only, hz), p.config.memory.face_size);
+  const host::WalkPath walk = host::load_walk_file(d.file("corner.json"));
+  std::vector<int> fastest(3, p.config.memory.count);
+  for (int f = 0; f < frames; ++f) {
+    blind.assign(walk.position(f / hz), walk.speed(), {}, f / hz);
+    for (size_t i = 0; i < 3; ++i) fastest[i] = std::min(fastest[i], blind.rule_choice(i));
+  }
+  int faster = 0;
+  for (size_t i = 0; i < 3; ++i) faster += planned[i].fastest < fastest[i] ? 1 : 0;
+  EXPECT_GT(faster, 0) << p.config.memory.assignment.size();
 }
 
 // Objects of one name share one string: its range is the union of theirs, as the same scene with the two

@@ -40,6 +40,80 @@ TEST(Validity, TranslationalFollowsChowsFormulaAndExtremesAreFinite) {
   EXPECT_LT(validity({5, 0.5, 1, 0}, th).period_s(), validity({5, 0.5, 1, 0}, 4 * th).period_s());
 }
 
+// A turning head moves the eyes: over a time T an eye half the IPD from the centre, the head turning at omega,
+// moves the chord 2 r sin(omega T / 2) -- never more than omega r T nor 2 r (checked against eye_position over
+// a sweep of T). Validity is when the eye's displacement, walking at v besides, can first reach the allowed
+// x = d sqrt(2 (1 - cos th)) (translational) and (th/2)(d^2 + r^2)/r (size): found here by bisection on
+// v T + min(omega r T, 2 r) = x, not by the closed form. Standing and turning, an object whose x is beyond
+// the IPD stays valid for ever; one within it, for x / (omega r). No turning gives the figures without it.
+// (Seen failing with the reach left out, and with the speed's sum taken as the walk's alone.)
+TEST(Validity, TheEyesOfATurningHeadMoveByTheirChordAtMost) {
+  const double ipd = 0.064, r = ipd / 2;
+  for (const double omega : {0.5, 5.0, 52.36}) {  // rad/s: 29, 286 and 3000 deg/s
+    const glm::dvec3 head(1, 1.6, -2);
+    const glm::dvec3 e0 = eye_position(head, glm::dquat(1, 0, 0, 0), 0, 2, ipd);
+    for (double T = 0.001; T < 2.0; T *= 1.3) {
+      const glm::dquat q = glm::angleAxis(omega * T, glm::normalize(glm::dvec3(0.2, 1, 0.1)));
+      const double moved = glm::length(eye_position(head, q, 0, 2, ipd) - e0);
+      EXPECT_LE(moved, std::min(omega * r * T, 2 * r) + 1e-12) << omega << " " << T;
+    }
+  }
+  const auto solve = [&](double x, double v, double omega) {  // the T where v T + min(omega r T, 2 r) first reaches x
+    const auto g = [&](double T) { return v * T + std::min(omega * r * T, 2 * r); };
+    double lo = 0, hi = 1;
+    while (g(hi) < x) {
+      hi *= 2;
+      if (hi > 1e12) return kForever;
+    }
+    for (int i = 0; i < 200; ++i) (g(0.5 * (lo + hi)) < x ? lo : hi) = 0.5 * (lo + hi);
+    return hi;
+  };
+  for (const double th : {0.5 * kPi / 180, 8 * kPi / 180})
+    for (const double d : {0.3, 1.0, 3.0, 20.0})
+      for (const double v : {0.0, 0.2, 1.0, 5.0})
+        for (const double omega : {0.0, 1.0, 5.0, 52.36}) {
+          const ValidityInputs in{d + 0.1, 0.1, v, 0};
+          const Validity got = validity(in, th, eye_turn(omega, ipd));
+          const double xt = d * std::sqrt(2 * (1 - std::cos(th))), xs = 0.5 * th * (d * d + 0.01) / 0.1;
+          const double want_t = solve(xt, v, omega), want_s = solve(xs, v, omega);
+          const std::string at = "th " + std::to_string(th) + " d " + std::to_string(d) + " v " + std::to_string(v) + " omega " + std::to_string(omega);
+          if (want_t == kForever) EXPECT_EQ(got.translational_s, kForever) << at;
+          else EXPECT_NEAR(got.translational_s, want_t, 1e-9 * want_t) << at;
+          if (want_s == kForever) EXPECT_EQ(got.size_s, kForever) << at;
+          else EXPECT_NEAR(got.size_s, want_s, 1e-9 * want_s) << at;
+          if (omega == 0) {
+            EXPECT_EQ(got.translational_s, validity(in, th).translational_s) << at;
+            EXPECT_EQ(got.size_s, validity(in, th).size_s) << at;
+          }
+        }
+  // Standing, turning at 286 deg/s, theta_t 0.5 deg: at 1 m the eye may move 8.7 mm, reached after 8.7 mm / (5 x 32 mm/s);
+  // at 10 m, 87 mm: more than the IPD, so for ever. One eye (IPD 0) at the centre: turning moves nothing.
+  const double th = 0.5 * kPi / 180;
+  EXPECT_NEAR(validity({1.1, 0.1, 0, 0}, th, eye_turn(5, ipd)).translational_s, std::sqrt(2 * (1 - std::cos(th))) / (5 * r), 1e-12);
+  EXPECT_EQ(validity({10.1, 0.1, 0, 0}, th, eye_turn(5, ipd)).translational_s, kForever);
+  EXPECT_EQ(validity({1.1, 0.1, 0, 0}, th, eye_turn(5, 0)).period_s(), kForever);
+}
+
+// The head's turn rate over the frame before t: a constant rotation gives its rate, a still head exactly 0,
+// and a walk facing where it goes turns by the corner's angle within the frame that holds the corner.
+TEST(WalkPath, TheHeadsTurnRateIsTheAngleTurnedOverTheFrame) {
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, 1, -0.2));
+  for (const double w : {0.1, 5.0, 52.36})
+    EXPECT_NEAR(turn_rate_rad_s([&](double t) { return glm::angleAxis(w * t, axis); }, 3.0, 1.0 / 60), w, 1e-9 * w) << w;
+  EXPECT_EQ(turn_rate_rad_s([](double) { return glm::angleAxis(0.7, glm::dvec3(0, 1, 0)); }, 1.0, 1.0 / 60), 0.0);
+  const WalkPath w({{0, 0, 0}, {0, 0, -3}, {3, 0, -3}}, 1.0, "corner");  // ahead 3 m, then a right turn
+  EXPECT_EQ(turn_rate_rad_s([&](double t) { return w.facing(t); }, 2.0, 1.0 / 60), 0.0);
+  EXPECT_NEAR(turn_rate_rad_s([&](double t) { return w.facing(t); }, 3.01, 1.0 / 60), (kPi / 2) * 60, 1e-6);
+  EXPECT_NEAR(glm::length(w.facing(1.0) * glm::dvec3(0, 0, -1) - glm::dvec3(0, 0, -1)), 0, 1e-12);  // looks down -z
+  EXPECT_NEAR(glm::length(w.facing(4.0) * glm::dvec3(0, 0, -1) - glm::dvec3(1, 0, 0)), 0, 1e-12);   // then +x
+  // An open path jumps from its end to its start: at the jump the walker faces along the path, not back across it.
+  // (Seen failing with the difference taken across the jump.)
+  for (const double t : {0.0, 1e-4, 6.0, -6.0})
+    EXPECT_NEAR(glm::length(w.facing(t) * glm::dvec3(0, 0, -1) - glm::dvec3(0, 0, -1)), 0, 1e-9) << t;
+  for (const double t : {6.0 - 1e-4, 12.0 - 1e-4, -1e-4})
+    EXPECT_NEAR(glm::length(w.facing(t) * glm::dvec3(0, 0, -1) - glm::dvec3(1, 0, 0)), 0, 1e-9) << t;
+}
+
 TEST(PriorityScheduler, ObjectsGoToTheSlowestMemoryTheirValidityAllowsAndToOneOnly) {
   Scene s;
   auto ball = std::make_shared<Mesh>(make_sphere(0.1, 8));
@@ -51,7 +125,7 @@ TEST(PriorityScheduler, ObjectsGoToTheSlowestMemoryTheirValidityAllowsAndToOneOn
   EXPECT_EQ(sch.frames_per_update(3), 8);
   for (double t = 0; t < 2; t += 0.25) {
     const glm::dvec3 eye{0, 0, -10 * t};  // walking into the row of balls at 5 m/s
-    sch.assign(eye, 5.0, t);
+    sch.assign(eye, 5.0, {}, t);
     sch.settle();
     size_t total = 0;
     for (int m = 0; m < 4; ++m) total += sch.objects_in(m).size();
@@ -69,13 +143,13 @@ TEST(PriorityScheduler, ObjectsGoToTheSlowestMemoryTheirValidityAllowsAndToOneOn
     }
   }
   // move() counts what changes; settle() (before a run) does not.
-  sch.assign({0, 0, 50}, 5.0, 0);
+  sch.assign({0, 0, 50}, 5.0, {}, 0);
   for (size_t i = 0; i < s.objects.size(); ++i) sch.move(i);
   EXPECT_GT(sch.moves(), 0);
   // The baseline: everything in memory 0, every frame.
   pc.baseline = true;
   PriorityScheduler base(s, pc, 512);
-  base.assign({0, 0, 0}, 1.0, 0);
+  base.assign({0, 0, 0}, 1.0, {}, 0);
   EXPECT_EQ(base.objects_in(0).size(), s.objects.size());
   EXPECT_EQ(base.frames_per_update(3), 1);
 }
@@ -93,7 +167,7 @@ TEST(PriorityScheduler, AnObjectGoesNoSlowerThanAMemoryHoldingItsTiles) {
     if (i == 7) return false;
     return m == 3 ? i % 2 == 0 : m == 2 ? i % 4 == 1 : true;
   });
-  sch.assign({0, 0, 0}, 0.0, 0);
+  sch.assign({0, 0, 0}, 0.0, {}, 0);
   const std::array<int, 8> want{3, 2, 3, 1, 3, 2, 3, 3};  // ball 7 fits none: the rule's choice
   for (size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(sch.belongs_in(i), want[i]) << i;
@@ -131,7 +205,7 @@ TEST(PriorityScheduler, ObjectsNamedInTheAssignmentStayInTheirMemories) {
   bool near_rule_fast = false, far_rule_slow = false, mid_at_end = false, free_at_end = false;
   for (double t = 0; t < 1; t += 0.125) {
     const glm::dvec3 eye{0, 0, -5 * t};
-    sch.assign(eye, 5.0, t);
+    sch.assign(eye, 5.0, {}, t);
     for (size_t i = 0; i < s.objects.size(); ++i) {
       const Sphere b = s.objects[i].world_bound(t);
       const double p = validity({glm::length(b.center - eye), b.radius, 5.0, 0}, pc.threshold_rad).period_s();
@@ -158,7 +232,7 @@ TEST(PriorityScheduler, ObjectsNamedInTheAssignmentStayInTheirMemories) {
   // The baseline places every object itself: memory 0, the assignment not used.
   pc.baseline = true;
   PriorityScheduler base(s, pc, 512);
-  base.assign({0, 0, 0}, 5.0, 0);
+  base.assign({0, 0, 0}, 5.0, {}, 0);
   for (size_t i = 0; i < s.objects.size(); ++i) EXPECT_EQ(base.belongs_in(i), 0) << i;
   EXPECT_EQ(base.held_slower() + base.held_faster(), 0);
 }

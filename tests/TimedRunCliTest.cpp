@@ -593,6 +593,18 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_GT(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
   EXPECT_GT(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
   EXPECT_EQ(j["config"]["memory"]["region_size_m"], 4.0);  // what ran: --regions sets the key
+  // Each memory's pieces now are its regions': no region changed memory in these 6 frames, so each memory that
+  // rendered drew them at every update, for each eye; every piece is in one. (Seen failing with the object rule's
+  // placement reported instead.)
+  ASSERT_EQ(j["host"]["regions"]["reassignments"], 0);
+  int64_t pieces = 0;
+  for (const auto& m : j["host"]["memories"]) {
+    if (m["updates"].get<int64_t>() > 0) {
+      EXPECT_EQ(m["objects_per_update"].get<double>(), 2.0 * m["objects_now"].get<double>()) << j["host"]["memories"].dump();
+    }
+    pieces += m["objects_now"].get<int64_t>();
+  }
+  EXPECT_EQ(pieces, j["host"]["regions"]["objects_after_segmentation"].get<int64_t>());
   // The same from the configuration's keys (a plan's, or --set): the same run.
   const auto jk = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --set memory.region_size_m=4 --warp --set memory.face_size=128",
                                "k.json");

@@ -43,8 +43,16 @@ WalkPath WalkPath::standing(const glm::dvec3& at) {
 
 glm::dvec3 WalkPath::position(double t) const {
   if (points_.size() < 2 || speed_ <= 0) return points_.empty() ? glm::dvec3(0) : points_.front();
+  return at_distance(distance_at(t));
+}
+
+double WalkPath::distance_at(double t) const {
   double d = std::fmod(speed_ * t, length_);
   if (d < 0) d += length_;
+  return d;
+}
+
+glm::dvec3 WalkPath::at_distance(double d) const {
   size_t i = 1;
   while (i + 1 < cumulative_.size() && cumulative_[i] < d) ++i;
   const double seg = cumulative_[i] - cumulative_[i - 1];
@@ -55,9 +63,31 @@ glm::dvec3 WalkPath::position(double t) const {
 glm::dvec3 WalkPath::velocity(double t) const {
   if (points_.size() < 2 || speed_ <= 0) return glm::dvec3(0);
   const double dt = 1e-3;
-  const glm::dvec3 v = (position(t + dt) - position(t - dt)) / (2 * dt);
+  glm::dvec3 v;
+  if (points_.front() == points_.back()) {
+    v = (position(t + dt) - position(t - dt)) / (2 * dt);  // a loop: round its closing point as round any corner
+  } else {
+    // An open path jumps from its end back to its start: the difference stays on one side of the jump (across
+    // it, the walker would face back along the path for a millisecond either side, its eyes swapped).
+    const double d = distance_at(t), step = speed_ * dt;
+    v = at_distance(std::min(d + step, length_)) - at_distance(std::max(d - step, 0.0));
+  }
   const double l = glm::length(v);
   return l > 0 ? v * (speed_ / l) : v;  // corners: the speed, in the averaged direction
+}
+
+glm::dquat WalkPath::facing(double t) const {
+  const glm::dvec3 v = velocity(t);
+  const double yaw = std::atan2(-v.x, -v.z);
+  return glm::angleAxis(yaw, glm::dvec3(0, 1, 0));
+}
+
+double turn_rate_rad_s(const std::function<glm::dquat(double)>& head, double t, double dt) {
+  const glm::dquat a = head(t - dt), b = head(t);
+  if (a == b) return 0.0;  // not turning: exactly 0 (the rotation between them would be rounding's 1e-8)
+  // The rotation between the two, as 2 atan2(|vector part|, |scalar part|) (accurate for small angles too).
+  const glm::dquat d = glm::conjugate(a) * b;
+  return 2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w)) / dt;
 }
 
 glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd) {

@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,15 +22,26 @@ class WalkPath {
 
   glm::dvec3 position(double t_s) const;
   glm::dvec3 velocity(double t_s) const;
+  // The way the walker faces at t: turned about +y toward where it goes (yaw 0 looks down -z, positive turns
+  // left), on which a run's head motion turns. Standing, yaw atan2(-0, -0).
+  glm::dquat facing(double t_s) const;
   double speed() const { return speed_; }
   double length() const { return length_; }
   const std::vector<glm::dvec3>& points() const { return points_; }
 
  private:
+  double distance_at(double t_s) const;           // along the path, 0 .. length (it loops)
+  glm::dvec3 at_distance(double d_m) const;
+
   std::vector<glm::dvec3> points_;
   std::vector<double> cumulative_;
   double speed_ = 0, length_ = 0;
 };
+
+// The head's mean angular speed over the time dt_s before t_s, rad/s: the angle between its orientations then
+// and at t_s, over dt_s. What the priority rule takes the head to keep turning at (host::EyeTurn), in the run
+// (from the head it is shown) and in the plan (from the walk's facing) alike.
+double turn_rate_rad_s(const std::function<glm::dquat(double)>& head, double t_s, double dt_s);
 
 // Eye `eye` of `eyes` (0 = left) at head position p with orientation q.
 glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd_m);

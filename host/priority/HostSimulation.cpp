@@ -125,7 +125,7 @@ std::vector<size_t> HostSimulation::objects_for(int m) const {
 }
 
 void HostSimulation::prime(double t) {
-  sched_.assign(walk_.position(t), walk_.speed(), t);
+  sched_.assign(walk_.position(t), walk_.speed(), eye_turn_at(t), t);
   sched_.settle();
   if (!regions_ && !boxes_.empty()) {  // every memory renders now: the pools as at any frame
     std::vector<int> target(scene_.objects.size());
@@ -172,7 +172,7 @@ void HostSimulation::before_frame(int64_t f, double t) {
     p.swap_frame = -1;
   }
   const glm::dvec3 head_pos = walk_.position(t);
-  sched_.assign(head_pos, walk_.speed(), t);
+  sched_.assign(head_pos, walk_.speed(), eye_turn_at(t), t);
   for (size_t i = 0; i < scene_.objects.size() && !regions_; ++i) held_back_ += sched_.belongs_in(i) < sched_.rule_choice(i) ? 1 : 0;
   const int N = mem_.count();
   std::vector<char> render(static_cast<size_t>(N), 0), free(static_cast<size_t>(N), 0), moved(static_cast<size_t>(N), 0);

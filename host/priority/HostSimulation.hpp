@@ -96,10 +96,17 @@ class HostSimulation {
   double rendered_at(int m) const { return rendered_at_[static_cast<size_t>(m)]; }
   // The objects memory m's image on screen was rendered with.
   const std::vector<size_t>& shown_objects(int m) const { return shown_objects_[static_cast<size_t>(m)]; }
+  // The objects in memory m now, by the object rule or, with regions, by their regions' memory (scene order).
+  std::vector<size_t> objects_for(int m) const;
   // The memory whose image on screen shows object i (-1 before the first render).
   int shown_in(size_t object) const { return shown_memory_[object]; }
 
  private:
+  // The eyes' motion from the head's turning over the frame before t (one eye: none), for the rule.
+  EyeTurn eye_turn_at(double t_s) const {
+    return eye_turn(turn_rate_rad_s(head_, t_s, 1.0 / display_hz_), mem_.eyes() > 1 ? ipd_ : 0.0);
+  }
+
   const Scene& scene_;
   PriorityScheduler sched_;
   RenderEngine engine_;
@@ -123,7 +130,6 @@ class HostSimulation {
   std::vector<int> object_region_;
   std::vector<std::pair<RegionIndex, RegionIndex>> span_;
   int memory_of_object(size_t i) const;
-  std::vector<size_t> objects_for(int m) const;
   // Calls visit(face, tx, ty) for the tiles of memory m's faces present object i can be drawn on for a render
   // asked for at t (its rectangle from eyes within half the eyes' distance of `eye`, grown by how far the eye
   // and its own animation move before the engine starts); false as soon as visit returns false.

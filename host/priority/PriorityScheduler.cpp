@@ -8,12 +8,13 @@
 
 namespace arp::host {
 
-Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed, double t, double threshold_rad) {
+Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed, const EyeTurn& turn, double t,
+                         double threshold_rad) {
   const Sphere b = o.world_bound(t);
   const auto& a = o.animation;
   const double own_speed = (a.path.size() >= 2 && a.path_speed > 0) ? a.path_speed : 0.0;
   return validity({glm::length(b.center - eye), b.radius, user_speed + own_speed, std::abs(a.spin_deg_per_s) * kPi / 180.0},
-                  threshold_rad);
+                  threshold_rad, turn);
 }
 
 PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size)
@@ -41,11 +42,11 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
   }
 }
 
-void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, double t) {
+void PriorityScheduler::assign(const glm::dvec3& eye, double user_speed, const EyeTurn& turn, double t) {
   for (size_t i = 0; i < scene_.objects.size(); ++i) {
     int m = 0;
     if (!cfg_.baseline) {
-      const double p = object_validity(scene_.objects[i], eye, user_speed, t, threshold_).period_s();
+      const double p = object_validity(scene_.objects[i], eye, user_speed, turn, t, threshold_).period_s();
       while (m + 1 < cfg_.memories && period_s(m + 1) <= p) ++m;
       held_slower_ += m < fastest_[i] ? 1 : 0;
       held_faster_ += m > slowest_[i] ? 1 : 0;

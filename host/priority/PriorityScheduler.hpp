@@ -47,8 +47,10 @@ struct PriorityConfig {
 };
 
 // How long object o's image stays within threshold_rad for a user at `eye` moving at user_speed at time
-// t (its own path speed and spin included): the rule assign() places objects by.
-Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed_m_s, double t_s, double threshold_rad);
+// t, the eyes moving by `turn` besides (its own path speed and spin included): the rule assign() places
+// objects by.
+Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed_m_s, const EyeTurn& turn, double t_s,
+                         double threshold_rad);
 
 class PriorityScheduler {
  public:
@@ -61,8 +63,8 @@ class PriorityScheduler {
   double period_s(int m) const { return static_cast<double>(frames_per_update(m)) / cfg_.display_hz; }
   double threshold_rad() const { return threshold_; }
 
-  // Works out where every object belongs for the user at `eye` moving at `user_speed` at time t.
-  void assign(const glm::dvec3& eye, double user_speed_m_s, double t_s);
+  // Works out where every object belongs for the user at `eye` moving at `user_speed`, the eyes by `turn`, at time t.
+  void assign(const glm::dvec3& eye, double user_speed_m_s, const EyeTurn& turn, double t_s);
   // Whether object `object` at time t, seen from eyes about `eye`, draws only on tiles memory m holds. With
   // one set, assign() puts an object in the slowest memory at or below the rule's choice that holds them
   // (the rule's choice when none of those does: its texels there are lost).

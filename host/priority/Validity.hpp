@@ -8,6 +8,11 @@
 // - animation: a spinning object's surface (radius r, omega rad/s) moves
 //   r omega t, which at distance d subtends theta_t after d theta_t / (r omega).
 // A component that cannot change (zero speed, no spin) is infinite.
+// The eyes sit either side of the head's centre, so a turning head moves them
+// too (EyeTurn): over a time T an eye moves at most v T + min(s T, reach),
+// s its speed on the circle it turns on and reach that circle's diameter (the
+// longest chord). The translational and size components are the times that
+// displacement first reaches theirs.
 #pragma once
 #include <limits>
 
@@ -20,6 +25,14 @@ struct ValidityInputs {
   double spin_rad_s;          // |angular velocity| of its animation
 };
 
+// The eyes' motion from the head turning at its present angular speed.
+struct EyeTurn {
+  double speed_m_s = 0;  // |omega| x the eyes' distance from the head's centre
+  double reach_m = 0;    // the most turning moves an eye: twice that distance
+};
+// Eyes half of ipd_m either side of the centre (ipd_m 0: one eye, at the centre) of a head turning at turn_rad_s.
+inline EyeTurn eye_turn(double turn_rad_s, double ipd_m) { return {turn_rad_s * 0.5 * ipd_m, ipd_m}; }
+
 struct Validity {
   double translational_s, size_s, animation_s;
   double period_s() const {
@@ -30,7 +43,7 @@ struct Validity {
   }
 };
 
-Validity validity(const ValidityInputs& in, double threshold_rad);
+Validity validity(const ValidityInputs& in, double threshold_rad, const EyeTurn& turn = {});
 
 constexpr double kForever = std::numeric_limits<double>::infinity();
 
