@@ -122,11 +122,13 @@ struct MotionSamples {
   double step_s = 0;  // between samples
 };
 
-// The eyes' motion at t from the head turning as the walk faces where it goes, over the frame before t: what a
-// run's rule takes from the head it shows (HostSimulation; on a walk with no head motion, these orientations),
-// for eyes ipd_m apart (0: one eye).
+// The eyes' motion at t from the head turning as the walk faces where it goes, over the frame before t since the
+// motion's start: what a run's rule takes (HostSimulation::eye_turn_at; a run with no head motion of its own turns
+// by the same function), for eyes ipd_m apart (0: one eye).
 host::EyeTurn walk_turn(const host::WalkPath& walk, double t, double hz, double ipd_m) {
-  return host::eye_turn(host::turn_rate_rad_s([&walk](double s) { return walk.facing(s); }, t, 1.0 / hz), ipd_m);
+  const double dt = std::min(1.0 / hz, t);
+  if (!(dt > 0) || ipd_m == 0) return {};
+  return host::eye_turn(host::facing_turn_rate_rad_s(walk, t, dt), ipd_m);
 }
 
 MotionSamples sample_motion(const host::WalkPath& walk, double hz, double ipd_m) {

@@ -520,6 +520,10 @@ void Session::build_memories() {
   host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
                                                  timing_.refresh_hz());
   check_assignment();
+  // A head with no motion of its own only faces the walk: its turn rate from the walk itself, exact at any time
+  // (the motion stream holds it at 1 kHz samples), as the plan replays it.
+  if (!spec_.motion.given() && spec_.trace.empty() && spec_.live.empty())
+    host_->use_turn_rate([w = walk_.get()](double t, double dt) { return host::facing_turn_rate_rad_s(*w, t, dt); });
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);
     if (!(h.warp_falloff >= 0) || h.warp_falloff > region_m) throw InputError("--warp-falloff", "", "must be 0 .. the region size");

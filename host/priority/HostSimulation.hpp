@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "PriorityScheduler.hpp"
@@ -45,6 +46,10 @@ class HostSimulation {
   using BankRenderer = std::function<RenderStats(const Scene&, const std::vector<size_t>&, double, const glm::dvec3&,
                                                  dp::DisplayMemoryBank&, std::vector<FaceImage>*)>;
   void use_renderer(BankRenderer r) { bank_renderer_ = std::move(r); }
+  // The head's mean turn rate over [t - dt, t], rad/s, where it is known better than from head(t) at two
+  // times (a head that only faces the walk: facing_turn_rate_rad_s, as its plan takes it). Unset: from head.
+  using TurnRate = std::function<double(double t_s, double dt_s)>;
+  void use_turn_rate(TurnRate f) { turn_rate_ = std::move(f); }
   // Threads the software renderer draws faces on (0: every core): the run's --threads.
   void set_render_threads(int n) { renderer_.set_threads(n); }
   // The software renderer's per-face culling (off: every object on every face; the modelled load counts what is drawn).
@@ -102,16 +107,17 @@ class HostSimulation {
   int shown_in(size_t object) const { return shown_memory_[object]; }
 
  private:
-  // The eyes' motion from the head's turning over the frame before t (one eye: none), for the rule.
-  EyeTurn eye_turn_at(double t_s) const {
-    return eye_turn(turn_rate_rad_s(head_, t_s, 1.0 / display_hz_), mem_.eyes() > 1 ? ipd_ : 0.0);
-  }
+  // The eyes' motion from the head's mean turn rate over the frame before t, within the run (one eye: none),
+  // for the rule.
+  EyeTurn eye_turn_at(double t_s) const;
 
   const Scene& scene_;
   PriorityScheduler sched_;
   RenderEngine engine_;
   WalkPath walk_;
   std::function<glm::dquat(double)> head_;
+  TurnRate turn_rate_;
+  double start_s_ = -std::numeric_limits<double>::infinity();  // the first render's time (prime): no turn before it
   dp::DisplayMemorySet& mem_;
   double ipd_, display_hz_;
   bool baseline_;

@@ -9,9 +9,15 @@ namespace {
 // When the eye has moved x at the latest: walking at v, turning at turn.speed_m_s until turning has moved it
 // turn.reach_m (after reach / speed) and no further.
 double time_to_move(double x, double v, const EyeTurn& turn) {
-  if (turn.speed_m_s > 0 && turn.reach_m > 0) {
-    if (x <= (v + turn.speed_m_s) * (turn.reach_m / turn.speed_m_s)) return x / (v + turn.speed_m_s);
-    return v > 0 ? (x - turn.reach_m) / v : kForever;
+  const double s = turn.speed_m_s, reach = turn.reach_m;
+  if (s > 0 && reach > 0) {
+    if (s < kForever) {
+      const double both = x / (v + s);  // turning and walking together, while turning has not moved it its reach
+      if (s * both <= reach) return both;
+    } else if (x <= reach) {
+      return 0;  // an unbounded turn moves it its reach at once
+    }
+    return v > 0 ? (x - reach) / v : kForever;
   }
   return v > 0 ? x / v : kForever;
 }

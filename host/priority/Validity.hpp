@@ -2,7 +2,7 @@
 // (Regan & Pose; Chow 2005 figure 3): the minimum of
 // - translational: the user (and the object) moving sideways by
 //   x = d sqrt(2 (1 - cos theta_t)) shifts an object at distance d by theta_t;
-//   valid for x / relative speed;
+//   valid until the eye can have moved x (x / relative speed, with no turning);
 // - size: walking toward an object of radius r at distance d changes its
 //   angular radius atan(r/d) by theta_t/2 after moving (theta_t/2)(d^2 + r^2)/r;
 // - animation: a spinning object's surface (radius r, omega rad/s) moves
@@ -14,6 +14,7 @@
 // longest chord). The translational and size components are the times that
 // displacement first reaches theirs.
 #pragma once
+#include <cmath>
 #include <limits>
 
 namespace arp::host {
@@ -31,7 +32,7 @@ struct EyeTurn {
   double reach_m = 0;    // the most turning moves an eye: twice that distance
 };
 // Eyes half of ipd_m either side of the centre (ipd_m 0: one eye, at the centre) of a head turning at turn_rad_s.
-inline EyeTurn eye_turn(double turn_rad_s, double ipd_m) { return {turn_rad_s * 0.5 * ipd_m, ipd_m}; }
+inline EyeTurn eye_turn(double turn_rad_s, double ipd_m) { return {std::abs(turn_rad_s) * 0.5 * ipd_m, ipd_m}; }
 
 struct Validity {
   double translational_s, size_s, animation_s;
