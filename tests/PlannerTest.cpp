@@ -1608,7 +1608,8 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
 // the objects it brings beyond theta_t faster there, and the plan replays that turning too. A plan of a walk
 // round a corner past balls near and far gives ranges that hold every choice of the run's rule over the walk
 // (nothing held either way), and some ball's range reaches a faster memory than walking straight past it
-// would: at the corner. (Seen failing with the plan's replay given no turning: object-frames held slower.)
+// would: at the corner, and the run held to the ranges of a rule blind to turning wants faster there. (Seen
+// failing with the plan's replay given no turning: object-frames held slower; and with the run's given none.)
 TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
   TempDir d;
   write(d.file("balls.json"), R"({"name": "corner", "objects": [
@@ -1644,14 +1645,27 @@ TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
   rule_only.assignment.clear();
   host::PriorityScheduler blind(scene, host::PriorityConfig::of(rule_only, hz), p.config.memory.face_size);
   const host::WalkPath walk = host::load_walk_file(d.file("corner.json"));
-  std::vector<int> fastest(3, p.config.memory.count);
+  std::vector<int> fastest(3, p.config.memory.count), slowest(3, 0);
   for (int f = 0; f < frames; ++f) {
     blind.assign(walk.position(f / hz), walk.speed(), {}, f / hz);
-    for (size_t i = 0; i < 3; ++i) fastest[i] = std::min(fastest[i], blind.rule_choice(i));
+    for (size_t i = 0; i < 3; ++i) {
+      fastest[i] = std::min(fastest[i], blind.rule_choice(i));
+      slowest[i] = std::max(slowest[i], blind.rule_choice(i));
+    }
   }
   int faster = 0;
   for (size_t i = 0; i < 3; ++i) faster += planned[i].fastest < fastest[i] ? 1 : 0;
   EXPECT_GT(faster, 0) << p.config.memory.assignment.size();
+  // And the run turns too: held to the ranges the blind rule gives, it wants a faster memory at the corner.
+  dp::ArpConfig held = p.config;
+  held.memory.assignment.clear();
+  for (size_t i = 0; i < 3; ++i)
+    held.memory.assignment.push_back(dp::ObjectAssignment{planned[i].name, fastest[i], slowest[i]}.text());
+  std::ofstream(d.file("blind.json")) << config::to_json(held).dump(2);
+  const auto ob = run_command(kArpsim + " run -q --frames " + std::to_string(frames) + " --every 0 --error-every 0 --config " +
+                              d.file("blind.json") + " --scene " + d.file("balls.json") + " --walk " + d.file("corner.json") + " --report " + j);
+  ASSERT_EQ(ob.status, 0) << ob.output;
+  EXPECT_GT(test::load_json(j)["host"]["object_frames_held_slower_by_assignment"].get<int64_t>(), 0);
 }
 
 // Objects of one name share one string: its range is the union of theirs, as the same scene with the two

@@ -125,15 +125,12 @@ std::vector<size_t> HostSimulation::objects_for(int m) const {
 }
 
 EyeTurn HostSimulation::eye_turn_at(double t) const {
-  // Over the frame before t, or the part of it since the first render: what the head did before the run
-  // drew nothing (an open walk's motion before its start is its end, a jump away).
-  const double dt = std::min(1.0 / display_hz_, t - start_s_);
-  if (!(dt > 0) || mem_.eyes() < 2) return {};
+  if (mem_.eyes() < 2) return {};
+  const double dt = 1.0 / display_hz_;
   return eye_turn(turn_rate_ ? turn_rate_(t, dt) : turn_rate_rad_s(head_, t, dt), ipd_);
 }
 
 void HostSimulation::prime(double t) {
-  start_s_ = t;
   sched_.assign(walk_.position(t), walk_.speed(), eye_turn_at(t), t);
   sched_.settle();
   if (!regions_ && !boxes_.empty()) {  // every memory renders now: the pools as at any frame

@@ -9,7 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <vector>
 
 #include "PriorityScheduler.hpp"
@@ -107,8 +106,7 @@ class HostSimulation {
   int shown_in(size_t object) const { return shown_memory_[object]; }
 
  private:
-  // The eyes' motion from the head's mean turn rate over the frame before t, within the run (one eye: none),
-  // for the rule.
+  // The eyes' motion from the head's mean turn rate over the frame before t (one eye: none), for the rule.
   EyeTurn eye_turn_at(double t_s) const;
 
   const Scene& scene_;
@@ -117,7 +115,6 @@ class HostSimulation {
   WalkPath walk_;
   std::function<glm::dquat(double)> head_;
   TurnRate turn_rate_;
-  double start_s_ = -std::numeric_limits<double>::infinity();  // the first render's time (prime): no turn before it
   dp::DisplayMemorySet& mem_;
   double ipd_, display_hz_;
   bool baseline_;
