@@ -7,7 +7,7 @@
 //   angular radius atan(r/d) by theta_t/2 after moving (theta_t/2)(d^2 + r^2)/r;
 // - animation: a spinning object's surface (radius r, omega rad/s) moves
 //   r omega t, which at distance d subtends theta_t after d theta_t / (r omega).
-// A component that cannot change (zero speed, no spin) is infinite.
+// A component that cannot change (zero speed and no turn, no spin) is infinite.
 // The eyes sit either side of the head's centre, so a turning head moves them
 // too (EyeTurn): over a time T an eye moves at most v T + min(s T, reach),
 // s its speed on the circle it turns on and reach that circle's diameter (the
