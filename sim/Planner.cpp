@@ -126,9 +126,8 @@ struct MotionSamples {
 // motion's start: what a run's rule takes (HostSimulation::eye_turn_at; a run with no head motion of its own turns
 // by the same function), for eyes ipd_m apart (0: one eye).
 host::EyeTurn walk_turn(const host::WalkPath& walk, double t, double hz, double ipd_m) {
-  const double dt = std::min(1.0 / hz, t);
-  if (!(dt > 0) || ipd_m == 0) return {};
-  return host::eye_turn(host::facing_turn_rate_rad_s(walk, t, dt), ipd_m);
+  if (ipd_m == 0) return {};
+  return host::eye_turn(host::facing_turn_rate_rad_s(walk, t, 1.0 / hz, 0.0), ipd_m);
 }
 
 MotionSamples sample_motion(const host::WalkPath& walk, double hz, double ipd_m) {

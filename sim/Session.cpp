@@ -521,13 +521,11 @@ void Session::build_memories() {
                                                  timing_.refresh_hz());
   check_assignment();
   // A head with no motion of its own only faces the walk: its turn rate from the walk itself, exact at any time
-  // (the motion stream holds it at 1 kHz samples), over the part of the frame since the run's start, as the
-  // plan replays it (before the start a walk is at its end: an open one a jump away). A head motion given
-  // (--motion, --trace) was already turning before the run.
+  // (the motion stream holds it at 1 kHz samples), from the run's start on, as the plan replays it. A head
+  // motion given (--motion, --trace) was already turning before the run.
   if (!spec_.motion.given() && spec_.trace.empty() && spec_.live.empty())
     host_->use_turn_rate([w = walk_.get(), t0 = seconds_of(start_ps_)](double t, double dt) {
-      const double since = std::min(dt, t - t0);
-      return since > 0 ? host::facing_turn_rate_rad_s(*w, t, since) : 0.0;
+      return host::facing_turn_rate_rad_s(*w, t, dt, t0);
     });
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);

@@ -90,8 +90,9 @@ double turn_rate_rad_s(const std::function<glm::dquat(double)>& head, double t, 
   return 2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w)) / dt;
 }
 
-double facing_turn_rate_rad_s(const WalkPath& walk, double t, double dt) {
-  return turn_rate_rad_s([&walk](double s) { return walk.facing(s); }, t, dt);
+double facing_turn_rate_rad_s(const WalkPath& walk, double t, double dt, double start) {
+  const double since = std::min(dt, t - start);
+  return since > 0 ? turn_rate_rad_s([&walk](double s) { return walk.facing(s); }, t, since) : 0.0;
 }
 
 glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd) {

@@ -42,9 +42,11 @@ class WalkPath {
 // and at t_s, over dt_s. What the priority rule takes the head to keep turning at (host::EyeTurn), in the run
 // (from the head it is shown) and in the plan (from the walk's facing) alike.
 double turn_rate_rad_s(const std::function<glm::dquat(double)>& head, double t_s, double dt_s);
-// The same for a head that only faces where the walk goes (WalkPath::facing, exact at any time): a run with no
-// head motion of its own and its plan take this one.
-double facing_turn_rate_rad_s(const WalkPath& walk, double t_s, double dt_s);
+// The same for a head that only faces where the walk goes (WalkPath::facing, exact at any time), over the part of
+// the dt_s before t_s that is at or after start_s (0 when none is): a run with no head motion of its own takes it
+// from the run's start, its plan from the motion's, so both see the same turning (before its start a walk is at
+// its end: an open one a jump away).
+double facing_turn_rate_rad_s(const WalkPath& walk, double t_s, double dt_s, double start_s);
 
 // Eye `eye` of `eyes` (0 = left) at head position p with orientation q.
 glm::dvec3 eye_position(const glm::dvec3& head, const glm::dquat& q, int eye, int eyes, double ipd_m);
