@@ -70,4 +70,10 @@ bool LineReader::next(std::string& line) {
   return true;
 }
 
+std::string trim_blanks(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
 }  // namespace arp

@@ -40,4 +40,7 @@ class LineReader {
   size_t line_ = 0;
 };
 
+// s without the spaces, tabs and carriage returns at either end (a line's or a field's).
+std::string trim_blanks(const std::string& s);
+
 }  // namespace arp

@@ -36,18 +36,12 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::string trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
 std::vector<std::string> split(const std::string& s, const char* seps) {
   std::vector<std::string> out;
   size_t at = 0;
   while (true) {
     const size_t e = s.find_first_of(seps, at);
-    out.push_back(trim(s.substr(at, e == std::string::npos ? std::string::npos : e - at)));
+    out.push_back(trim_blanks(s.substr(at, e == std::string::npos ? std::string::npos : e - at)));
     if (e == std::string::npos) return out;
     at = e + 1;
   }
@@ -70,7 +64,7 @@ bool numeric_looking(const std::string& s) {
 
 // The arpsim axis a signed axis name points along: "+x" / "x" / "-y" ...
 bool signed_axis(const std::string& s, glm::dvec3& out) {
-  const std::string t = lower(trim(s));
+  const std::string t = lower(trim_blanks(s));
   if (t.empty() || t.size() > 2) return false;
   const char a = t.back();
   const double sign = t.size() == 2 ? (t[0] == '-' ? -1.0 : t[0] == '+' ? 1.0 : 0.0) : 1.0;
@@ -116,7 +110,7 @@ bool parse_columns(const std::string& s, DatasetLayout::Columns& out, std::strin
       why = "'" + quoted(item) + "' is not ROLE=COLUMN (a column number from 1 or a header name)";
       return false;
     }
-    const std::string role = lower(trim(item.substr(0, eq))), col = trim(item.substr(eq + 1));
+    const std::string role = lower(trim_blanks(item.substr(0, eq))), col = trim_blanks(item.substr(eq + 1));
     std::string* slot = role == "t" || role == "time" ? &c.time
                         : role == "frame"             ? &c.frame
                         : role == "qw"                ? &c.qw
@@ -231,7 +225,7 @@ std::vector<PoseSample> read_head_motion_dataset(const std::string& path, const 
   double t0 = 0;
   while (lines.next(line)) {
     const std::string where = lines.where();
-    const std::string t = trim(line);
+    const std::string t = trim_blanks(line);
     if (t.empty() || t[0] == '#') continue;
     if (!seps) {
       seps = t.find_first_of(",\t") != std::string::npos ? ",\t" : " ,\t";

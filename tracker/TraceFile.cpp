@@ -24,11 +24,6 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
-
 }  // namespace
 
 std::vector<PoseSample> read_trace_csv(const std::string& path, const TraceWindow& window) {
@@ -44,11 +39,11 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
   bool any = false;  // a sample read, kept or not
   static const char* kNames[8] = {"time_s", "qw", "qx", "qy", "qz", "px", "py", "pz"};
   while (lines.next(line)) {
-    const std::string t = trim(line);
+    const std::string t = trim_blanks(line);
     if (t.empty() || t[0] == '#') continue;
     const std::string where = lines.where();
     auto fields = split(t);
-    for (auto& f : fields) f = trim(f);
+    for (auto& f : fields) f = trim_blanks(f);
     if (columns == 0) {  // the header
       if (fields.size() != 5 && fields.size() != 8)
         throw InputError(path, where, "header must be time_s,qw,qx,qy,qz or time_s,qw,qx,qy,qz,px,py,pz");

@@ -4,12 +4,12 @@
 #include <limits>
 
 #include "common/InputError.hpp"
+#include "common/IntegerDivision.hpp"
 
 namespace arp::stage {
 
 namespace {
 constexpr int64_t kNever = std::numeric_limits<int64_t>::min();
-int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
 }  // namespace
 
 void check_host_jobs(const std::vector<HostWriteJob>& jobs, const dp::ArpConfig& c, const std::string& source) {

@@ -1,10 +1,8 @@
 #include "MemoryReadStage.hpp"
 
-namespace arp::stage {
+#include "common/IntegerDivision.hpp"
 
-namespace {
-int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
-}  // namespace
+namespace arp::stage {
 
 BufferSwapper::BufferSwapper(const dp::ArpConfig& c, dp::DisplayMemorySet& mem, const HostWritePort* host,
                              int64_t hook_end, std::function<void(int64_t, double)> hook)

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <utility>
 
-namespace arp::stage {
+#include "common/IntegerDivision.hpp"
 
-namespace {
-int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); }
-}  // namespace
+namespace arp::stage {
 
 ScanTiming::ScanTiming(const dp::ArpConfig& c, int64_t first_frame, int64_t frames, FrameWindows windows)
     : timing_(c.timing),
