@@ -30,7 +30,7 @@ using nlohmann::json;
 
 namespace {
 
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 const std::string kDataFile = std::string(ARPSIM_SOURCE_DIR) + "/tests/data/bit-identity.json";
 const std::set<std::string> kVolatileKeys{"wall_seconds", "pixel_clocks_per_second", "host_wall_ms_per_frame", "peak_resident_mb"};
 

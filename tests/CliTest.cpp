@@ -13,7 +13,7 @@ using arp::test::run_command;
 using arp::test::TempDir;
 
 namespace {
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 }
 
 TEST(Cli, HelpOnEveryCommand) {

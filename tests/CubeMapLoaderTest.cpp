@@ -24,14 +24,8 @@ void write_faces(const test::TempDir& d, const CubeMapImages& cm) {
 
 bool same(const RgbImage& a, const RgbImage& b) { return a.width == b.width && a.height == b.height && a.rgb == b.rgb; }
 
-std::string error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+// The message of the InputError fn throws.
+std::string message_of(const std::function<void()>& fn) { return test::error_of(fn).what(); }
 }  // namespace
 
 TEST(CubeMapLoader, SixFacesRoundTripThroughPng) {
@@ -115,28 +109,28 @@ TEST(DisplayMemoryFill, TexelMappingGoesThroughDirections) {
 TEST(CubeMapLoader, BadInputsNameTheFileAndTheReason) {
   test::TempDir d;
   const CubeMapImages cm = make_calibration_pattern(32);
-  EXPECT_NE(error_of([&] { read_rgb8(d.file("missing.png")); }).find("does not exist"), std::string::npos);
+  EXPECT_NE(message_of([&] { read_rgb8(d.file("missing.png")); }).find("does not exist"), std::string::npos);
   {
     std::ofstream(d.file("corrupt.png"), std::ios::binary) << "\x89PNG\r\n\x1a\n this is not a png body at all";
-    const std::string e = error_of([&] { read_rgb8(d.file("corrupt.png")); });
+    const std::string e = message_of([&] { read_rgb8(d.file("corrupt.png")); });
     EXPECT_NE(e.find("corrupt.png"), std::string::npos) << e;
   }
   {
     std::ofstream(d.file("text.png")) << "hello";
-    EXPECT_NE(error_of([&] { read_rgb8(d.file("text.png")); }).find("text.png"), std::string::npos);
+    EXPECT_NE(message_of([&] { read_rgb8(d.file("text.png")); }).find("text.png"), std::string::npos);
   }
   write_faces(d, cm);
-  EXPECT_NE(error_of([&] { load_six_faces(six_face_paths_in(d.path()), 64); }).find("memory.face_size"), std::string::npos);
+  EXPECT_NE(message_of([&] { load_six_faces(six_face_paths_in(d.path()), 64); }).find("memory.face_size"), std::string::npos);
   write_rgb8(d.file("px.png"), RgbImage(32, 16));
-  EXPECT_NE(error_of([&] { load_six_faces(six_face_paths_in(d.path()), 32); }).find("must be square"), std::string::npos);
+  EXPECT_NE(message_of([&] { load_six_faces(six_face_paths_in(d.path()), 32); }).find("must be square"), std::string::npos);
   std::filesystem::remove(d.file("nz.png"));
-  EXPECT_NE(error_of([&] { six_face_paths_in(d.path()); }).find("nz"), std::string::npos);
+  EXPECT_NE(message_of([&] { six_face_paths_in(d.path()); }).find("nz"), std::string::npos);
   write_rgb8(d.file("wide.png"), RgbImage(100, 30));
-  EXPECT_NE(error_of([&] { load_cross(d.file("wide.png"), 32); }).find("4:3"), std::string::npos);
+  EXPECT_NE(message_of([&] { load_cross(d.file("wide.png"), 32); }).find("4:3"), std::string::npos);
   write_rgb8(d.file("cross.png"), RgbImage(4 * 20, 3 * 20));
-  EXPECT_NE(error_of([&] { load_cross(d.file("cross.png"), 32); }).find("128x96"), std::string::npos);
-  EXPECT_NE(error_of([&] { load_equirect(d.file("wide.png"), 32); }).find("2:1"), std::string::npos);
-  EXPECT_NE(error_of([&] { six_face_paths_in(d.file("nope")); }).find("not a folder"), std::string::npos);
+  EXPECT_NE(message_of([&] { load_cross(d.file("cross.png"), 32); }).find("128x96"), std::string::npos);
+  EXPECT_NE(message_of([&] { load_equirect(d.file("wide.png"), 32); }).find("2:1"), std::string::npos);
+  EXPECT_NE(message_of([&] { six_face_paths_in(d.file("nope")); }).find("not a folder"), std::string::npos);
 }
 
 // Only the readers of the documented formats see a file, chosen by its content
@@ -154,7 +148,7 @@ TEST(ImageFiles, ReadsOnlyTheDocumentedFormatsWhateverTheName) {
   write_rgb8(d.file("b.sgi"), img);
   std::filesystem::copy_file(d.file("b.sgi"), d.file("sgi-called.png"));
   for (const char* name : {"b.sgi", "sgi-called.png"}) {
-    const std::string e = error_of([&] { read_rgb8(d.file(name)); });
+    const std::string e = message_of([&] { read_rgb8(d.file(name)); });
     EXPECT_NE(e.find(name), std::string::npos) << e;
     EXPECT_NE(e.find("not an image of a format arpsim reads (PNG, JPEG, TIFF, OpenEXR, Radiance HDR, PNM, BMP, Targa)"),
               std::string::npos)

@@ -54,7 +54,6 @@ HmdFrame scalar_reference(const ArpConfig& c, const DisplayMemorySet& mem, const
 
 // A head turning fast (about 1000 deg/s about a tilted axis), 1 kHz samples.
 OrientationStream fast_turn(const VideoTiming& t, int64_t frame) { return test::turning(t, frame, 1.0); }
-ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
 void fill(DisplayMemorySet& mem) { test::fill_layered(mem); }
 
 // fill() and then every further memory written too, each over its own pattern, with depths that tie
@@ -131,21 +130,21 @@ TEST(FunctionalModel, BitIdenticalToPixelByPixelDatapathAtDefaults) { expect_bit
 
 TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   std::map<std::string, ArpConfig> cases;
-  ArpConfig c = small(ArpConfig{});
+  ArpConfig c = test::small_display(ArpConfig{});
   cases["small bilinear"] = c;
   c.pipeline.aa = AaMode::Off;
   cases["nearest"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.divider = DividerKind::Exact;
   cases["exact divider"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.vec_frac = c.widths.mat_frac = c.widths.rot_frac = 20;  // too wide for the tabulated reciprocal
   c.widths.recip_index_bits = 10;
   c.widths.recip_frac_bits = 24;
   c.widths.quot_frac = 24;
   c.widths.texel_frac = 12;
   cases["wide, no reciprocal table"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.vec_frac = 7;
   c.widths.mat_frac = 6;
   c.widths.rot_frac = 8;
@@ -156,48 +155,48 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   c.widths.texel_frac = 3;
   c.widths.rot_rounding = c.widths.div_rounding = c.widths.texel_rounding = Rounding::HalfEven;
   cases["narrow, half-even"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory = MemoryConfig{3, 100, 5, 6, 5, 12, {0, 0, 40}};
   c.pipeline.display_bits = 6;
   c.widths.newton_steps = 2;
   cases["565 colour, 100-texel faces, 3 memories"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.timing.eyes = 1;
   c.pipeline.latch = LatchPolicy::PerPixel;
   c.pipeline.latch_lead_cycles = 37;
   c.lens.k = {1.0, 0.22, 0.24, 0.0};
   cases["mono, per-pixel latch, distortion"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.timing.eye_scan = EyeScan::SideBySide;
   c.timing.fields_per_frame = 2;
   c.pipeline.latch = LatchPolicy::PerField;
   c.lens.center_offset_px = 9;
   cases["side-by-side, interlaced, per-field latch"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.pipeline.latch = LatchPolicy::PerFrame;
   c.memory.count = 16;
   c.memory.face_size = 64;
   cases["16 memories, per-frame latch"] = c;
   // One memory: its own passes. The blend sums in 32 bits where dp::blend_fits_32 (8-bit channels up to
   // texel_frac 12), in 64 otherwise.
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory.count = 1;
   cases["one memory, bilinear"] = c;
   c.widths.texel_frac = 13;
   c.widths.quot_frac = 16;
   cases["one memory, bilinear, texel_frac 13 (64-bit blend)"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory.count = 1;
   c.memory.red_bits = 16;
   c.memory.green_bits = c.memory.blue_bits = 8;
   c.widths.texel_frac = 9;
   cases["one memory, 16-bit red, texel_frac 9 (64-bit blend)"] = c;
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory.count = 1;
   c.pipeline.aa = AaMode::Off;
   cases["one memory, nearest"] = c;
   // Two, three (above) and four memories (the defaults): loads, then composition in vectors.
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory.count = 2;
   cases["two memories, bilinear"] = c;
   c.pipeline.aa = AaMode::Off;
@@ -212,7 +211,7 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
     for (const AaMode aa : {AaMode::Bilinear, AaMode::Off})
       for (const Fill how : {Fill::EveryMemory, Fill::EveryMemoryInOrder}) {
         if (count == 2 && how == Fill::EveryMemory) continue;  // (fill() covers two memories written sparsely)
-        c = small(ArpConfig{});
+        c = test::small_display(ArpConfig{});
         c.memory.count = count;
         c.pipeline.aa = aa;
         expect_bit_identical(c,
@@ -253,7 +252,7 @@ TEST(FunctionalModel, CalibrationFramesShowTheExpectedFaces) {
 }
 
 TEST(FunctionalModel, LatchPolicyDecidesWhereANewOrientationTakesEffect) {
-  ArpConfig c = small(ArpConfig{});
+  ArpConfig c = test::small_display(ArpConfig{});
   c.pipeline.aa = AaMode::Off;
   DisplayMemorySet mem(c.memory, 2);
   host::load_into_memories(mem, 0, host::make_calibration_pattern(512), host::far_depth(mem.format()));

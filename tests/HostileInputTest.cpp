@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 const std::string kData = std::string(ARPSIM_SOURCE_DIR) + "/tests/data/hostile/";
 
 struct Case {

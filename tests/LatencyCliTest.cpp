@@ -14,7 +14,7 @@ using arp::test::run_command;
 using arp::test::TempDir;
 
 namespace {
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
 }  // namespace
 

@@ -13,7 +13,7 @@ using arp::test::run_command;
 using arp::test::TempDir;
 
 namespace {
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 // In the sanitizer build the window's child process is not leak-checked: SDL
 // leaves allocations behind in libdbus and in display back-ends it loads and
 // unloads itself (not ours; every other test stays leak-checked, and ASan

@@ -32,7 +32,7 @@ namespace {
 using test::read_text;
 using test::run_command;
 using test::TempDir;
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "common/InputError.hpp"
+#include "common/Units.hpp"
 #include "host/error/FrameError.hpp"
 #include "host/motion/WalkPath.hpp"
 #include "host/priority/HostSimulation.hpp"
@@ -19,7 +20,6 @@ using namespace arp;
 using namespace arp::host;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 TEST(Validity, TranslationalFollowsChowsFormulaAndExtremesAreFinite) {

@@ -16,6 +16,11 @@
 
 namespace arp::test {
 
+#ifdef ARPSIM_BINARY
+// The arpsim binary the tests run (the build's, passed by tests/CMakeLists.txt).
+inline const std::string kArpsim = ARPSIM_BINARY;
+#endif
+
 // The InputError `fn` throws; one whose reason is "no error" when it throws none.
 inline InputError error_of(const std::function<void()>& fn) {
   try {

@@ -21,7 +21,7 @@ using arp::test::run_command;
 using arp::test::TempDir;
 
 namespace {
-const std::string kArpsim = ARPSIM_BINARY;
+using arp::test::kArpsim;
 const std::string kSmall =
     " --set display.h_active=96 --set display.v_active=64 --set memory.face_size=128 --set pipeline.latch=\\\"pixel\\\"";
 

@@ -21,7 +21,6 @@ namespace {
 // Layered memories (the composition's tie rule in memories 1 and 2), a fast
 // turn (7 degrees a millisecond: new samples every millisecond of the frame),
 // a small display so that a frame through the RTL takes a fraction of a second.
-ArpConfig small(const ArpConfig& c) { return test::small_display(c); }
 
 void expect_identical(const ArpConfig& c, const std::string& what) {
   DisplayMemorySet mem(c.memory, c.timing.eyes);
@@ -49,21 +48,21 @@ void expect_identical(const ArpConfig& c, const std::string& what) {
 
 TEST(VerilatedLevel, FramesAndPhotonTimesEqualTheFunctionalModelsInEveryBuiltConfiguration) {
   if (!vl::verilated_available()) GTEST_SKIP() << vl::verilated_unavailable_reason();
-  ArpConfig c = small(ArpConfig{});
+  ArpConfig c = test::small_display(ArpConfig{});
   expect_identical(c, "default widths, bilinear, 4 memories");
   c.pipeline.aa = AaMode::Off;
   c.pipeline.latch = LatchPolicy::PerPixel;
   expect_identical(c, "nearest texel, per-pixel latch");
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.vec_frac = c.widths.mat_frac = c.widths.rot_frac = 10;
   expect_identical(c, "Q1.10");
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.divider = DividerKind::Exact;
   expect_identical(c, "exact divider");
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.widths.newton_steps = 0;
   expect_identical(c, "no Newton step");
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory = MemoryConfig{8, 512, 5, 6, 5, 24, {0, 0, 0}};
   c.memory.background = {16, 68, 164};  // colour code 0x1234 in 5:6:5: the format565 build's background
   c.widths.texel_frac = 6;
@@ -73,7 +72,7 @@ TEST(VerilatedLevel, FramesAndPhotonTimesEqualTheFunctionalModelsInEveryBuiltCon
 }
 
 TEST(VerilatedLevel, AConfigurationTheRtlIsNotBuiltForIsRefusedWithTheList) {
-  ArpConfig c = small(ArpConfig{});
+  ArpConfig c = test::small_display(ArpConfig{});
   c.widths.vec_frac = 13;
   try {
     vl::VerilatedFrameModel m(c);
@@ -89,7 +88,7 @@ TEST(VerilatedLevel, AConfigurationTheRtlIsNotBuiltForIsRefusedWithTheList) {
       EXPECT_NE(what.find("Verilator was not found"), std::string::npos) << what;
     }
   }
-  c = small(ArpConfig{});
+  c = test::small_display(ArpConfig{});
   c.memory.background = {0, 0, 40};
   if (vl::verilated_available()) {
     try {
