@@ -38,6 +38,11 @@ void write(const std::string& path, const std::string& text) { std::ofstream(pat
 
 // A small display keeps the harness quick; the planner's arithmetic does not depend on the size.
 dp::ArpConfig small_display() { return config::apply_overrides({}, {"display.h_active=160", "display.v_active=120"}); }
+// The same at the default's 60 Hz (its porches, 320 x 165 clocks a frame: 3.168 MHz): small_display() is 477 Hz,
+// and a run over a walk there takes eight times the frames (under ASan, minutes).
+dp::ArpConfig small_display_60hz() {
+  return config::apply_overrides(small_display(), {"display.pixel_clock_hz=3168000"});
+}
 
 // Object-level priority (--objects-only): the decisions these tests check in closed form are its; region priority
 // rendering is weighed by the tests that say so.
@@ -1302,6 +1307,7 @@ TEST(FaceFootprint, AnObjectsTexelsLieInItsRectangleFromAnyEyeWithinTheMargin) {
 TEST(Planner, TheTilesARunDrawsOnAreWithinThePlansBound) {
   TempDir d;
   PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
+  r.base = small_display_60hz();
   r.tile_pool = false;  // --fixed-tiles: the run holds the plan's tiles
   const Plan p = make_plan(r);
   ASSERT_GT(p.config.memory.count, 1);
@@ -1513,6 +1519,7 @@ TEST(Planner, APlannedTilePoolHoldsWhatARunDrawsAndChangesNoTexel) {
 TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
   TempDir d;
   PlanRequest r = ball_row(d, 5, [](int i) { return -1.5 * (i + 1); }, 3, 0.5);
+  r.base = small_display_60hz();
   r.tile_sparse = false;  // whole faces: an object pinned anywhere has its tiles there
   const Plan p = make_plan(r);
   const int M = p.config.memory.count;
@@ -1578,7 +1585,7 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
   // (Regions of 8 m: one column holds the whole row, no ball is cut, so the pinned balls keep their names.)
   for (const std::string mode : {" --regions 8", " --baseline"}) {
     const std::string j = d.file("report-mode.json");
-    const auto o = run_command(kArpsim + " run -q --frames 4 --every 0 --error-every 0 --config " + edited("mode.json", {"b0: 2", "b4: 0"}) +
+    const auto o = run_command(kArpsim + " run -q --frames 4 --every 0 --error-every 0 --config " + edited("mode.json", {"b0: " + std::to_string(M - 1), "b4: 0"}) +
                                " --scene " + d.file("row.json") + " --walk " + d.file("walk.json") + mode + " --report " + j);
     ASSERT_EQ(o.status, 0) << o.output;
     EXPECT_NE(o.output.find("memory.assignment is not used"), std::string::npos) << mode << o.output;
@@ -1618,6 +1625,7 @@ TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
     {"name": "far", "sphere": 0.3, "position": [-9, 1.6, 2]}]})");
   write(d.file("corner.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3], [3, 1.6, -3]]})");
   PlanRequest r = request(d.file("balls.json"), d.file("corner.json"));
+  r.base = small_display_60hz();  // (a frame of turning at a corner is then the default's)
   r.threshold_deg = 0.5;
   r.size_widths = false;
   r.tile_sparse = false;
