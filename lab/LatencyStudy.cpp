@@ -10,6 +10,7 @@
 #include "ArchitectureSet.hpp"
 #include "LatencyLab.hpp"
 #include "apparatus/Oscilloscope.hpp"
+#include "common/PrintfText.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/Gnuplot.hpp"
 #include "common/GtkwSaveFile.hpp"
@@ -27,12 +28,6 @@ namespace arp::lab {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 LabConfig lab_config(const LatencySpec& a) {
   LabConfig lab;
@@ -110,11 +105,11 @@ std::string olano_reproduction(const dp::ArpConfig& base, nlohmann::json& out) {
                    "| figure | model | paper | tolerance | within | how |\n| --- | --- | --- | --- | --- | --- |\n";
   for (const auto& r : rows) {
     const bool ok = std::abs(r.model - r.paper) <= r.tolerance * r.paper;
-    md += std::string("| ") + r.what + " | " + fmt("%.3f", r.model) + " | " + fmt("%.2f", r.paper) + " | " + fmt("%.0f %%", r.tolerance * 100) +
+    md += std::string("| ") + r.what + " | " + printf_text("%.3f", r.model) + " | " + printf_text("%.2f", r.paper) + " | " + printf_text("%.0f %%", r.tolerance * 100) +
           " | " + (ok ? "yes" : "**no**") + " | " + r.note + " |\n";
     out.push_back({{"figure", r.what}, {"model", r.model}, {"paper", r.paper}, {"tolerance", r.tolerance}, {"within", ok}});
   }
-  md += "\nThe 90 ms against 50 ms comparison is figure 9's; " + fmt("%.1f", field_ms) + " ms is one field.\n";
+  md += "\nThe 90 ms against 50 ms comparison is figure 9's; " + printf_text("%.1f", field_ms) + " ms is one field.\n";
   return md;
 }
 
@@ -199,15 +194,15 @@ std::string LatencyStudy::run() {
     for (auto& s : motion) s.time_ps -= t0;
     const double have = static_cast<double>(motion.back().time_ps) * 1e-12;
     if (have < t_first + span_s)
-      throw InputError(a.trace, "", "the trace lasts " + fmt("%.3f", have) + " s; the laboratory needs " + fmt("%.3f", t_first + span_s) +
+      throw InputError(a.trace, "", "the trace lasts " + printf_text("%.3f", have) + " s; the laboratory needs " + printf_text("%.3f", t_first + span_s) +
                                         " s (the pipelines' latency plus --frames)");
   } else {
     tracker::MotionSpec m = a.motion;
     if (!m.given()) m.motion = "shake";
     motion = m.make(0.0, t_first + span_s + 0.1);
-    motion_name = m.motion == "rotate" ? "rotate at " + fmt("%.0f", m.rate) + " deg/s"
-                  : m.motion == "shake" ? "head shake, " + fmt("%.0f", m.peak) + " deg/s peak at " + fmt("%.2f", m.frequency) + " Hz"
-                                        : "pendulum " + fmt("%.0f", m.amplitude) + " deg, " + fmt("%.2f", m.period) + " s";
+    motion_name = m.motion == "rotate" ? "rotate at " + printf_text("%.0f", m.rate) + " deg/s"
+                  : m.motion == "shake" ? "head shake, " + printf_text("%.0f", m.peak) + " deg/s peak at " + printf_text("%.2f", m.frequency) + " Hz"
+                                        : "pendulum " + printf_text("%.0f", m.amplitude) + " deg, " + printf_text("%.2f", m.period) + " s";
   }
   if (a.walk_speed > 0) {
     // Walking straight ahead (world -z) at eye height while the head turns: translation for every architecture.
@@ -215,7 +210,7 @@ std::string LatencyStudy::run() {
       p.has_position = true;
       p.position = glm::dvec3(0, 1.6, -a.walk_speed * static_cast<double>(p.time_ps) * 1e-12);
     }
-    motion_name += ", walking " + fmt("%.2f", a.walk_speed) + " m/s";
+    motion_name += ", walking " + printf_text("%.2f", a.walk_speed) + " m/s";
   }
   const TrackerFeed feed(motion, tm, a.trace.empty() ? "--motion" : a.trace);
   auto archs = make_architectures(d, c, lab, "arpsim latency settings", &feed);
@@ -247,11 +242,11 @@ std::string LatencyStudy::run() {
                          {"first_frame", first_frame},
                          {"grid_step", a.grid}};
   std::string md = "# Latency laboratory\n\nDisplay " + std::to_string(d.width()) + "x" + std::to_string(d.height()) +
-                   (d.fields_per_frame() == 2 ? " interlaced" : "") + ", " + fmt("%.2f", 1e12 / static_cast<double>(d.field_period_ps())) +
-                   " fields/s, " + fmt("%.0f", d.fov_deg()) + " deg across (" + fmt("%.2f", d.pixels_per_degree()) + " px/deg); motion: " +
-                   motion_name + "; tracker " + fmt("%.0f", tm.rate_hz) + " Hz, " + fmt("%.1f", tm.latency_s * 1e3) + " ms latency; prediction " +
-                   to_string(pred) + " (horizon " + fmt("%.1f", a.horizon_ms) + " ms)" + scene_note +
-                   (feed.has_positions() ? "; tracked points " + fmt("%.1f", a.point_distance) + " m away" : std::string()) + "; " + std::to_string(a.frames) + " refreshes, every " +
+                   (d.fields_per_frame() == 2 ? " interlaced" : "") + ", " + printf_text("%.2f", 1e12 / static_cast<double>(d.field_period_ps())) +
+                   " fields/s, " + printf_text("%.0f", d.fov_deg()) + " deg across (" + printf_text("%.2f", d.pixels_per_degree()) + " px/deg); motion: " +
+                   motion_name + "; tracker " + printf_text("%.0f", tm.rate_hz) + " Hz, " + printf_text("%.1f", tm.latency_s * 1e3) + " ms latency; prediction " +
+                   to_string(pred) + " (horizon " + printf_text("%.1f", a.horizon_ms) + " ms)" + scene_note +
+                   (feed.has_positions() ? "; tracked points " + printf_text("%.1f", a.point_distance) + " m away" : std::string()) + "; " + std::to_string(a.frames) + " refreshes, every " +
                    std::to_string(a.grid) + "th pixel and line.\n\n"
                    "Latency: photon time minus the sample time of the tracker report the pixel was computed from. "
                    "Error: the angle between where the pixel's pose put a world point and where the true head at the pixel's photon "
@@ -269,11 +264,11 @@ std::string LatencyStudy::run() {
                                         {"missed_images", r.missed_images},
                                         {"position_age_ms", to_json(r.position_age_ms)},
                                         {"refreshes_without_image", r.frames_without_image}});
-    md += "| " + r.name + " | " + fmt("%.1f", r.image_interval_s * 1e3) + " | " +
-          (r.latency.count ? fmt("%.3f", r.latency.min) + " / " + fmt("%.3f", r.latency.p50) + " / " + fmt("%.3f", r.latency.p99) + " / " +
-                                 fmt("%.3f", r.latency.max)
+    md += "| " + r.name + " | " + printf_text("%.1f", r.image_interval_s * 1e3) + " | " +
+          (r.latency.count ? printf_text("%.3f", r.latency.min) + " / " + printf_text("%.3f", r.latency.p50) + " / " + printf_text("%.3f", r.latency.p99) + " / " +
+                                 printf_text("%.3f", r.latency.max)
                            : std::string("no image")) +
-          " | " + (r.latency.count ? fmt("%.2f", r.centre_error.mean) + " / " + fmt("%.2f", r.centre_error.max) + " | " + fmt("%.2f", r.max_error.max)
+          " | " + (r.latency.count ? printf_text("%.2f", r.centre_error.mean) + " / " + printf_text("%.2f", r.centre_error.max) + " | " + printf_text("%.2f", r.max_error.max)
                                    : std::string("- | -")) +
           " | " + std::to_string(r.missed_images) + " |\n";
   }
@@ -283,7 +278,7 @@ std::string LatencyStudy::run() {
           "| architecture | position age at the photon, median / max (ms) |\n| --- | --- |\n";
     for (const auto& r : results)
       if (r.position_age_ms.count)
-        md += "| " + r.name + " | " + fmt("%.2f", r.position_age_ms.p50) + " / " + fmt("%.2f", r.position_age_ms.max) + " |\n";
+        md += "| " + r.name + " | " + printf_text("%.2f", r.position_age_ms.p50) + " / " + printf_text("%.2f", r.position_age_ms.max) + " |\n";
   }
   md += "\nArchitectures:\n\n";
   for (const auto& r : results) md += "- **" + r.name + "**: " + r.description + "\n";
@@ -294,8 +289,8 @@ std::string LatencyStudy::run() {
     for (const auto& n : names) csv += "," + n;
     csv += "\n";
     for (size_t f = 0; f < static_cast<size_t>(a.frames); ++f) {
-      csv += fmt("%.6f", results[0].frames[f].time_s);
-      for (const auto& r : results) csv += r.frames[f].shown ? "," + fmt("%.4f", r.frames[f].centre_error_px) : ",";
+      csv += printf_text("%.6f", results[0].frames[f].time_s);
+      for (const auto& r : results) csv += r.frames[f].shown ? "," + printf_text("%.4f", r.frames[f].centre_error_px) : ",";
       csv += "\n";
     }
     write_text_atomic((out / "error-over-time.csv").string(), csv);
@@ -310,7 +305,7 @@ std::string LatencyStudy::run() {
     for (int p = 0; p <= 100; ++p) {
       lat += std::to_string(p);
       for (const auto& v : sorted)
-        lat += v.empty() ? "," : "," + fmt("%.6f", v[std::min(v.size() - 1, static_cast<size_t>(std::llround(p / 100.0 * static_cast<double>(v.size() - 1))))]);
+        lat += v.empty() ? "," : "," + printf_text("%.6f", v[std::min(v.size() - 1, static_cast<size_t>(std::llround(p / 100.0 * static_cast<double>(v.size() - 1))))]);
       lat += "\n";
     }
     write_text_atomic((out / "latency-percentiles.csv").string(), lat);
@@ -344,13 +339,13 @@ std::string LatencyStudy::run() {
       s.rate_hz = 2000;
       s.duration_s = t_first + span_s + 0.1;
       const TrackerFeed f(tracker::constant_rotation({0, 1, 0}, sp, s), tm, "speed sweep");
-      csv += fmt("%.0f", sp);
+      csv += printf_text("%.0f", sp);
       for (auto& ar : archs) {
         const auto r = measure(*ar, d, f, sw);
-        csv += r.latency.count ? "," + fmt("%.4f", r.max_error.max) : ",";
+        csv += r.latency.count ? "," + printf_text("%.4f", r.max_error.max) : ",";
       }
       csv += "\n";
-      step("rotation speed " + fmt("%.0f", sp) + " deg/s");
+      step("rotation speed " + printf_text("%.0f", sp) + " deg/s");
     }
     write_text_atomic((out / "speed-sweep.csv").string(), csv);
     note(run_gnuplot(out / "speed-sweep.gp",
@@ -370,7 +365,7 @@ std::string LatencyStudy::run() {
       csv += std::to_string(h);
       for (auto& ar : ha) {
         const auto r = measure(*ar, d, feed, hp);
-        csv += r.latency.count ? "," + fmt("%.4f", r.centre_error.mean) : ",";
+        csv += r.latency.count ? "," + printf_text("%.4f", r.centre_error.mean) : ",";
       }
       csv += "\n";
       step("prediction horizon " + std::to_string(h) + " ms");
@@ -393,18 +388,18 @@ std::string LatencyStudy::run() {
       LabConfig ol = lab;
       ol.triangles = tri;
       auto oa = make_architectures(d, c, ol, "overload sweep");
-      csv += fmt("%.0f", tri);
+      csv += printf_text("%.0f", tri);
       double interval = 0, lat50 = 0;
       for (auto& ar : oa) {
         const auto r = measure(*ar, d, f200, sw);
-        csv += r.latency.count ? "," + fmt("%.4f", r.max_error.max) : ",";
+        csv += r.latency.count ? "," + printf_text("%.4f", r.max_error.max) : ",";
         if (ar->name() == "conventional") {
           interval = r.image_interval_s * 1e3;
           lat50 = r.latency.p50;
         }
       }
-      csv += "," + fmt("%.3f", interval) + "," + fmt("%.3f", lat50) + "\n";
-      step("scene of " + fmt("%.0f", tri) + " triangles");
+      csv += "," + printf_text("%.3f", interval) + "," + printf_text("%.3f", lat50) + "\n";
+      step("scene of " + printf_text("%.0f", tri) + " triangles");
     }
     write_text_atomic((out / "overload.csv").string(), csv);
     note(run_gnuplot(out / "overload.gp",
@@ -435,16 +430,16 @@ std::string LatencyStudy::run() {
     write_text_atomic((out / "apparatus.gtkw").string(), gtkw_for_vcd(vcd.string(), "apparatus.vcd"));
     step("pendulum apparatus");
     md += "\n## The pendulum apparatus (Olano et al., figure 1), simulated\n\n"
-          "Pendulum " + fmt("%.0f", ps.amplitude_deg) + " deg, period " + fmt("%.1f", ps.period_s) + " s, oscilloscope sampling every " +
-          fmt("%.1f", ps.scope_sample_s * 1e6) + " us; the screen photodiode at the centre. External: from the edges in apparatus.vcd; "
+          "Pendulum " + printf_text("%.0f", ps.amplitude_deg) + " deg, period " + printf_text("%.1f", ps.period_s) + " s, oscilloscope sampling every " +
+          printf_text("%.1f", ps.scope_sample_s * 1e6) + " us; the screen photodiode at the centre. External: from the edges in apparatus.vcd; "
           "internal: the model's own timestamps for the refresh that made the edge.\n\n"
           "| architecture | passages | tracking (ms) | rendering (ms) | external total (ms) | internal total (ms) | largest disagreement (us) |\n"
           "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (size_t i = 0; i < ch.size(); ++i) {
       const auto m = apparatus::analyse(ps, edges, i, ch[i]);
-      md += "| " + m.name + " | " + std::to_string(m.passages.size()) + " | " + fmt("%.3f", m.mean_tracking_ms) + " | " +
-            fmt("%.3f", m.mean_rendering_ms) + " | " + fmt("%.3f", m.mean_external_ms) + " | " + fmt("%.3f", m.mean_internal_ms) + " | " +
-            fmt("%.1f", m.max_disagreement_ms * 1e3) + " |\n";
+      md += "| " + m.name + " | " + std::to_string(m.passages.size()) + " | " + printf_text("%.3f", m.mean_tracking_ms) + " | " +
+            printf_text("%.3f", m.mean_rendering_ms) + " | " + printf_text("%.3f", m.mean_external_ms) + " | " + printf_text("%.3f", m.mean_internal_ms) + " | " +
+            printf_text("%.1f", m.max_disagreement_ms * 1e3) + " |\n";
       summary["apparatus"].push_back({{"name", m.name},
                                       {"passages", m.passages.size()},
                                       {"tracking_ms", m.mean_tracking_ms},

@@ -11,6 +11,7 @@
 #include "ConfigFile.hpp"
 #include "MemoryContents.hpp"
 #include "TradeMeasure.hpp"
+#include "common/PrintfText.hpp"
 #include "common/InputError.hpp"
 #include "common/Units.hpp"
 #include "host/priority/PriorityScheduler.hpp"
@@ -34,12 +35,6 @@ namespace {
 
 constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spread over it)
 constexpr int kFillPoints = 16;    // of them, where the fill is measured by rendering the scene
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 // The smallest angle between neighbouring display pixels (across and down) after the lens, and the
 // angle at the panel's centre, from the golden reference's exact lens directions (eye 0; the other
@@ -587,7 +582,7 @@ Plan make_plan(const PlanRequest& r) {
     throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
   if (r.memory_limit_mib && !(*r.memory_limit_mib >= 0 && *r.memory_limit_mib <= 1e9))
-    throw InputError("--memory-limit", fmt("%g", *r.memory_limit_mib), "must be 0 (none) .. 1e9 MiB");
+    throw InputError("--memory-limit", printf_text("%g", *r.memory_limit_mib), "must be 0 (none) .. 1e9 MiB");
   if (r.depth_error && !(*r.depth_error >= 0 && *r.depth_error <= 1))
     throw InputError("--depth-error", "", "must be a share of the composed texels, 0 .. 1");
   config::check(r.base, r.base_source);
@@ -640,11 +635,11 @@ Plan make_plan(const PlanRequest& r) {
   const int S = face_for(finest ? amin : acentre);
   p.config.memory.face_size = S;
   p.choices.push_back({"memory.face_size", std::to_string(S),
-                       "a display pixel after the lens subtends " + fmt("%.4f", rad_to_deg(acentre) * 60.0) +
-                           " arcmin at the lens centre, " + fmt("%.4f", rad_to_deg(amin) * 60.0) +
+                       "a display pixel after the lens subtends " + printf_text("%.4f", rad_to_deg(acentre) * 60.0) +
+                           " arcmin at the lens centre, " + printf_text("%.4f", rad_to_deg(amin) * 60.0) +
                            " at the finest (the panel's corners); a face's largest texel, at its centre, subtends 2 atan(1/S): S = " +
                            std::to_string(S) + " is the smallest no coarser than the " + (finest ? "finest pixel" : "centre pixel") +
-                           " (" + fmt("%.4f", rad_to_deg(2.0 * std::atan(1.0 / S)) * 60.0) + " arcmin; --resolve " +
+                           " (" + printf_text("%.4f", rad_to_deg(2.0 * std::atan(1.0 / S)) * 60.0) + " arcmin; --resolve " +
                            (finest ? "centre gives " + std::to_string(face_for(acentre)) : "finest gives " + std::to_string(face_for(amin))) +
                            "); a finer face is not resolved"});
 
@@ -667,11 +662,11 @@ Plan make_plan(const PlanRequest& r) {
       for (const WidthKey& k : kWidths) same = same && c.widths.*k.field == before.*k.field;
       if (!same) err = search.error(c);  // (every width already at its top: measured)
       if ((wider == 16 || same) && !(err <= p.texel_error_bound))
-        throw InputError("--texel-error", r.texel_error > 0 ? fmt("%g", p.texel_error_bound) : "",
+        throw InputError("--texel-error", r.texel_error > 0 ? printf_text("%g", p.texel_error_bound) : "",
                          std::string(r.texel_error > 0 ? "" : "the bound measured from " + r.base_source + ", " +
-                                                                  fmt("%.4f", p.texel_error_bound) + " texels: ") +
+                                                                  printf_text("%.4f", p.texel_error_bound) + " texels: ") +
                              "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
-                             fmt("%.4f", err) + " texels (every width at its widest)");
+                             printf_text("%.4f", err) + " texels (every width at its widest)");
     }
     for (int pass = 0; pass < 2; ++pass) {
       bool changed = false;
@@ -696,9 +691,9 @@ Plan make_plan(const PlanRequest& r) {
     p.config.widths = c.widths;
     p.choices.push_back({"datapath.*", widths_text(c.widths),
                          "the narrowest each (tried one at a time, twice over) with the accuracy harness's largest texel-position "
-                         "error at face size " + std::to_string(S) + " within " + fmt("%.4f", p.texel_error_bound) + " texels" +
+                         "error at face size " + std::to_string(S) + " within " + printf_text("%.4f", p.texel_error_bound) + " texels" +
                              (r.texel_error > 0 ? " (--texel-error)" : " (what " + r.base_source + " measures: --texel-error)") +
-                             ": measured " + fmt("%.4f", p.texel_error_planned) + " over the quick harness sample, " +
+                             ": measured " + printf_text("%.4f", p.texel_error_planned) + " over the quick harness sample, " +
                              std::to_string(p.harness_runs) + " harness runs"});
   }
 
@@ -772,14 +767,14 @@ Plan make_plan(const PlanRequest& r) {
     const bool fill_most = least_busy.texels_per_s / engine.texels_per_s > 0.5 * least_busy.engine_busy;
     throw InputError(
         r.base_source, fill_most ? "host.texels_per_s" : "host.triangles_per_s",
-        "the rendering engine (" + fmt("%.3g", engine.triangles_per_s) + " triangles/s, " + fmt("%.3g", engine.texels_per_s) +
-            " texels/s, " + fmt("%.3g", engine.object_setup_s) + " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
-            fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg: every ladder keeps it busy more than the whole of each second -- the least " +
-            fmt("%.3g", least_busy.engine_busy) + " s a second (" + ladder_text(least_busy) + ")" +
-            (floor_busy > 1 ? "; no theta_t helps: even rendered once every " + fmt("%.0f", cap) + " frames it needs " + fmt("%.3g", floor_busy) +
+        "the rendering engine (" + printf_text("%.3g", engine.triangles_per_s) + " triangles/s, " + printf_text("%.3g", engine.texels_per_s) +
+            " texels/s, " + printf_text("%.3g", engine.object_setup_s) + " s set-up an object, " + std::to_string(eyes) + (eyes == 1 ? " eye" : " eyes") + ") cannot carry this scene at theta_t " +
+            printf_text("%.4f", rad_to_deg(p.threshold_rad)) + " deg: every ladder keeps it busy more than the whole of each second -- the least " +
+            printf_text("%.3g", least_busy.engine_busy) + " s a second (" + ladder_text(least_busy) + ")" +
+            (floor_busy > 1 ? "; no theta_t helps: even rendered once every " + printf_text("%.0f", cap) + " frames it needs " + printf_text("%.3g", floor_busy) +
                                   " s a second"
-                            : "; a larger --threshold-deg lowers it (at the slowest, once every " + fmt("%.0f", cap) + " frames: " +
-                                  fmt("%.3g", floor_busy) + " s a second)"));
+                            : "; a larger --threshold-deg lowers it (at the slowest, once every " + printf_text("%.0f", cap) + " frames: " +
+                                  printf_text("%.3g", floor_busy) + " s a second)"));
   }
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [](const LadderLoad& L) { return L.engine_busy > 1; }),
                    candidates.end());
@@ -809,9 +804,9 @@ Plan make_plan(const PlanRequest& r) {
     });
     if (!r.memory_limit_mib) p.memory_limit_bytes = std::max(p.memory_limit_bytes, least.memory_bytes_weighed());
     if (least.memory_bytes_weighed() > p.memory_limit_bytes)  // (only a limit given: the default is at least the least's)
-      throw InputError("--memory-limit", fmt("%g", limit_mib),
+      throw InputError("--memory-limit", printf_text("%g", limit_mib),
                        "no ladder the engine carries fits at face size " + std::to_string(S) + ": the least takes " +
-                           fmt("%.1f", static_cast<double>(least.memory_bytes_weighed()) / 1048576.0) + " MiB (" + ladder_text(least) +
+                           printf_text("%.1f", static_cast<double>(least.memory_bytes_weighed()) / 1048576.0) + " MiB (" + ladder_text(least) +
                            (least.memory_bytes_tiled > 0 && least.memory_bytes_tiled < least.memory_bytes_whole
                                 ? (r.tile_pool && r.weigh_pools ? ", tile-sparse or pooled" : ", tile-sparse")
                                 : "") + ")");
@@ -888,9 +883,9 @@ Plan make_plan(const PlanRequest& r) {
     }
     p.config.memory.depth_bits = p.composition.narrowest(min_depth_bits(), top, p.depth_error_bound);
     if (p.config.memory.depth_bits == 0)
-      throw InputError("--depth-error", fmt("%g", p.depth_error_bound),
+      throw InputError("--depth-error", printf_text("%g", p.depth_error_bound),
                        "no depth code composes the planned " + std::to_string(p.planned.count) +
-                           " memories within it: the best achievable is " + fmt("%.3g", p.composition.share(top)) + " at " +
+                           " memories within it: the best achievable is " + printf_text("%.3g", p.composition.share(top)) + " at " +
                            std::to_string(top) + " bits" +
                            (top < (r.depth_error ? CompositionDepth::kMaxBits : base_bits)
                                 ? " (a wider code would take more display memory than the limit, --memory-limit)"
@@ -901,11 +896,11 @@ Plan make_plan(const PlanRequest& r) {
                       " points of the motion: each memory's objects (the run's priority rule) rendered from the walk's point at "
                       "face size " + std::to_string(S) + " and composed at every width; of " +
                       std::to_string(p.composition.composed) + " texels where two or more memories hold a surface, " +
-                      "composed from a memory whose surface is not the nearest: " + fmt("%.3g", p.composition.share(w)) + " at " +
+                      "composed from a memory whose surface is not the nearest: " + printf_text("%.3g", p.composition.share(w)) + " at " +
                       std::to_string(w) + (w == 1 ? " bit" : " bits");
-    if (w > min_depth_bits()) why += ", " + fmt("%.3g", p.composition.share(w - 1)) + " at " + std::to_string(w - 1);
-    why += ", " + fmt("%.3g", p.composition.share(base_bits)) + " at " + std::to_string(base_bits) + " (" + r.base_source +
-           "'s); the narrowest whose share, and every wider width's, is within " + fmt("%.3g", p.depth_error_bound) +
+    if (w > min_depth_bits()) why += ", " + printf_text("%.3g", p.composition.share(w - 1)) + " at " + std::to_string(w - 1);
+    why += ", " + printf_text("%.3g", p.composition.share(base_bits)) + " at " + std::to_string(base_bits) + " (" + r.base_source +
+           "'s); the narrowest whose share, and every wider width's, is within " + printf_text("%.3g", p.depth_error_bound) +
            (r.depth_error ? " (--depth-error)" : " (what " + r.base_source + "'s width measures: --depth-error)") + "; " +
            texel_bits();
     if (w == min_depth_bits() && p.composition.wrong[static_cast<size_t>(w)] == 0)
@@ -916,15 +911,15 @@ Plan make_plan(const PlanRequest& r) {
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio", "1, 1, 2",
                          "the scene is empty: one memory holds the background, nothing is ever rendered into it"});
   } else {
-    std::string why = "over " + std::to_string(p.samples) + " points of the motion (" + fmt("%.1f", p.motion_s) +
-                      " s) at theta_t " + fmt("%.4f", rad_to_deg(p.threshold_rad)) + " deg, the fastest any object needs " +
-                      (std::isfinite(p.fastest_need_frames) ? std::string("re-rendering is every ") + fmt("%.1f", p.fastest_need_frames) + " frames"
+    std::string why = "over " + std::to_string(p.samples) + " points of the motion (" + printf_text("%.1f", p.motion_s) +
+                      " s) at theta_t " + printf_text("%.4f", rad_to_deg(p.threshold_rad)) + " deg, the fastest any object needs " +
+                      (std::isfinite(p.fastest_need_frames) ? std::string("re-rendering is every ") + printf_text("%.1f", p.fastest_need_frames) + " frames"
                                                             : std::string("re-rendering is never (nothing moves)")) +
                       ", so memory 0 updates every " + std::to_string(first) + " (at most the motion's frames, at least a second's)" +
                       "; of " + std::to_string(candidates.size()) + " ladders (1 .. " +
                       std::to_string(dp::kCompositionInputs) + " memories, ratio 2, 3, 4" +
                       (p.memory_limit_bytes > 0 ? ", the engine can carry, within " +
-                                                      fmt("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
+                                                      printf_text("%.1f", static_cast<double>(p.memory_limit_bytes) / 1048576.0) +
                                                       " MiB of display memory" + (r.tile_sparse ? std::string(r.tile_pool && r.weigh_pools ? " (as whole faces, or as planned tile-sparse or with tile pools, --weigh-pools, where those are over)"
                                                                                                          : " (as whole faces, or as planned tile-sparse where those are over)")
                                                                     : std::string()) + " (--memory-limit" +
@@ -935,11 +930,11 @@ Plan make_plan(const PlanRequest& r) {
                                                       (p.ladders_over_limit > 0 ? ", " + std::to_string(p.ladders_over_limit) + " more left out for their memory" : std::string())
                                                 : std::string(", the engine can carry")) +
                       ") the least host load is " +
-                      fmt("%.3g", p.best.triangles_per_s) + " triangles/s (" + ladder_text(p.best) + "); " +
-                      ladder_text(p.planned) + " is the fewest within " + fmt("%.0f", 100 * r.load_tolerance) +
-                      " % of it: " + fmt("%.3g", p.planned.triangles_per_s) + " triangles/s, against " +
-                      fmt("%.3g", p.base_ladder.triangles_per_s) + " for " + r.base_source + " (" + ladder_text(p.base_ladder) +
-                      ", at its own theta_t " + fmt("%.4f", rad_to_deg(base_threshold)) + " deg)";
+                      printf_text("%.3g", p.best.triangles_per_s) + " triangles/s (" + ladder_text(p.best) + "); " +
+                      ladder_text(p.planned) + " is the fewest within " + printf_text("%.0f", 100 * r.load_tolerance) +
+                      " % of it: " + printf_text("%.3g", p.planned.triangles_per_s) + " triangles/s, against " +
+                      printf_text("%.3g", p.base_ladder.triangles_per_s) + " for " + r.base_source + " (" + ladder_text(p.base_ladder) +
+                      ", at its own theta_t " + printf_text("%.4f", rad_to_deg(base_threshold)) + " deg)";
     if (p.fastest_need_frames < 1)
       why += "; some objects need more than one update a frame: the display rate cannot keep them within theta_t";
     p.choices.push_back({"memory.count, memory.update_frames, memory.update_ratio",
@@ -947,10 +942,10 @@ Plan make_plan(const PlanRequest& r) {
                              std::to_string(p.planned.update_ratio),
                          why});
   }
-  p.choices.push_back({"memory.threshold_deg", fmt("%g", theta_deg),
+  p.choices.push_back({"memory.threshold_deg", printf_text("%g", theta_deg),
                        theta_deg > 0 ? "the theta_t the memories were sized for (--threshold-deg, or the starting configuration's): "
                                        "a run with this plan renders by it unless its own --threshold-deg says otherwise"
-                                     : "0: one texel at the planned face size (" + fmt("%.4f", rad_to_deg(p.threshold_rad)) +
+                                     : "0: one texel at the planned face size (" + printf_text("%.4f", rad_to_deg(p.threshold_rad)) +
                                            " deg), the theta_t the memories were sized for"});
 
   // The object-to-memory assignment: where the rule puts each object over this motion, written as keys (the
@@ -1020,9 +1015,9 @@ Plan make_plan(const PlanRequest& r) {
       value += (m ? "; memory " : "memory ") + std::to_string(m) + ": " +
                (held.sparse[m] ? std::to_string(reach) + " of " + std::to_string(whole) + " tiles"
                                : "every tile (" + std::to_string(reach) + " of " + std::to_string(whole) + " can be drawn on)") +
-               " (" + fmt("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + fmt("%.1f", whole_one / 1048576.0) + " whole" +
+               " (" + printf_text("%.1f", tiled_one / 1048576.0) + " MiB an eye tile-sparse, " + printf_text("%.1f", whole_one / 1048576.0) + " whole" +
                (reach > 0 ? "; at most " + std::to_string(p.tiles.at_once[m]) + " at once, a pool of " + std::to_string(p.tiles.pooled[m]) +
-                                " slots " + fmt("%.1f", static_cast<double>(bank_bits_pooled(p.config, p.tiles.pooled[m])) / 8 / 1048576.0) + " MiB"
+                                " slots " + printf_text("%.1f", static_cast<double>(bank_bits_pooled(p.config, p.tiles.pooled[m])) / 8 / 1048576.0) + " MiB"
                           : std::string()) + ")";
       const bool pool = m < cheaper.size() && cheaper[m] > 0;
       pooled_bits += pool ? bank_bits_pooled(p.config, cheaper[m]) : held.sparse[m] ? bank_bits_tiled(p.config, reach) : bank_bits_whole(p.config);
@@ -1048,8 +1043,8 @@ Plan make_plan(const PlanRequest& r) {
          "put in within twice the slowest memory's period: a memory holds only those tiles (whole 32 x 32 slots, and a "
          "tile table for its bank) where that takes less than whole faces" +
              (!r.tile_sparse ? std::string(" (--whole-faces: every tile everywhere)") : std::string()) + "; all memories " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " MiB so against " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces" +
+             printf_text("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " MiB so against " +
+             printf_text("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces" +
              (any_pool ? " (a memory with a tile pool below holds every tile instead: its pool bounds how many at once)" : "") +
              ". A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
@@ -1063,8 +1058,8 @@ Plan make_plan(const PlanRequest& r) {
          "freed when its buffer is cleared for the next render) needs, per memory, the most tiles drawn on at one point of the "
          "motion and at one to two update periods before together (the image being drawn and the one shown; two periods for "
          "a render skipped or a swap held for a slower memory): " +
-             fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes "
-             "less than its tiles or whole faces, against " + fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) +
+             printf_text("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " MiB, each memory pooled where that takes "
+             "less than its tiles or whole faces, against " + printf_text("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) +
              " MiB with fixed tiles" +
              (!r.tile_sparse ? std::string(": not taken (--whole-faces)")
               : !r.tile_pool ? std::string(": not taken (--fixed-tiles)")
@@ -1124,11 +1119,11 @@ Plan make_plan(const PlanRequest& r) {
     const bool saves = best && best->triangles_per_s < p.planned.triangles_per_s * (1 - r.load_tolerance);
     const bool fits = p.memory_limit_bytes == 0 || (best && display_memory_bytes(by_regions) <= p.memory_limit_bytes);
     region_why = !best ? "no region size the world and the engine allow keeps objects within theta_t as well as objects do (updated "
-                         "slower than needed: " + fmt("%.2f %%", 100 * p.planned.late_share) + " by objects)"
-                 : "the least region load is " + fmt("%.3g", best->triangles_per_s) + " triangles/s with " +
-                       fmt("%g", best->size_m) + " m regions (" + std::to_string(p.planned.count) + (p.planned.count == 1 ? " memory" : " memories") +
-                       ", margin " + fmt("%g", best->margin_m) + " m), against " + fmt("%.3g", p.planned.triangles_per_s) +
-                       " by objects" + (saves ? "" : ": not less by more than " + fmt("%.0f", 100 * r.load_tolerance) + " %") +
+                         "slower than needed: " + printf_text("%.2f %%", 100 * p.planned.late_share) + " by objects)"
+                 : "the least region load is " + printf_text("%.3g", best->triangles_per_s) + " triangles/s with " +
+                       printf_text("%g", best->size_m) + " m regions (" + std::to_string(p.planned.count) + (p.planned.count == 1 ? " memory" : " memories") +
+                       ", margin " + printf_text("%g", best->margin_m) + " m), against " + printf_text("%.3g", p.planned.triangles_per_s) +
+                       " by objects" + (saves ? "" : ": not less by more than " + printf_text("%.0f", 100 * r.load_tolerance) + " %") +
                        (saves && !fits ? ": less, but as whole faces with the starting depth code over the memory limit" : "") +
                        (saves && fits && !r.take_regions
                             ? ": less, but not taken without --take-regions -- the plan bounds each piece's displacement by theta_t, "
@@ -1164,14 +1159,14 @@ Plan make_plan(const PlanRequest& r) {
   }
   const double chosen = p.config.memory.region_size_m;
   p.choices.push_back({"memory.region_size_m, memory.region_margin_m",
-                       fmt("%g", chosen) + ", " + fmt("%g", p.config.memory.region_margin_m),
+                       printf_text("%g", chosen) + ", " + printf_text("%g", p.config.memory.region_margin_m),
                        (chosen > 0 ? "region priority rendering (Chow, Pose & Regan 2005): " + region_why +
                                          "; every tile of each memory, depth code " + std::to_string(p.config.memory.depth_bits) + " bits"
                                    : "object-level priority rendering (each object in the memory its own validity needs), which the ladder, "
                                      "tiles and depth code above are planned for" +
                                          (region_why.empty() ? std::string(r.weigh_regions ? "" : " (--objects-only)") : "; " + region_why)) +
                            (r.base.memory.region_size_m > 0 && chosen == 0
-                                ? " (" + r.base_source + "'s region size " + fmt("%g", r.base.memory.region_size_m) + " m is not kept)"
+                                ? " (" + r.base_source + "'s region size " + printf_text("%g", r.base.memory.region_size_m) + " m is not kept)"
                                 : std::string()) +
                            (p.regions.empty() ? std::string() : "; each size weighed by the run's region rule stepped at every frame of the motion (plan.md)")});
   if (taken)  // its figures: the whole faces it holds, and the tiles not used
@@ -1183,13 +1178,13 @@ Plan make_plan(const PlanRequest& r) {
                           "run, not the plan); the host clock and the write port's bandwidth (timed.host_*): a run renders through "
                           "the modelled engine (host.*), which the check above sizes, and uses the write port only for host write jobs");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
-                       (taken ? "by regions it is busy " + fmt("%.3g", taken->engine_busy) + " s of each second (plan.md's region "
+                       (taken ? "by regions it is busy " + printf_text("%.3g", taken->engine_busy) + " s of each second (plan.md's region "
                                 "table); by objects it carries the planned ladder: busy "
-                              : std::string("it carries the planned ladder: busy ")) + fmt("%.3g", p.planned.engine_busy) +
+                              : std::string("it carries the planned ladder: busy ")) + printf_text("%.3g", p.planned.engine_busy) +
                            " s of each second (every object drawn for each eye at each update of its memory: its set-up, "
                            "its triangles sent to every face its bound reaches from both eyes, the default " +
-                           fmt("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
-                           fmt("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + fmt("%.3g", engine.texels_per_s) +
+                           printf_text("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
+                           printf_text("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + printf_text("%.3g", engine.texels_per_s) +
                            ", measured by rendering the scene at " + std::to_string(fill.points) +
                            " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)"});
   p.memory_bytes_planned = display_memory_bytes(p.config);
@@ -1229,40 +1224,40 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   std::string s = "# Plan for scene " + p.scene_name + "\n\n";
   s += "Scene: " + std::to_string(p.objects) + " objects, " + std::to_string(p.triangles) + " triangles (plan.scene_hash " +
        std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
-       ", " + fmt("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
+       ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
        std::to_string(p.config.plan.motion_hash) + "). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
   s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";
   s += "| face size | " + std::to_string(r.base.memory.face_size) + " | " + std::to_string(p.config.memory.face_size) + " |\n";
   if (p.harness_runs > 0)
-    s += "| texel error (harness, texels) | " + fmt("%.4f", p.texel_error_base) + " (at " + std::to_string(r.base.memory.face_size) +
-         ") | " + fmt("%.4f", p.texel_error_planned) + " (bound " + fmt("%.4f", p.texel_error_bound) + ") |\n";
+    s += "| texel error (harness, texels) | " + printf_text("%.4f", p.texel_error_base) + " (at " + std::to_string(r.base.memory.face_size) +
+         ") | " + printf_text("%.4f", p.texel_error_planned) + " (bound " + printf_text("%.4f", p.texel_error_bound) + ") |\n";
   s += "| display memories | " + ladder_text(p.base_ladder) + " | " + ladder_text(p.planned) + " |\n";
-  s += "| host load, triangles/s | " + fmt("%.4g", p.base_ladder.triangles_per_s) + " | " + fmt("%.4g", p.planned.triangles_per_s) + " |\n";
-  s += "| host fill, texels/s | " + fmt("%.4g", p.base_ladder.texels_per_s) + " | " + fmt("%.4g", p.planned.texels_per_s) + " |\n";
-  s += "| rendering engine busy, s a second | " + fmt("%.3g", p.base_ladder.engine_busy) + " | " + fmt("%.3g", p.planned.engine_busy) + " |\n";
-  s += "| object-samples updated slower than they need | " + fmt("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
-       fmt("%.2f %%", 100 * p.planned.late_share) + " |\n";
-  s += "| display memory, whole faces (hardware, MiB) | " + fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " |\n";
+  s += "| host load, triangles/s | " + printf_text("%.4g", p.base_ladder.triangles_per_s) + " | " + printf_text("%.4g", p.planned.triangles_per_s) + " |\n";
+  s += "| host fill, texels/s | " + printf_text("%.4g", p.base_ladder.texels_per_s) + " | " + printf_text("%.4g", p.planned.texels_per_s) + " |\n";
+  s += "| rendering engine busy, s a second | " + printf_text("%.3g", p.base_ladder.engine_busy) + " | " + printf_text("%.3g", p.planned.engine_busy) + " |\n";
+  s += "| object-samples updated slower than they need | " + printf_text("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
+       printf_text("%.2f %%", 100 * p.planned.late_share) + " |\n";
+  s += "| display memory, whole faces (hardware, MiB) | " + printf_text("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " |\n";
   const std::string unused = p.config.memory.region_size_m > 0 ? ", object-level: not used by regions" : "";
   s += "| display memory, tile-sparse (the tiles the motion can draw on" + unused + ", MiB) | | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_tiled) / 1048576.0) + " |\n";
   s += "| display memory, tile-sparse with fixed tiles where they take less (memory.tiles alone" + unused + ", MiB) | | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " |\n";
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " |\n";
   s += "| display memory with a tile pool per bank where that takes less (memory.tile_pool" + unused + ", MiB) | | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " |\n";
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_pooled) / 1048576.0) + " |\n";
   const std::string held_as = std::string(p.config.memory.tiles.empty() ? "every tile" : "memory.tiles") +
                               (p.config.memory.tile_pool.empty() ? "" : ", memory.tile_pool");
   s += "| display memory as planned (" + held_as + ", hardware, MiB) | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
-       fmt("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +
+       printf_text("%.1f", static_cast<double>(p.memory_bytes_planned) / 1048576.0) + " |\n";
   s += "\nThe tiles each memory can be drawn on are pictured in the `.tiles.png` `arpsim plan` writes beside this file: a row for each memory, "
        "fastest at the top, of its faces +X -X +Y -Y +Z -Z, " + std::to_string(kTilePixels) + " pixels a tile; light: can be "
        "drawn on, dark grey: cannot, dark red: a face left out.\n";
   s += "\nMean objects in each planned memory:";
-  for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + fmt("%.1f", p.planned.objects[m]);
+  for (size_t m = 0; m < p.planned.objects.size(); ++m) s += (m ? ", " : " ") + printf_text("%.1f", p.planned.objects[m]);
   s += ".\n\n## The display-memory ladders weighed\n\nHost load over the motion by the run's own priority rule "
        "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as weighed against "
        "the limit -- where whole faces are over it, each memory holding only the tiles its objects can be drawn on over the "
@@ -1272,15 +1267,15 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
        "display memory, whole faces, MiB | display memory as weighed, MiB |\n"
        "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
-  const auto mib = [](int64_t b) { return fmt("%.1f", static_cast<double>(b) / 1048576.0); };
+  const auto mib = [](int64_t b) { return printf_text("%.1f", static_cast<double>(b) / 1048576.0); };
   for (const LadderLoad& L : p.ladders) {
     const bool planned = ladder_key(L) == ladder_key(p.planned);
     const int64_t whole = planned ? p.memory_bytes_whole : L.memory_bytes_whole;
     const int64_t held = planned ? p.memory_bytes_planned : L.memory_bytes_weighed();
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
-    s += "| " + std::to_string(L.count) + " | " + periods + " | " + fmt("%.4g", L.triangles_per_s) + " | " +
-         fmt("%.4g", L.texels_per_s) + " | " + fmt("%.3g", L.engine_busy) + " | " + fmt("%.2f %%", 100 * L.late_share) + " | " +
+    s += "| " + std::to_string(L.count) + " | " + periods + " | " + printf_text("%.4g", L.triangles_per_s) + " | " +
+         printf_text("%.4g", L.texels_per_s) + " | " + printf_text("%.3g", L.engine_busy) + " | " + printf_text("%.2f %%", 100 * L.late_share) + " | " +
          mib(whole) + " | " + (held < whole ? mib(held) + (!planned && r.tile_pool && r.weigh_pools ? " tile-sparse or pooled" : " tile-sparse") : "whole faces") + (planned ? " (planned)" : "") + " |\n";
   }
   if (!p.regions.empty()) {
@@ -1292,14 +1287,14 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
          "triangles and fill for each eye (its object's measured fill by its share of the triangles); a piece updated slower than its validity at theta_t "
          "needs where its memory's period (the threshold distance walked) is longer. Regions are taken only where they keep "
          "objects within theta_t as well as objects do. By objects: " +
-         fmt("%.4g", p.planned.triangles_per_s) + " triangles/s, " + fmt("%.2f %%", 100 * p.planned.late_share) +
+         printf_text("%.4g", p.planned.triangles_per_s) + " triangles/s, " + printf_text("%.2f %%", 100 * p.planned.late_share) +
          " updated slower than needed.\n\n"
          "| region size, m | margin, m | pieces | triangles/s | engine busy, s a second | updated slower than needed | re-assignments | |\n"
          "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const RegionLoad& R : p.regions)
-      s += "| " + fmt("%g", R.size_m) + " | " + fmt("%g", R.margin_m) + " | " +
-           (R.refused.empty() ? std::to_string(R.segments) + " | " + fmt("%.4g", R.triangles_per_s) + " | " + fmt("%.3g", R.engine_busy) +
-                                    " | " + fmt("%.2f %%", 100 * R.late_share) + " | " + std::to_string(R.reassignments) + " | " +
+      s += "| " + printf_text("%g", R.size_m) + " | " + printf_text("%g", R.margin_m) + " | " +
+           (R.refused.empty() ? std::to_string(R.segments) + " | " + printf_text("%.4g", R.triangles_per_s) + " | " + printf_text("%.3g", R.engine_busy) +
+                                    " | " + printf_text("%.2f %%", 100 * R.late_share) + " | " + std::to_string(R.reassignments) + " | " +
                                     (R.size_m == p.config.memory.region_size_m ? "planned" : "")
                               : "| | | | | " + R.refused) +
            " |\n";
@@ -1311,7 +1306,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
          "| bits | composed wrong | share | |\n| --- | --- | --- | --- |\n";
     for (int w = 1; w <= CompositionDepth::kMaxBits; ++w)
       s += "| " + std::to_string(w) + " | " + std::to_string(p.composition.wrong[static_cast<size_t>(w)]) + " | " +
-           fmt("%.3g", p.composition.share(w)) + " | " +
+           printf_text("%.3g", p.composition.share(w)) + " | " +
            (w == p.config.memory.depth_bits ? "planned" : w == r.base.memory.depth_bits ? r.base_source : "") + " |\n";
   }
   if (!p.assignment.empty()) {
