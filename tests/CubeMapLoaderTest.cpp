@@ -24,7 +24,7 @@ void write_faces(const test::TempDir& d, const CubeMapImages& cm) {
 
 bool same(const RgbImage& a, const RgbImage& b) { return a.width == b.width && a.height == b.height && a.rgb == b.rgb; }
 
-// The message of the InputError fn throws.
+// The message of the InputError fn throws ("input: no error" when it throws none).
 std::string message_of(const std::function<void()>& fn) { return test::error_of(fn).what(); }
 }  // namespace
 

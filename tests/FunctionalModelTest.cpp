@@ -58,7 +58,9 @@ void fill(DisplayMemorySet& mem) { test::fill_layered(mem); }
 
 // fill() and then every further memory written too, each over its own pattern, with depths that tie
 // across memories: the composition of four to eight memories (each count its own passes), and of more
-// than eight (a count known only at run time). fill() alone writes at most three.
+// than eight (a count known only at run time). fill() alone writes at most three. The odd memories are
+// written from the last face's last row back, so their tiles are taken out of table order (read through
+// their tables, at any face size).
 void fill_every_memory(DisplayMemorySet& mem) {
   fill(mem);
   const MemoryFormat& fmt = mem.format();
@@ -66,14 +68,17 @@ void fill_every_memory(DisplayMemorySet& mem) {
   for (int e = 0; e < mem.eyes(); ++e)
     for (int m = 3; m < mem.count(); ++m) {
       auto& b = mem.bank(e, m);
-      for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < S; ++y)
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < S; ++j)
           for (int x = 0; x < S; ++x)
-            if ((x + 2 * y + 3 * m) % (m - 1) != 0)
+            if (const int f = m % 2 ? 5 - i : i, y = m % 2 ? S - 1 - j : j; (x + 2 * y + 3 * m) % (m - 1) != 0)
               b.write(f, x, y, fmt.pack_rgb8(20 * m, 255 - 30 * f, (x * 255) / S),
                       fmt.empty_depth() / 3 + static_cast<uint32_t>((x + y + m) % 3) - 1);
       b.commit();
       b.vblank();
+      if (m % 2) {
+        EXPECT_FALSE(b.front_tiles_in_order()) << "memory " << m;
+      }
     }
 }
 

@@ -15,14 +15,14 @@ using arp::test::TempDir;
 
 namespace {
 using arp::test::kArpsim;
-nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
+using arp::test::load_json;
 }  // namespace
 
 TEST(LatencyCli, ComparesTheArchitecturesAndReproducesOlano) {
   TempDir d;
   const auto r = run_command(kArpsim + " latency -q --frames 40 --no-sweeps --out-dir " + d.file("lab"));
   ASSERT_EQ(r.status, 0) << r.output;
-  const auto j = load(d.file("lab/summary.json"));
+  const auto j = load_json(d.file("lab/summary.json"));
   ASSERT_EQ(j["architectures"].size(), 8u);
   std::map<std::string, nlohmann::json> by;
   for (const auto& a : j["architectures"]) by[a["name"]] = a;

@@ -38,7 +38,7 @@ void write(const std::string& path, const std::string& text) { std::ofstream(pat
 
 // A small display keeps the harness quick; the planner's arithmetic does not depend on the size.
 dp::ArpConfig small_display() { return config::apply_overrides({}, {"display.h_active=160", "display.v_active=120"}); }
-// The same at the default's 60 Hz (its porches, 320 x 165 clocks a frame: 3.168 MHz): small_display() is 477 Hz,
+// The same at 60 Hz, about the default's 59.94 (its porches, 320 x 165 clocks a frame: 3.168 MHz): small_display() is 477 Hz,
 // and a run over a walk there takes eight times the frames (under ASan, minutes).
 dp::ArpConfig small_display_60hz() {
   return config::apply_overrides(small_display(), {"display.pixel_clock_hz=3168000"});
@@ -1625,7 +1625,7 @@ TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
     {"name": "far", "sphere": 0.3, "position": [-9, 1.6, 2]}]})");
   write(d.file("corner.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3], [3, 1.6, -3]]})");
   PlanRequest r = request(d.file("balls.json"), d.file("corner.json"));
-  r.base = small_display_60hz();  // (a frame of turning at a corner is then the default's)
+  r.base = small_display_60hz();  // (a frame of turning at a corner is then about the default's)
   r.threshold_deg = 0.5;
   r.size_widths = false;
   r.tile_sparse = false;

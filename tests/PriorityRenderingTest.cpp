@@ -19,9 +19,6 @@
 using namespace arp;
 using namespace arp::host;
 
-namespace {
-}
-
 TEST(Validity, TranslationalFollowsChowsFormulaAndExtremesAreFinite) {
   const double th = 0.5 * kPi / 180;
   // x = d sqrt(2 (1 - cos th)) over the speed; d is measured to the bound's surface.

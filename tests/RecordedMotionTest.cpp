@@ -299,7 +299,7 @@ TEST(TraceEdit, DropRepeatsAndResample) {
 // `arpsim tracker import` as a person uses it: the summary, a warning for the
 // wrong axes, the edits, and refusals for bad layouts that write nothing.
 TEST(DatasetImportCli, SummaryWarningsAndEdits) {
-  const std::string arpsim = ARPSIM_BINARY;
+  const std::string& arpsim = arp::test::kArpsim;
   TempDir d;
   {
     // Corbillon's layout at 30 Hz logged at 90 Hz, the head looking ahead and level in its z-up frame

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
+using arp::test::load_json;
 
 size_t lines_of(const std::string& path) {
   std::ifstream in(path);
@@ -61,7 +61,7 @@ TEST(RunInterruption, AStopRequestEndsTheRunWithEveryFinishedFrameWritten) {
   EXPECT_FALSE(s.complete());
   EXPECT_EQ(s.frames_done, 5);
   EXPECT_EQ(s.stop_signal, SIGINT);
-  const auto r = load(d.file("r.json"));
+  const auto r = load_json(d.file("r.json"));
   EXPECT_EQ(r["complete"], false);
   EXPECT_EQ(r["frames_done"], 5);
   ASSERT_EQ(r["frames"].size(), 5u);
@@ -83,8 +83,8 @@ TEST(RunInterruption, ARunThatIsNotStoppedSaysItIsComplete) {
   session.stop_when = [] { return 0; };
   const sim::RunSummary s = session.run();
   EXPECT_TRUE(s.complete());
-  EXPECT_EQ(load(d.file("r.json"))["complete"], true);
-  EXPECT_EQ(load(d.file("r.json"))["frames"].size(), 3u);
+  EXPECT_EQ(load_json(d.file("r.json"))["complete"], true);
+  EXPECT_EQ(load_json(d.file("r.json"))["frames"].size(), 3u);
 }
 
 // The real thing: arpsim run at a cycle-accurate level with a waveform,
@@ -93,7 +93,7 @@ TEST(RunInterruption, ARunThatIsNotStoppedSaysItIsComplete) {
 TEST(RunInterruption, SigintAndSigtermStopTheCommandCleanly) {
   for (const auto& [level, sig] : {std::pair<std::string, int>{"cycle", SIGINT}, {"functional", SIGTERM}}) {
     TempDir d;
-    std::vector<std::string> args = {ARPSIM_BINARY, "run", "-q", "--fidelity", level, "--frames", "100000", "--every", "1",
+    std::vector<std::string> args = {arp::test::kArpsim, "run", "-q", "--fidelity", level, "--frames", "100000", "--every", "1",
                                      "--out-dir", d.file("img"), "--report", d.file("r.json"), "--csv", d.file("r.csv"),
                                      "--set", "display.eyes=1"};
     if (level != "functional") args.insert(args.end(), {"--vcd", d.file("w"), "--vcd-lines", "0:100000"});
@@ -118,7 +118,7 @@ TEST(RunInterruption, SigintAndSigtermStopTheCommandCleanly) {
     ::waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFEXITED(status)) << level;
     EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << level;
-    const auto r = load(d.file("r.json"));
+    const auto r = load_json(d.file("r.json"));
     EXPECT_EQ(r["complete"], false) << level;
     const int64_t done = r["frames_done"].get<int64_t>();
     EXPECT_GE(done, 1) << level;
@@ -167,7 +167,7 @@ TEST(LatencyInterruption, AStopRequestEndsTheStudyBeforeTheNextStep) {
 // 130, a message naming what was not run, no table, no temporaries.
 TEST(LatencyInterruption, SigintStopsTheCommandCleanly) {
   TempDir d;
-  std::vector<std::string> args = {ARPSIM_BINARY, "latency", "--frames", "600", "--no-apparatus", "--out-dir", d.file("lab")};
+  std::vector<std::string> args = {arp::test::kArpsim, "latency", "--frames", "600", "--no-apparatus", "--out-dir", d.file("lab")};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

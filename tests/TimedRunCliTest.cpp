@@ -26,13 +26,13 @@ const std::string kSmall =
     " --set display.h_active=96 --set display.v_active=64 --set memory.face_size=128 --set pipeline.latch=\\\"pixel\\\"";
 
 using arp::test::read_text;
-nlohmann::json load(const std::string& path) { return arp::test::load_json(path); }
+using arp::test::load_json;
 // `arpsim run` over the gallery walk with these options, reporting to `name` in d: its report
 // (null, and a failure naming the options, when it did not run).
 nlohmann::json gallery_walk(const TempDir& d, const std::string& options, const std::string& name = "r.json") {
   const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery" + options + " --report " + d.file(name));
   EXPECT_EQ(r.status, 0) << options << "\n" << r.output;
-  return r.status == 0 ? load(d.file(name)) : nlohmann::json();
+  return r.status == 0 ? load_json(d.file(name)) : nlohmann::json();
 }
 }  // namespace
 
@@ -43,7 +43,7 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
     const auto r = run_command(kArpsim + " run -q --fidelity " + level + " --frames 3 --every 0 --motion shake --peak 1000" +
                                kSmall + " --report " + d.file(level + ".json") + " --csv " + d.file(level + ".csv"));
     ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
-    rep[level] = load(d.file(level + ".json"));
+    rep[level] = load_json(d.file(level + ".json"));
     EXPECT_EQ(rep[level]["fidelity"], level);
     EXPECT_GT(rep[level]["simulation"]["pixel_clocks_per_second"].get<double>(), 0.0);
   }
@@ -78,7 +78,7 @@ TEST(TimedRunCli, EveryLevelGivesTheSameFramesAndTheCycleLevelsTheSameStatistics
   // The detailed level's old name still selects it.
   const auto alias = run_command(kArpsim + " run -q --fidelity rtl --frames 1 --every 0" + kSmall + " --report " + d.file("alias.json"));
   ASSERT_EQ(alias.status, 0) << alias.output;
-  EXPECT_EQ(load(d.file("alias.json"))["fidelity"], "detailed");
+  EXPECT_EQ(load_json(d.file("alias.json"))["fidelity"], "detailed");
 }
 
 // The verilated level through the command line: the functional level's
@@ -99,7 +99,7 @@ TEST(TimedRunCli, TheVerilatedLevelGivesTheFunctionalLevelsFrames) {
     return;
   }
   ASSERT_EQ(v.status, 0) << v.output;
-  const auto fr = load(d.file("f.json")), vr = load(d.file("v.json"));
+  const auto fr = load_json(d.file("f.json")), vr = load_json(d.file("v.json"));
   EXPECT_EQ(vr["fidelity"], "verilated");
   ASSERT_EQ(vr["frames"].size(), 2u);
   for (size_t i = 0; i < 2; ++i)
@@ -184,7 +184,7 @@ TEST(TimedRunCli, StallsUnderFastMotionAgreeAcrossCycleModels) {
     const std::string name = v.substr(0, v.find(' ')) + std::to_string(rep.size());
     const auto r = run_command(kArpsim + args + " --fidelity " + v + " --report " + d.file(name + ".json"));
     ASSERT_EQ(r.status, 0) << v << "\n" << r.output;
-    rep[v] = load(d.file(name + ".json"));
+    rep[v] = load_json(d.file(name + ".json"));
   }
   EXPECT_GT(rep["detailed"]["underflows"].get<int>(), 0);
   EXPECT_GT(rep["cycle"]["simulation"]["fallback_pixels"].get<int>(), 0);
@@ -231,7 +231,7 @@ TEST(TimedRunCli, ControlSignalsLeaveOutOnlyTheRegistersData) {
       const auto r = run_command(kArpsim + " run -q --frames 1 --every 0 --fidelity " + level + " --vcd " + w +
                                  " --vcd-lines 0:40 --vcd-signals " + signals + " --report " + j);
       ASSERT_EQ(r.status, 0) << r.output;
-      hashes[signals] = load(j)["frames"][0]["pixel_hash"].get<std::string>() + load(j)["frames"][0]["photon_hash"].get<std::string>();
+      hashes[signals] = load_json(j)["frames"][0]["pixel_hash"].get<std::string>() + load_json(j)["frames"][0]["photon_hash"].get<std::string>();
     }
     EXPECT_EQ(hashes["all"], hashes["control"]) << level;
     const auto all = vars(d.file(level + "-all.vcd")), control = vars(d.file(level + "-control.vcd"));
@@ -261,7 +261,7 @@ TEST(TimedRunCli, DetailedWindowsGiveTheDetailedRunsFramesAndWaveform) {
   auto run = [&](const std::string& name, const std::string& how) {
     const auto r = run_command(kArpsim + common + how + " --vcd " + d.file(name) + " --vcd-lines 175:400 --report " + d.file(name + ".json"));
     EXPECT_EQ(r.status, 0) << r.output;
-    return load(d.file(name + ".json"));
+    return load_json(d.file(name + ".json"));
   };
   auto body = [](const std::string& vcd) {  // the waveform without its $date block
     const std::string t = read_text(vcd);
@@ -301,7 +301,7 @@ TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
   const auto r = run_command(kArpsim + " run -q --frames 60 --every 0 --motion shake --peak 400 --frequency 10 --hz 20000" + kSmall +
                              " --detail auto --detail-speed-dps 200 --detail-warmup 0 --report " + d.file("a.json"));
   ASSERT_EQ(r.status, 0) << r.output;
-  const nlohmann::json a = load(d.file("a.json"));
+  const nlohmann::json a = load_json(d.file("a.json"));
   const double delay = a["config"]["pipeline"]["photon_delay_ps"].get<double>(), amp = peak / (2 * kPi * f);
   int over = 0, checked = 0;
   for (size_t k = 0; k + 1 < a["frames"].size(); ++k) {
@@ -322,7 +322,7 @@ TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
   const auto tr = run_command(kArpsim + " run -q --frames 60 --every 0 --trace " + d.file("t.csv") + kSmall +
                               " --detail auto --detail-speed-dps 200 --detail-warmup 0 --report " + d.file("t.json"));
   ASSERT_EQ(tr.status, 0) << tr.output;
-  const nlohmann::json t = load(d.file("t.json"));
+  const nlohmann::json t = load_json(d.file("t.json"));
   EXPECT_EQ(t["detail"]["auto"]["frames_over_speed"], a["detail"]["auto"]["frames_over_speed"]);
   for (size_t k = 0; k < a["frames"].size(); ++k) EXPECT_EQ(t["frames"][k]["level"], a["frames"][k]["level"]) << k;
 
@@ -331,7 +331,7 @@ TEST(TimedRunCli, DetailAutoPicksTheFastFramesAndTheStalledOnes) {
   ASSERT_EQ(run_command(kArpsim + " run -q --fidelity detailed" + stall + " --report " + d.file("s-full.json")).status, 0);
   const auto s = run_command(kArpsim + " run -q --detail auto" + stall + " --report " + d.file("s-auto.json"));
   ASSERT_EQ(s.status, 0) << s.output;
-  const nlohmann::json full = load(d.file("s-full.json")), win = load(d.file("s-auto.json"));
+  const nlohmann::json full = load_json(d.file("s-full.json")), win = load_json(d.file("s-auto.json"));
   EXPECT_EQ(win["detail"]["windows"], nlohmann::json::parse("[[4, 7]]"));
   EXPECT_EQ(win["detail"]["auto"]["frames_with_a_stall"], 2);
   EXPECT_GT(full["underflows"].get<int64_t>(), 0);
@@ -354,7 +354,7 @@ TEST(TimedRunCli, ClockGatingAndFaceCullingChangeOnlyTheWork) {
       const std::string j = d.file(level + std::to_string(gated) + ".json");
       const auto r = run_command(kArpsim + common + " --fidelity " + level + (gated ? "" : " --no-clock-gating") + " --report " + j);
       ASSERT_EQ(r.status, 0) << r.output;
-      rep[gated] = load(j);
+      rep[gated] = load_json(j);
     }
     const nlohmann::json& sim0 = rep[0]["simulation"];
     const nlohmann::json& sim1 = rep[1]["simulation"];
@@ -374,7 +374,7 @@ TEST(TimedRunCli, ClockGatingAndFaceCullingChangeOnlyTheWork) {
                                " --set memory.face_size=64 --engine-triangles 1e15 --engine-fill 1e15 --engine-setup 0" +
                                (culled ? "" : " --no-face-culling") + " --report " + j);
     ASSERT_EQ(r.status, 0) << r.output;
-    walk[culled] = load(j);
+    walk[culled] = load_json(j);
   }
   // An engine that never overloads draws every job either way: the same pixels, frame for frame.
   EXPECT_GT(walk[0]["host"]["triangles_per_s"].get<double>(), 2 * walk[1]["host"]["triangles_per_s"].get<double>());
@@ -407,7 +407,7 @@ TEST(TimedRunCli, GalleryWalkReportsMemoriesLoadAndError) {
                              " --threshold-deg 2 --set memory.face_size=128" +
                              " --out-dir " + d.file("f") + " --report " + d.file("w.json"));
   ASSERT_EQ(r.status, 0) << r.output;
-  const auto j = load(d.file("w.json"));
+  const auto j = load_json(d.file("w.json"));
   ASSERT_EQ(j["host"]["memories"].size(), 4u);
   EXPECT_EQ(j["host"]["memories"][0]["updates"], 8);
   EXPECT_GE(j["host"]["memories"][1]["updates"].get<int>(), 4);  // plus re-renders handing objects over
@@ -543,7 +543,7 @@ TEST(TimedRunCli, AnAreaSampledTruthMeasuresFinerFacesBetter) {
   const double off_centre = psnr(" --set memory.face_size=512 --set lens.center_offset_px=40", "f.json");
   EXPECT_GT(off, off_centre);
   EXPECT_LT(off, off_centre + 3);
-  EXPECT_EQ(load(d.file("b.json"))["host"]["error"]["truth_supersample"], 2);
+  EXPECT_EQ(load_json(d.file("b.json"))["host"]["error"]["truth_supersample"], 2);
   for (const std::string bad : {" --walk gallery --truth-supersample 5", " --walk gallery --error-every 0 --truth-supersample 2",
                                  " --truth-supersample 2", " --walk gallery --truth-supersample 2 --set display.fields_per_frame=2",
                                  " --walk gallery --truth-supersample 4 --set display.h_active=2448"}) {
@@ -566,7 +566,7 @@ TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
                                " --every 0 --error-every 0 --threshold-deg 2 --set memory.face_size=64 --report " +
                                d.file(name + ".json"));
     ASSERT_EQ(r.status, 0) << level << "\n" << r.output;
-    rep[name] = load(d.file(name + ".json"));
+    rep[name] = load_json(d.file(name + ".json"));
   }
   for (const std::string level : {"lt", "cycle", "detailed", "window"}) {
     for (size_t f = 0; f < 5; ++f)

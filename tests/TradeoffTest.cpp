@@ -301,7 +301,7 @@ TEST(Tradeoff, MergeKeepsMissingAndBrokenPointsAsRowsWithTheReason) {
 // functional level's error against the golden reference.
 TEST(Tradeoff, LevelPointsRunAsProcessesAndTheMergeComparesTheirFrames) {
   test::TempDir dir;
-  const std::string a = std::string(ARPSIM_BINARY) + " tradeoff -q --quick --out " + dir.path();
+  const std::string a = arp::test::kArpsim + " tradeoff -q --quick --out " + dir.path();
   ASSERT_EQ(test::run_command(a + " --plan-only").status, 0);
   for (const char* id : {"level-functional", "level-cycle"}) {
     const auto r = test::run_command(a + " --point " + id);
@@ -319,7 +319,7 @@ TEST(Tradeoff, LevelPointsRunAsProcessesAndTheMergeComparesTheirFrames) {
   const auto j = nlohmann::json::parse(slurp(dir.file("points/level-cycle.json")));
   EXPECT_GT(j["figures"]["pixel_clocks"].get<int64_t>(), 5 * 420000) << "six frames of 800 x 525 pixel clocks";
   EXPECT_GT(j["peak_rss_bytes"].get<int64_t>(), 0);
-  const auto no_plan = test::run_command(std::string(ARPSIM_BINARY) + " tradeoff --merge --out " + dir.file("nowhere"));
+  const auto no_plan = test::run_command(arp::test::kArpsim + " tradeoff --merge --out " + dir.file("nowhere"));
   EXPECT_EQ(no_plan.status, 2);
   EXPECT_NE(no_plan.output.find("plan.json"), std::string::npos) << no_plan.output;
   const auto time_alone = test::run_command(a + " --plan-only --slurm-time 5");

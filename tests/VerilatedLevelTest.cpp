@@ -20,8 +20,7 @@ namespace {
 
 // Layered memories (the composition's tie rule in memories 1 and 2), a fast
 // turn (7 degrees a millisecond: new samples every millisecond of the frame),
-// a small display so that a frame through the RTL takes a fraction of a second.
-
+// a small display (test::small_display) so that a frame through the RTL takes a fraction of a second.
 void expect_identical(const ArpConfig& c, const std::string& what) {
   DisplayMemorySet mem(c.memory, c.timing.eyes);
   test::fill_layered(mem);

@@ -196,8 +196,6 @@ TEST(GlRenderer, DepthCodesWiderThanItComputesAreRefused) {
 namespace arp::test {
 namespace {
 
-const std::string kArpsim = ARPSIM_BINARY;
-
 TEST(GlRendererCli, AWalkRendersThroughOpenGL) {
   TempDir d;
   const auto r = run_command(kArpsim + " run -q --scene gallery --walk gallery --frames 6 --every 0 --renderer gl --report " +

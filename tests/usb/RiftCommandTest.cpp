@@ -53,10 +53,10 @@ TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
   const auto truth = yaw_90(6.0);
   test::RiftEmulator dk1(RiftModel::DK1, truth);
   arp::test::TempDir d;
-  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  const auto list = arp::test::run_command(arp::test::kArpsim + " tracker list");
   EXPECT_EQ(list.status, 0) << list.output;
   EXPECT_NE(list.output.find("Oculus Rift DK1"), std::string::npos) << list.output;
-  const auto rec = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker record -q --seconds 0.5 " + d.file("head.csv"));
+  const auto rec = arp::test::run_command(arp::test::kArpsim + " tracker record -q --seconds 0.5 " + d.file("head.csv"));
   ASSERT_EQ(rec.status, 0) << rec.output;
   const auto trace = read_trace_csv(d.file("head.csv"));
   // How many samples 0.5 s of wall time holds depends on the machine's pace (a CI run had 243 of ~500);
@@ -65,13 +65,13 @@ TEST(RiftCommand, TrackerListAndRecordFromTheCommandLine) {
   ASSERT_NO_FATAL_FAILURE(expect_device_steps(trace));
   EXPECT_LT(angle_between_deg(trace.back().orientation, truth[trace.size()].orientation), 0.5);
   // The recording replays into the pipeline.
-  const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
+  const auto run = arp::test::run_command(arp::test::kArpsim + " run -q --frames 2 --every 0 --trace " + d.file("head.csv") +
                                           " --set display.h_active=64 --set display.v_active=48");
   EXPECT_EQ(run.status, 0) << run.output;
 }
 
 TEST(RiftCommand, NoDeviceGivesAClearAnswer) {
-  const auto list = arp::test::run_command(std::string(ARPSIM_BINARY) + " tracker list");
+  const auto list = arp::test::run_command(arp::test::kArpsim + " tracker list");
   EXPECT_NE(list.output.find("no Oculus Rift DK1/DK2 found"), std::string::npos) << list.output;
 }
 
@@ -94,7 +94,7 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
   // An arpsim command, the tracker unplugged for a while under it.
   auto run_across_an_unplug = [&](const std::string& args) {
     arp::test::CommandResult r;
-    std::thread child([&] { r = arp::test::run_command(std::string(ARPSIM_BINARY) + " " + args); });
+    std::thread child([&] { r = arp::test::run_command(arp::test::kArpsim + " " + args); });
     unplug_for_a_while();
     child.join();
     return r;
@@ -157,7 +157,7 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   const auto truth = yaw_90(30.0);
   test::RiftEmulator dk1(RiftModel::DK1, truth);
   arp::test::TempDir d;
-  const auto run = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 20 --every 0 --report " +
+  const auto run = arp::test::run_command(arp::test::kArpsim + " run -q --live usb --frames 20 --every 0 --report " +
                                           d.file("slow.json") + " --record-live " + d.file("taken.csv"));
   ASSERT_EQ(run.status, 0) << run.output;
   const std::string all = read_text(d.file("slow.json"));
@@ -203,7 +203,7 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
 TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
   test::RiftEmulator dk1(RiftModel::DK1, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {2, "DK1-A"});
   test::RiftEmulator dk2(RiftModel::DK2, yaw_90(20.0), test::RiftEmulator::Layout::Rift, {3, "DK2-B"});
-  const std::string arpsim = ARPSIM_BINARY;
+  const std::string& arpsim = arp::test::kArpsim;
   arp::test::TempDir d;
   const auto list = arp::test::run_command(arpsim + " tracker list");
   EXPECT_EQ(list.status, 0) << list.output;
@@ -235,19 +235,19 @@ TEST(RiftCommand, TwoTrackersAreListedAndOneIsChosen) {
 // is left behind.
 TEST(RiftCommand, RecordLiveIsCheckedBeforeTheRun) {
   arp::test::TempDir d;
-  const auto alone = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --record-live " + d.file("t.csv"));
+  const auto alone = arp::test::run_command(arp::test::kArpsim + " run -q --frames 2 --record-live " + d.file("t.csv"));
   EXPECT_EQ(alone.status, 2) << alone.output;
   EXPECT_NE(alone.output.find("--record-live"), std::string::npos) << alone.output;
   EXPECT_NE(alone.output.find("use it with --live usb"), std::string::npos) << alone.output;
   test::RiftEmulator dk1(RiftModel::DK1, yaw_90(30.0));
-  const auto nowhere = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --live usb --frames 2 --csv " + d.file("f.csv") +
+  const auto nowhere = arp::test::run_command(arp::test::kArpsim + " run -q --live usb --frames 2 --csv " + d.file("f.csv") +
                                               " --record-live " + d.file("no/such/folder/t.csv"));
   EXPECT_EQ(nowhere.status, 2) << nowhere.output;
   EXPECT_NE(nowhere.output.find("no/such/folder/t.csv"), std::string::npos) << nowhere.output;
   // Said before the run: the run's own outputs were not written.
   EXPECT_FALSE(std::filesystem::exists(d.file("f.csv")));
   // Nor may it overwrite another of the run's files.
-  const auto clash = arp::test::run_command(std::string(ARPSIM_BINARY) + " run -q --frames 2 --live usb --report " + d.file("r.json") +
+  const auto clash = arp::test::run_command(arp::test::kArpsim + " run -q --frames 2 --live usb --report " + d.file("r.json") +
                                             " --record-live " + d.file("r.json"));
   EXPECT_EQ(clash.status, 2) << clash.output;
   EXPECT_NE(clash.output.find("--record-live"), std::string::npos) << clash.output;
