@@ -9,6 +9,7 @@
 
 #include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
+#include "HeadMotion.hpp"
 #include "MemoryContents.hpp"
 #include "TradeMeasure.hpp"
 #include "common/PrintfText.hpp"
@@ -112,29 +113,26 @@ std::string widths_text(const dp::DatapathWidths& w) {
 // The motion planned over: the walk's points at display-frame times, at most kMaxSamples of them.
 struct MotionSamples {
   std::vector<double> t;
-  std::vector<host::EyeTurn> turn;  // at each: the eyes' turning, as the run's rule takes it (walk_turn)
+  std::vector<host::EyeTurn> turn;  // at each: the eyes' turning, as the run's rule takes it (HeadTurnRate)
   double span_s = 0;
   double step_s = 0;  // between samples
 };
 
-// The eyes' motion at t from the head turning as the walk faces where it goes, over the frame before t since the
-// motion's start: what a run's rule takes (HostSimulation::eye_turn_at; a run with no head motion of its own turns
-// by the same function), for eyes ipd_m apart (0: one eye).
-host::EyeTurn walk_turn(const host::WalkPath& walk, double t, double hz, double ipd_m) {
-  if (ipd_m == 0) return {};
-  return host::eye_turn(host::facing_turn_rate_rad_s(walk, t, 1.0 / hz, 0.0), ipd_m);
-}
-
-MotionSamples sample_motion(const host::WalkPath& walk, double hz, double ipd_m) {
+// The motion planned over: the walk's points at display-frame times (walking, the walk's span; standing, the
+// head motion's: standing_span_s), at most kMaxSamples of them, and at each the eyes' turning as a run's rule takes
+// it (HostSimulation::eye_turn_at): the head's turn over the frame before, from the walk's facing and the head
+// motion (HeadTurnRate), for eyes ipd_m apart (0: one eye, no turn).
+MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, double hz, double ipd_m) {
   MotionSamples m;
-  m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : 0.0;
+  m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : standing_span_s(head);
   // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
   // (every sample within the motion: past its end a looping walk would be back at its start)
   const int64_t frames = static_cast<int64_t>(std::clamp(std::floor(m.span_s * hz) + 1, 1.0, 1099511627776.0));
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
+  HeadTurnRate rate(walk, head, m.span_s);
   for (int64_t f = 0; f < frames; f += step) {
     m.t.push_back(static_cast<double>(f) / hz);
-    m.turn.push_back(walk_turn(walk, m.t.back(), hz, ipd_m));
+    m.turn.push_back(ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(m.t.back(), 1.0 / hz), ipd_m));
   }
   m.step_s = static_cast<double>(step) / hz;
   return m;
@@ -491,7 +489,8 @@ int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse, 
 // segmented along columns of `size_m` (as a run segments it), the run's region rule stepped at every display
 // frame of the motion as if every memory were free to render, each update rendering the pieces of that
 // memory for each eye, sent to every face their bound reaches (the engine's cost of set-up and triangles).
-RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz, double threshold_rad,
+RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, const HeadMotion& head_motion, const MotionSamples& ms,
+                       double hz, double threshold_rad,
                        int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, double ipd_m,
                        const FillSamples& fill) {
   RegionLoad out;
@@ -523,11 +522,12 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
     period_s[static_cast<size_t>(m)] = walk.speed() > 0 ? std::max(sched.threshold_distance(m) / walk.speed(), 1 / hz) : host::kForever;
   double triangles = 0, busy_s = 0, pieces = 0, sent = 0;
   std::vector<int> memory_of(seg.scene.objects.size());
+  HeadTurnRate rate(walk, head_motion, ms.span_s);
   int64_t late = 0;
   for (int64_t f = 0; f < frames; ++f) {
     const double t = static_cast<double>(f) / hz;
     const glm::dvec3 head = walk.position(t);
-    const host::EyeTurn turn = walk_turn(walk, t, hz, ipd_m);
+    const host::EyeTurn turn = ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(t, 1.0 / hz), ipd_m);
     const host::RegionScheduler::Step st = sched.step(head, true);
     for (size_t i = 0; i < seg.scene.objects.size(); ++i) {  // each piece's memory this frame, once
       memory_of[i] = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
@@ -615,11 +615,12 @@ Plan make_plan(const PlanRequest& r) {
   const host::WalkPath walk = hs.make_walk();
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
   const double ipd_m = r.base.timing.eyes > 1 ? r.memories.ipd_m : 0.0;  // (the run's rule: HostSimulation)
-  const MotionSamples ms = sample_motion(walk, hz, ipd_m);
+  if (r.head.motion.given() && !r.head.trace.empty()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  const MotionSamples ms = sample_motion(walk, r.head, hz, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
-  p.config.plan.motion_hash = host::walk_hash(walk);
+  p.config.plan.motion_hash = motion_hash(walk, r.head);
 
   // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
   progress(0.02, "measuring the display's pixel angles");
@@ -1101,7 +1102,7 @@ Plan make_plan(const PlanRequest& r) {
   if (r.weigh_regions && n > 0 && walk.speed() > 0) {
     progress(1.0, "weighing region priority rendering");
     for (const double size : {2.0, 4.0, 8.0})
-      p.regions.push_back(region_load(scene, walk, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
+      p.regions.push_back(region_load(scene, walk, r.head, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
     const RegionLoad* best = nullptr;
     for (const RegionLoad& R : p.regions)
       if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&
@@ -1224,6 +1225,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   std::string s = "# Plan for scene " + p.scene_name + "\n\n";
   s += "Scene: " + std::to_string(p.objects) + " objects, " + std::to_string(p.triangles) + " triangles (plan.scene_hash " +
        std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
+       (r.head.given() ? ", the head turning with " + r.head.describe() + " on top" : "") +
        ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
        std::to_string(p.config.plan.motion_hash) + "). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";

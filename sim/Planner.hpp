@@ -24,6 +24,7 @@
 
 #include "CompositionDepth.hpp"
 #include "HardwareCost.hpp"
+#include "HeadMotion.hpp"
 #include "RunSpec.hpp"
 #include "host/cubemap/CubeMapImages.hpp"
 #include "rtl_model/datapath/ArpConfig.hpp"
@@ -36,6 +37,9 @@ struct PlanRequest {
   MemoryContents memories;             // the scene (.scene is required)
   std::string walk;                    // "gallery" or a walk file (required; --speed 0: standing at its first point)
   std::optional<double> walk_speed;    // as run --speed
+  // The head's motion of its own, on top of facing where the walk goes (--motion, --trace; as a run turns the head):
+  // the turning the priority rule sees. Standing (--speed 0), the motion planned over is its span (standing_span_s).
+  HeadMotion head;
   double texel_error = 0;              // texels, max over the harness's samples (0: what `base` measures)
   std::optional<double> threshold_deg;  // theta_t (0: one texel at the planned face size; unset: base's memory.threshold_deg)
   std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"

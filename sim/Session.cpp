@@ -18,6 +18,7 @@
 
 #include "FrameImage.hpp"
 #include "HardwareCost.hpp"
+#include "HeadMotion.hpp"
 #include "PoseConversion.hpp"
 #include "TruthProbe.hpp"
 #include "common/AtomicFile.hpp"
@@ -281,8 +282,8 @@ host::WalkPath HostSpec::make_walk() const {
   return w;
 }
 
-// A configuration planned for one walk (plan.motion_hash) run over another
-// motion: said once, before the run. A run without a scene shows a cube map,
+// A configuration planned for one motion (plan.motion_hash: the walk, and the
+// head's own motion on it) run over another: said once, before the run. A run without a scene shows a cube map,
 // which the plan's walk has nothing to do with.
 void Session::warn_if_planned_for_another_motion() const {
   const int64_t planned = spec_.config.plan.motion_hash;
@@ -297,10 +298,13 @@ void Session::warn_if_planned_for_another_motion() const {
   }
   // A plan's tiles are bounded for its walk: another motion (a slower one puts objects in slower memories) draws outside them.
   const char* tiles = spec_.config.memory.tiles.empty() ? "" : " (its memory.tiles hold only the tiles that walk draws on: texels drawn outside them are lost)";
-  if (const int64_t h = host::walk_hash(*walk_); h != planned)
-    std::fprintf(stderr, "arpsim: warning: %s was planned for another walk (plan.motion_hash %lld)%s; walk %s at %g m/s "
-                         "hashes to %lld: run `arpsim plan` for it\n",
-                 cfg.c_str(), static_cast<long long>(planned), tiles, spec_.host.walk.c_str(), walk_->speed(), static_cast<long long>(h));
+  // (A live head's motion is not known before the run: the walk alone is compared.)
+  const HeadMotion head{spec_.motion, spec_.trace};
+  if (const int64_t h = motion_hash(*walk_, head); h != planned)
+    std::fprintf(stderr, "arpsim: warning: %s was planned for another motion (plan.motion_hash %lld)%s; walk %s at %g m/s%s "
+                         "hashes to %lld: run `arpsim plan` for it (with the same --motion or --trace)\n",
+                 cfg.c_str(), static_cast<long long>(planned), tiles, spec_.host.walk.c_str(), walk_->speed(),
+                 head.given() ? (", the head turning with " + head.describe()).c_str() : "", static_cast<long long>(h));
 }
 
 // memory.assignment against the scene: a name no object has is an error in a configuration written for this
@@ -419,8 +423,7 @@ Session::MorePoses Session::pose_source(bool consume) const {
 
 // On a walk the head faces where it goes, turning on top of that.
 void Session::face_walk(std::vector<tracker::PoseSample>& poses) const {
-  if (!walk_) return;
-  for (auto& p : poses) p.orientation = walk_->facing(seconds_of(p.time_ps)) * p.orientation;
+  if (walk_) sim::face_walk(*walk_, poses);
 }
 
 // The head's mean angular speed over each frame of the run, degrees per

@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <fstream>
 
 #include "TestSupport.hpp"
 #include "common/InputError.hpp"
+#include "common/Units.hpp"
 #include "host/motion/WalkPath.hpp"
 #include "host/priority/PriorityScheduler.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
@@ -939,8 +941,64 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     const size_t at = o.output.find(warn);
     ASSERT_NE(at, std::string::npos) << other << "\n" << o.output;
     EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
-    EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another walk"), std::string::npos) << o.output;
+    EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another motion"), std::string::npos) << o.output;
   }
+}
+
+// And the head's own motion on the walk (--motion, --trace): the same motion runs quietly, and so does the same
+// rotation about an axis written longer; no head motion, another rate, or a trace edited after the plan is said once.
+// A plan for the walk alone keeps the walk's hash (plans made before head motions were planned for still match).
+TEST(PlanCli, ThePlanKnowsItsHeadMotion) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -4]]})");
+  const std::string small = " --set display.h_active=160 --set display.v_active=120 --keep-widths --objects-only";
+  const std::string plan = kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small;
+  const auto walk_only = run_command(plan + " -o " + d.file("walk-only.json"));
+  ASSERT_EQ(walk_only.status, 0) << walk_only.output;
+  EXPECT_EQ(config::load_file(d.file("walk-only.json")).plan.motion_hash, host::walk_hash(host::load_walk_file(d.file("walk.json"))));
+  const auto turning = run_command(plan + " --motion rotate --rate 30 -o " + d.file("turning.json"));
+  ASSERT_EQ(turning.status, 0) << turning.output;
+  EXPECT_NE(read_text(d.file("turning.md")).find("the head turning with synthetic rotate at 30 deg/s about 0,1,0"), std::string::npos);
+  const int64_t hash = config::load_file(d.file("turning.json")).plan.motion_hash;
+  EXPECT_NE(hash, config::load_file(d.file("walk-only.json")).plan.motion_hash);
+  const std::string run = kArpsim + " run -q --frames 1 --every 0 --scene " + d.file("far.json") + " --walk " + d.file("walk.json");
+  const std::string warn = " was planned for another motion";
+  for (const std::string& same : {std::string(" --motion rotate --rate 30"), std::string(" --motion rotate --rate 30 --axis 0,2,0")}) {
+    const auto o = run_command(run + " --config " + d.file("turning.json") + same);
+    ASSERT_EQ(o.status, 0) << same << "\n" << o.output;
+    EXPECT_EQ(o.output.find(warn), std::string::npos) << same << "\n" << o.output;
+  }
+  for (const std::string& other : {std::string(""), std::string(" --motion rotate --rate 31"), std::string(" --motion shake")}) {
+    const auto o = run_command(run + " --config " + d.file("turning.json") + other);
+    ASSERT_EQ(o.status, 0) << other << "\n" << o.output;
+    const size_t at = o.output.find(warn);
+    ASSERT_NE(at, std::string::npos) << other << "\n" << o.output;
+    EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
+    EXPECT_NE(o.output.find("hashes to"), std::string::npos) << o.output;
+  }
+  // A plan for the walk alone, run with a head motion: said too.
+  const auto added = run_command(run + " --config " + d.file("walk-only.json") + " --motion rotate --rate 30");
+  ASSERT_EQ(added.status, 0) << added.output;
+  EXPECT_NE(added.output.find(warn), std::string::npos) << added.output;
+  // A trace: its bytes are the motion.
+  const auto synth = run_command(kArpsim + " tracker synth --motion shake --seconds 6 -o " + d.file("shake.csv"));
+  ASSERT_EQ(synth.status, 0) << synth.output;
+  const auto traced = run_command(plan + " --trace " + d.file("shake.csv") + " -o " + d.file("traced.json"));
+  ASSERT_EQ(traced.status, 0) << traced.output;
+  EXPECT_NE(config::load_file(d.file("traced.json")).plan.motion_hash, hash);
+  const auto same_trace = run_command(run + " --config " + d.file("traced.json") + " --trace " + d.file("shake.csv"));
+  ASSERT_EQ(same_trace.status, 0) << same_trace.output;
+  EXPECT_EQ(same_trace.output.find(warn), std::string::npos) << same_trace.output;
+  std::ofstream(d.file("shake.csv"), std::ios::app) << "6.5,1,0,0,0\n";
+  const auto edited = run_command(run + " --config " + d.file("traced.json") + " --trace " + d.file("shake.csv"));
+  ASSERT_EQ(edited.status, 0) << edited.output;
+  EXPECT_NE(edited.output.find(warn), std::string::npos) << edited.output;
+  // Both at once: refused, as run refuses them.
+  const auto both = run_command(plan + " --trace " + d.file("shake.csv") + " --motion rotate -o " + d.file("both.json"));
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.output.find("--trace: give either --trace or --motion, not both"), std::string::npos) << both.output;
+  EXPECT_FALSE(std::filesystem::exists(d.file("both.json")));
 }
 
 // A ball 20 m ahead and a 4 m walk toward it (far.json, walk.json in `d`), planned for a small display
@@ -1617,18 +1675,32 @@ TEST(Planner, TheAssignmentIsWhereTheRulePutsEachObjectAndBindsOnlyWhenEdited) {
 // (nothing held either way), and some ball's range reaches a faster memory than walking straight past it
 // would: at the corner, and the run held to the ranges of a rule blind to turning wants faster there. (Seen
 // failing with the plan's replay given no turning: object-frames held slower; and with the run's given none.)
-TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
-  TempDir d;
-  write(d.file("balls.json"), R"({"name": "corner", "objects": [
-    {"name": "near", "sphere": 0.3, "position": [1.5, 1.6, -2]},
-    {"name": "mid", "sphere": 0.3, "position": [-3, 1.6, -6]},
-    {"name": "far", "sphere": 0.3, "position": [-9, 1.6, 2]}]})");
-  write(d.file("corner.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3], [3, 1.6, -3]]})");
-  PlanRequest r = request(d.file("balls.json"), d.file("corner.json"));
-  r.base = small_display_60hz();  // (a frame of turning at a corner is then about the default's)
+// Three 0.3 m balls named near, mid and far at `positions` (balls.json in `d`) and a walk (`walk_name` in `d`), planned
+// at 60 Hz (a frame of turning at a corner is then about the default's) at theta_t 0.5 deg, the starting widths kept,
+// whole faces.
+PlanRequest three_balls(TempDir& d, const std::string& positions, const std::string& walk_name, const std::string& walk) {
+  std::string objs;
+  const char* names[] = {"near", "mid", "far"};
+  std::istringstream in(positions);
+  for (int i = 0; i < 3; ++i) {
+    std::string at;
+    std::getline(in, at, ';');
+    objs += std::string(i ? ", " : "") + R"({"name": ")" + names[i] + R"(", "sphere": 0.3, "position": )" + at + "}";
+  }
+  write(d.file("balls.json"), R"({"name": "balls", "objects": [)" + objs + "]}");
+  write(d.file(walk_name), walk);
+  PlanRequest r = request(d.file("balls.json"), d.file(walk_name));
+  r.base = small_display_60hz();
   r.threshold_deg = 0.5;
   r.size_widths = false;
   r.tile_sparse = false;
+  return r;
+}
+
+TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
+  TempDir d;
+  PlanRequest r = three_balls(d, "[1.5, 1.6, -2]; [-3, 1.6, -6]; [-9, 1.6, 2]", "corner.json",
+                              R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -3], [3, 1.6, -3]]})");
   const Plan p = make_plan(r);
   ASSERT_GT(p.config.memory.count, 1);
   std::ofstream(d.file("plan.json")) << config::to_json(p.config).dump(2);
@@ -1674,6 +1746,81 @@ TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
                               d.file("blind.json") + " --scene " + d.file("balls.json") + " --walk " + d.file("corner.json") + " --report " + j);
   ASSERT_EQ(ob.status, 0) << ob.output;
   EXPECT_GT(test::load_json(j)["host"]["object_frames_held_slower_by_assignment"].get<int64_t>(), 0);
+}
+
+// The memory a plan updates `object` in, slowest (memory 0 with one memory): its period, in display frames.
+int64_t slowest_period_frames(const Plan& p, const std::string& object) {
+  const dp::MemoryConfig& m = p.config.memory;
+  int slowest = 0;
+  std::vector<dp::ObjectAssignment> a;
+  std::string why;
+  if (!dp::object_assignments(m, a, why)) ADD_FAILURE() << why;
+  for (const dp::ObjectAssignment& o : a)
+    if (o.name == object) slowest = o.slowest;
+  return dp::update_period_frames(m.update_frames, m.update_ratio, slowest);
+}
+
+// Standing still, nothing changes: one memory. Turning, the eyes move (IPD/2 either side of the head's centre): a
+// ball d = 1.5 m ahead has shifted by theta_t once an eye has moved x = 2 d sin(theta_t / 2) (Regan & Pose's
+// translational validity) at omega IPD / 2, its speed on the circle it turns on; the plan for that turning must
+// update the ball at least every x / (omega IPD / 2): 18.7 frames at 300 deg/s, 2 deg, 60 Hz.
+TEST(Planner, AHeadTurningStandingStillIsUpdatedAsItsEyesMove) {
+  TempDir d;
+  write(d.file("ball.json"), R"({"name": "ahead", "objects": [{"name": "ball", "sphere": 0.3, "position": [0, 1.6, -1.5]}]})");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  PlanRequest r = request(d.file("ball.json"), d.file("walk.json"));
+  r.base = small_display_60hz();
+  r.walk_speed = 0;
+  r.threshold_deg = 2;
+  r.size_widths = false;
+  const Plan still = make_plan(r);
+  r.head.motion.motion = "rotate";
+  r.head.motion.rate = 300;
+  const Plan turning = make_plan(r);
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const double x = 2 * 1.5 * std::sin(deg_to_rad(2.0) / 2), eye_speed = deg_to_rad(300.0) * MemoryContents{}.ipd_m / 2;
+  const double need_frames = x / eye_speed * hz;
+  ASSERT_NEAR(need_frames, 18.7, 0.05);
+  EXPECT_EQ(still.config.memory.count, 1);
+  EXPECT_GT(static_cast<double>(slowest_period_frames(still, "ball")), need_frames);
+  EXPECT_LE(static_cast<double>(slowest_period_frames(turning, "ball")), need_frames);
+  // Over the rotation's second (standing_span_s), every frame's turn.
+  EXPECT_NEAR(turning.motion_s, 1.0, 1e-9);
+  EXPECT_EQ(turning.samples, static_cast<int>(hz) + 1);
+  EXPECT_NE(turning.config.plan.motion_hash, still.config.plan.motion_hash);
+}
+
+// With a head motion of its own on the walk, the plan replays the turning the run's rule sees (the motion generated
+// as a run generates it): a run over that motion keeps within the plan's assignment, where a run of the plan made for
+// the walk alone, with the same head motion, wants faster memories than its assignment holds.
+TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesWithTheHeadsOwnMotion) {
+  TempDir d;
+  // Slow enough that the head's shake, not the walk, moves the eyes most: up to 600 deg/s x 32 mm, 0.34 m/s.
+  PlanRequest r = three_balls(d, "[1.5, 1.6, -1]; [-3, 1.6, -2]; [-6, 1.6, 1]", "walk.json",
+                              R"({"speed": 0.25, "points": [[0, 1.6, 0], [0, 1.6, -0.75]]})");
+  const Plan walk_only = make_plan(r);
+  r.head.motion.motion = "shake";
+  r.head.motion.peak = 600;
+  const Plan shaken = make_plan(r);
+  ASSERT_GT(walk_only.config.memory.count, 1);
+  ASSERT_GT(shaken.config.memory.count, 1);
+  const std::string j = d.file("report.json");
+  const int frames = static_cast<int>(2.9 * dp::VideoTiming(r.base.timing).refresh_hz());  // the walk, once (it loops at 3 s)
+  auto run = [&](const Plan& p) {
+    std::ofstream(d.file("plan.json")) << config::to_json(p.config).dump(2);
+    const auto o = run_command(kArpsim + " run -q --frames " + std::to_string(frames) + " --every 0 --error-every 0 --config " +
+                               d.file("plan.json") + " --scene " + d.file("balls.json") + " --walk " + d.file("walk.json") +
+                               " --motion shake --peak 600 --report " + j);
+    EXPECT_EQ(o.status, 0) << o.output;
+    return std::make_pair(test::load_json(j)["host"], o.output);
+  };
+  const auto [as_planned, said] = run(shaken);
+  EXPECT_EQ(as_planned["object_frames_held_slower_by_assignment"], 0) << shaken.config.memory.assignment.size();
+  EXPECT_EQ(as_planned["object_frames_held_faster_by_assignment"], 0);
+  EXPECT_EQ(said.find("planned for another motion"), std::string::npos) << said;
+  const auto [walk_planned, walk_said] = run(walk_only);
+  EXPECT_GT(walk_planned["object_frames_held_slower_by_assignment"].get<int64_t>(), 0);
+  EXPECT_NE(walk_said.find("planned for another motion"), std::string::npos) << walk_said;
 }
 
 // Objects of one name share one string: its range is the union of theirs, as the same scene with the two

@@ -94,7 +94,6 @@ std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, d
   return generate(axis, pendulum_angle(amplitude_deg, period_s), s);
 }
 
-namespace {
 glm::dvec3 parse_axis(const std::string& s) {
   std::stringstream ss(s);
   glm::dvec3 v(0.0);
@@ -105,7 +104,6 @@ glm::dvec3 parse_axis(const std::string& s) {
     throw InputError("--axis", "", "the rotation axis must be finite and non-zero");
   return v;
 }
-}  // namespace
 
 std::vector<PoseSample> MotionSpec::make(double start_s, double seconds) const {
   MotionGenerator g = generator(start_s, seconds);

@@ -61,6 +61,9 @@ std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, d
 
 // Synthetic head motion described as data (what `--motion` and its options
 // say): which motion, its parameters, and the sampling.
+// "x,y,z" (--axis) as a vector; InputError naming --axis unless three finite numbers, not all zero.
+glm::dvec3 parse_axis(const std::string& s);
+
 struct MotionSpec {
   std::string motion;        // rotate, shake, pendulum; empty: none
   std::string axis = "0,1,0";  // head-frame axis, x,y,z

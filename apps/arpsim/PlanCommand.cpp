@@ -5,6 +5,7 @@
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
+#include "MotionOptions.hpp"
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
 #include "host/cubemap/ImageFiles.hpp"
@@ -29,7 +30,7 @@ int run_plan(PlanArgs& a) {
   const std::string tiles = std::filesystem::path(a.out).replace_extension(".tiles.png").string();
   check_output_paths({{"--out", a.out}, {"--out's account", md}, {"--out's tile picture", tiles}},
                      {{"--config", a.cfg.file}, {"--walk", r.walk == "gallery" ? "" : r.walk},
-                      {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}});
+                      {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}, {"--trace", r.head.trace}});
   ProgressLine progress("plan", !a.quiet);
   r.progress = [&](double f, const std::string& w) { progress.update(f, w); };
   const sim::Plan p = sim::make_plan(r);
@@ -53,6 +54,11 @@ Runner add_plan_command(CLI::App& app) {
   // Only the scene: the plan is made for a walk, not for a cube map, a position or a renderer.
   cmd->add_option("--scene", a->req.memories.scene, "The scene to plan for: a scene file (docs/host.md) or 'gallery'")->required();
   add_walk_options(*cmd, a->req.walk, a->req.walk_speed, a->req.threshold_deg);
+  // The head's own turning on the walk, as `run` takes it: the priority rule sees the eyes move as the head turns.
+  add_motion_options(*cmd, a->req.head.motion, false);
+  cmd->add_option("--trace", a->req.head.trace,
+                  "A recorded head motion on top of the walk (CSV, docs/tracker.md), from the walk's start; standing (--speed 0) "
+                  "the plan covers the trace to its last sample");
   cmd->add_option("--texel-error", a->req.texel_error,
                   "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
       ->capture_default_str();

@@ -195,8 +195,9 @@ ParameterTable<ArpConfig> make_parameters() {
   t.number("plan.scene_hash", [](auto& c) -> auto& { return c.plan.scene_hash; }, 0, INT64_MAX, "",
            "hash of the scene this configuration was planned for (0: not planned); a run with another scene warns once");
   t.number("plan.motion_hash", [](auto& c) -> auto& { return c.plan.motion_hash; }, 0, INT64_MAX, "",
-           "hash of the walk (points and speed) this configuration was planned for (0: not planned); a run with "
-           "another walk, or with a scene and no walk, warns once");
+           "hash of the motion this configuration was planned for: the walk (points and speed) and the head's own "
+           "motion on it, if any (--motion, --trace) (0: not planned); a run with another, or with a scene and no walk, "
+           "warns once");
   return t;
 }
 

@@ -155,7 +155,7 @@ struct HostEngineConfig {
 // What `arpsim plan` records of the scene and motion it planned for.
 struct PlanRecord {
   int64_t scene_hash = 0;   // host::scene_hash of the scene (0: not planned)
-  int64_t motion_hash = 0;  // host::walk_hash of the walk (0: not planned)
+  int64_t motion_hash = 0;  // sim::motion_hash of the walk and the head motion on it (0: not planned)
 };
 
 struct PipelineConfig {

@@ -1,0 +1,120 @@
+#include "HeadMotion.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <fstream>
+
+#include "PoseConversion.hpp"
+#include "common/Fingerprint.hpp"
+#include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
+#include "common/Units.hpp"
+#include "tracker/TraceFile.hpp"
+
+namespace arp::sim {
+
+std::string HeadMotion::describe() const {
+  if (!trace.empty()) return "trace " + trace;
+  if (!motion.given()) return "";
+  const tracker::MotionSpec& m = motion;
+  const std::string about = " about " + m.axis;
+  if (m.motion == "rotate") return "synthetic rotate at " + printf_text("%g", m.rate) + " deg/s" + about;
+  if (m.motion == "shake")
+    return "synthetic shake at " + printf_text("%g", m.peak) + " deg/s peak, " + printf_text("%g", m.frequency) + " Hz" + about;
+  return "synthetic pendulum of " + printf_text("%g", m.amplitude) + " deg, " + printf_text("%g", m.period) + " s" + about;
+}
+
+void face_walk(const host::WalkPath& walk, std::vector<tracker::PoseSample>& poses) {
+  for (auto& p : poses) p.orientation = walk.facing(static_cast<double>(p.time_ps) * 1e-12) * p.orientation;
+}
+
+int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
+  const int64_t of_walk = host::walk_hash(walk);
+  if (!head.given()) return of_walk;
+  Fingerprint h;
+  h.add(static_cast<uint64_t>(of_walk));
+  if (!head.trace.empty()) {
+    std::ifstream in(head.trace, std::ios::binary);
+    if (!in) throw InputError(head.trace, "", "cannot be read (the trace a plan's motion is hashed from)");
+    h.add(std::string("trace"));
+    std::string chunk(1 << 16, '\0');
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+      h.add(chunk.substr(0, static_cast<size_t>(in.gcount())));
+    return h.key();
+  }
+  const tracker::MotionSpec& m = head.motion;
+  const glm::dvec3 axis = glm::normalize(tracker::parse_axis(m.axis));  // "0,2,0" turns as "0,1,0" does
+  h.add(m.motion).add(axis.x).add(axis.y).add(axis.z).add(m.hz).add(m.noise);
+  if (m.noise > 0) h.add(m.seed);
+  if (m.motion == "rotate") h.add(m.rate);
+  else if (m.motion == "shake") h.add(m.peak).add(m.frequency);
+  else h.add(m.amplitude).add(m.period);
+  return h.key();
+}
+
+double standing_span_s(const HeadMotion& head) {
+  if (!head.trace.empty()) {
+    const std::vector<tracker::PoseSample> poses = tracker::read_trace_csv(head.trace);
+    return poses.empty() ? 0.0 : std::max(0.0, static_cast<double>(poses.back().time_ps) * 1e-12);
+  }
+  if (!head.motion.given()) return 0.0;
+  if (head.motion.motion == "shake") return head.motion.frequency > 0 ? 1.0 / head.motion.frequency : 0.0;
+  if (head.motion.motion == "pendulum") return head.motion.period;
+  return 1.0;
+}
+
+HeadTurnRate::HeadTurnRate(const host::WalkPath& walk, const HeadMotion& head, double span_s)
+    : walk_(walk), given_(head.given()) {
+  if (!given_) return;
+  const double end_s = std::min(span_s + 1.01, tracker::kPoseTimeLimitS);
+  if (!head.trace.empty()) {
+    source_ = head.trace;
+    // As a run from frame 0 reads its window: a second before the first frame (and the sample held then) on.
+    trace_ = tracker::read_trace_csv(head.trace, {-kPsPerSecond, static_cast<int64_t>(std::llround(end_s * 1e12))});
+    if (trace_.empty()) throw InputError(head.trace, "", "holds no sample over the motion planned for (0 .. " + printf_text("%g", span_s) + " s)");
+  } else {
+    source_ = "synthetic " + head.motion.motion;
+    // (The generator's own limit names its --seconds, which plan has not got.)
+    if ((end_s + 1.0) * head.motion.hz > 1e8)
+      throw InputError("--motion", head.motion.motion,
+                       "the motion planned over lasts " + printf_text("%.4g", span_s) + " s: more than 1e8 samples at --hz " +
+                           printf_text("%g", head.motion.hz) + " (a faster or shorter walk, or a lower --hz)");
+    // As a run from frame 0 generates it: from a second before the first frame (the noise in the same order).
+    generator_ = std::make_unique<tracker::MotionGenerator>(head.motion.generator(-1.0, end_s + 1.0));
+  }
+}
+
+void HeadTurnRate::extend_through(int64_t t_ps) {
+  if (done_ || (started_ && last_ps_ > t_ps)) return;
+  std::vector<tracker::PoseSample> more;
+  if (generator_) {
+    generator_->take_through(t_ps, more);
+    done_ = generator_->done();
+  } else {
+    more = std::move(trace_);
+    trace_.clear();
+    done_ = true;
+  }
+  if (more.empty()) return;
+  face_walk(walk_, more);
+  last_ps_ = more.back().time_ps;
+  if (!started_) stream_ = dp::OrientationStream(to_orientation_samples(more), source_);
+  else stream_.append(to_orientation_samples(more), source_);
+  started_ = true;
+}
+
+double HeadTurnRate::at(double t_s, double dt_s) {
+  if (!given_) return host::facing_turn_rate_rad_s(walk_, t_s, dt_s, 0.0);
+  auto head = [this](double s) {  // the orientation held at s, as the run's host reads its stream
+    const int64_t s_ps = static_cast<int64_t>(std::llround(s * 1e12));
+    extend_through(s_ps);
+    const dp::Quat& q = stream_[stream_.index_at(s_ps)].q;
+    return glm::dquat(q.w, q.x, q.y, q.z);
+  };
+  const double rate = host::turn_rate_rad_s(head, t_s, dt_s);
+  if (started_) stream_.discard_before(static_cast<int64_t>(std::llround((t_s - dt_s) * 1e12)));
+  return rate;
+}
+
+}  // namespace arp::sim
