@@ -3,11 +3,11 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
-#include <fstream>
 
 #include "PoseConversion.hpp"
 #include "common/Fingerprint.hpp"
 #include "common/InputError.hpp"
+#include "common/InputFile.hpp"
 #include "common/PrintfText.hpp"
 #include "common/Units.hpp"
 #include "tracker/TraceFile.hpp"
@@ -26,7 +26,7 @@ std::string HeadMotion::describe() const {
 }
 
 void face_walk(const host::WalkPath& walk, std::vector<tracker::PoseSample>& poses) {
-  for (auto& p : poses) p.orientation = walk.facing(static_cast<double>(p.time_ps) * 1e-12) * p.orientation;
+  for (auto& p : poses) p.orientation = walk.facing(ps_to_seconds(p.time_ps)) * p.orientation;
 }
 
 int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
@@ -35,12 +35,14 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
   Fingerprint h;
   h.add(static_cast<uint64_t>(of_walk));
   if (!head.trace.empty()) {
-    std::ifstream in(head.trace, std::ios::binary);
-    if (!in) throw InputError(head.trace, "", "cannot be read (the trace a plan's motion is hashed from)");
     h.add(std::string("trace"));
+    // Standard input is read once, by the run: it is no file a plan was made from (plan refuses it).
+    if (head.trace == "-") return h.add(std::string("standard input")).key();
+    // A regular file only (a FIFO or a device would block or never end), as the trace reader takes it.
+    const std::unique_ptr<std::istream> in = open_input_stream(head.trace, "trace file");
     std::string chunk(1 << 16, '\0');
-    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
-      h.add(chunk.substr(0, static_cast<size_t>(in.gcount())));
+    while (in->read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in->gcount() > 0)
+      h.add(chunk.substr(0, static_cast<size_t>(in->gcount())));
     return h.key();
   }
   const tracker::MotionSpec& m = head.motion;
@@ -56,11 +58,18 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
 double standing_span_s(const HeadMotion& head) {
   if (!head.trace.empty()) {
     const std::vector<tracker::PoseSample> poses = tracker::read_trace_csv(head.trace);
-    return poses.empty() ? 0.0 : std::max(0.0, static_cast<double>(poses.back().time_ps) * 1e-12);
+    return poses.empty() ? 0.0 : std::max(0.0, ps_to_seconds(poses.back().time_ps));
   }
   if (!head.motion.given()) return 0.0;
-  if (head.motion.motion == "shake") return head.motion.frequency > 0 ? 1.0 / head.motion.frequency : 0.0;
-  if (head.motion.motion == "pendulum") return head.motion.period;
+  const tracker::MotionSpec& m = head.motion;
+  if (m.motion == "shake") {
+    if (!(m.frequency > 0) || !std::isfinite(m.frequency)) throw InputError("--frequency", "", "must be positive");
+    return 1.0 / m.frequency;
+  }
+  if (m.motion == "pendulum") {
+    if (!(m.period > 0) || !std::isfinite(m.period)) throw InputError("--period", "", "must be positive");
+    return m.period;
+  }
   return 1.0;
 }
 
@@ -71,15 +80,14 @@ HeadTurnRate::HeadTurnRate(const host::WalkPath& walk, const HeadMotion& head, d
   if (!head.trace.empty()) {
     source_ = head.trace;
     // As a run from frame 0 reads its window: a second before the first frame (and the sample held then) on.
-    trace_ = tracker::read_trace_csv(head.trace, {-kPsPerSecond, static_cast<int64_t>(std::llround(end_s * 1e12))});
-    if (trace_.empty()) throw InputError(head.trace, "", "holds no sample over the motion planned for (0 .. " + printf_text("%g", span_s) + " s)");
+    trace_ = tracker::read_trace_csv(head.trace, {-kPsPerSecond, seconds_to_ps(end_s)});
   } else {
     source_ = "synthetic " + head.motion.motion;
     // (The generator's own limit names its --seconds, which plan has not got.)
     if ((end_s + 1.0) * head.motion.hz > 1e8)
       throw InputError("--motion", head.motion.motion,
                        "the motion planned over lasts " + printf_text("%.4g", span_s) + " s: more than 1e8 samples at --hz " +
-                           printf_text("%g", head.motion.hz) + " (a faster or shorter walk, or a lower --hz)");
+                           printf_text("%g", head.motion.hz) + " (a shorter motion, or a lower --hz)");
     // As a run from frame 0 generates it: from a second before the first frame (the noise in the same order).
     generator_ = std::make_unique<tracker::MotionGenerator>(head.motion.generator(-1.0, end_s + 1.0));
   }
@@ -107,13 +115,13 @@ void HeadTurnRate::extend_through(int64_t t_ps) {
 double HeadTurnRate::at(double t_s, double dt_s) {
   if (!given_) return host::facing_turn_rate_rad_s(walk_, t_s, dt_s, 0.0);
   auto head = [this](double s) {  // the orientation held at s, as the run's host reads its stream
-    const int64_t s_ps = static_cast<int64_t>(std::llround(s * 1e12));
+    const int64_t s_ps = seconds_to_ps(s);
     extend_through(s_ps);
     const dp::Quat& q = stream_[stream_.index_at(s_ps)].q;
     return glm::dquat(q.w, q.x, q.y, q.z);
   };
   const double rate = host::turn_rate_rad_s(head, t_s, dt_s);
-  if (started_) stream_.discard_before(static_cast<int64_t>(std::llround((t_s - dt_s) * 1e12)));
+  if (started_) stream_.discard_before(seconds_to_ps(t_s - dt_s));
   return rate;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
 #include "host/cubemap/CubeMapLoader.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
@@ -18,6 +19,11 @@
 
 namespace arp::sim {
 
+double MemoryContents::checked_ipd_m() const {
+  if (!(ipd_m >= 0) || ipd_m > 1) throw InputError("--ipd", printf_text("%g", ipd_m), "must be 0 .. 1 m");
+  return ipd_m;
+}
+
 void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads) const {
   check_renderer(*this, mem.format().depth_bits);
   if (scene.empty()) {
@@ -26,7 +32,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
     return;
   }
   if (!std::isfinite(time_s) || std::abs(time_s) > 1e7) throw InputError("--time", "", "must be finite, within 1e7 s");
-  if (!(ipd_m >= 0) || ipd_m > 1) throw InputError("--ipd", "", "must be 0 .. 1 m");
+  const double ipd = checked_ipd_m();
   const host::Scene sc = load_scene();
   glm::dvec3 p = host::gallery_walk().front();
   if (!position.empty()) {
@@ -43,7 +49,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
   const auto render = make_bank_renderer(renderer, threads, face_culling);
   for (int e = 0; e < mem.eyes(); ++e) {
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
-    render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd_m), bank, nullptr);
+    render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd), bank, nullptr);
     bank.vblank();
   }
   source = "scene " + sc.name + " (" + std::to_string(sc.objects.size()) + " objects, " +

@@ -36,6 +36,9 @@ struct MemoryContents {
   void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads = 0) const;
   // The scene named by `scene` (notes about stand-ins, and a plan made for another scene, go to stderr).
   host::Scene load_scene() const;
+  // ipd_m, checked: InputError naming --ipd unless 0 .. 1 m. Every user of the eyes' distance (the memories filled
+  // here, a walk's host, a plan) takes it through this.
+  double checked_ipd_m() const;
 };
 
 }  // namespace arp::sim

@@ -122,7 +122,8 @@ struct MotionSamples {
 // head motion's: standing_span_s), at most kMaxSamples of them, and at each the eyes' turning as a run's rule takes
 // it (HostSimulation::eye_turn_at): the head's turn over the frame before, from the walk's facing and the head
 // motion (HeadTurnRate), for eyes ipd_m apart (0: one eye, no turn).
-MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, double hz, double ipd_m) {
+MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, const dp::VideoTiming& vt, double ipd_m) {
+  const double hz = vt.refresh_hz();
   MotionSamples m;
   m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : standing_span_s(head);
   // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
@@ -131,7 +132,7 @@ MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, 
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
   HeadTurnRate rate(walk, head, m.span_s);
   for (int64_t f = 0; f < frames; f += step) {
-    m.t.push_back(static_cast<double>(f) / hz);
+    m.t.push_back(vt.frame_start_s(f));  // (as a run's host is told it: the frame's whole picosecond)
     m.turn.push_back(ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(m.t.back(), 1.0 / hz), ipd_m));
   }
   m.step_s = static_cast<double>(step) / hz;
@@ -190,10 +191,10 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
 
 // What drawing object `o` at time t for one eye at `head` costs the engine (RenderStats): its set-up, its triangles
 // once for every face its bound reaches -- by the renderers' culling test (host::sphere_meets_face, as
-// host::cull_to_faces sends them) with the bound shrunk by half the default distance between the eyes, what the
-// shrunk sphere meets from `head` the whole one meets from either eye -- and one face at least, and `fill` texels.
-host::RenderStats drawing(const host::SceneObject& o, double t, const glm::dvec3& head, int64_t fill) {
-  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * MemoryContents{}.ipd_m;
+// host::cull_to_faces sends them) with the bound shrunk by half the distance between the eyes, what the shrunk
+// sphere meets from `head` the whole one meets from either eye -- and one face at least, and `fill` texels.
+host::RenderStats drawing(const host::SceneObject& o, double t, const glm::dvec3& head, double ipd_m, int64_t fill) {
+  const double near_m = host::DepthCode{}.near_m, half_ipd = 0.5 * ipd_m;
   const host::Sphere b = o.world_bound(t);
   int faces = 0;
   for (int f = 0; f < 6; ++f) faces += host::sphere_meets_face(b.center - head, b.radius - half_ipd, f, near_m) ? 1 : 0;
@@ -205,18 +206,17 @@ host::RenderStats drawing(const host::SceneObject& o, double t, const glm::dvec3
 }
 
 // Engine seconds per update of each object at each sample (k * objects + i): drawing() it for each eye from the
-// walk's point, with its fill (measure_fill). (See LadderLoad::engine_busy.) The eyes are the default distance
-// apart (`plan` has no --ipd, as for the faces below): a run with wider eyes can send an object to a face this
-// count leaves out.
+// walk's point, with its fill (measure_fill). (See LadderLoad::engine_busy.) The eyes are ipd_m apart (--ipd): a
+// run with wider eyes can send an object to a face this count leaves out.
 std::vector<double> engine_seconds(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
-                                   const dp::HostEngineConfig& config, int eyes, const FillSamples& fill) {
+                                   const dp::HostEngineConfig& config, int eyes, double ipd_m, const FillSamples& fill) {
   const host::RenderEngine engine(config);  // the run's own cost of a render
   const size_t n = scene.objects.size();
   std::vector<double> out(ms.t.size() * n);
   for (size_t k = 0; k < ms.t.size(); ++k) {
     const glm::dvec3 head = walk.position(ms.t[k]);
     for (size_t i = 0; i < n; ++i)
-      out[k * n + i] = eyes * engine.seconds(drawing(scene.objects[i], ms.t[k], head, std::llround(fill.texels[k * n + i])));
+      out[k * n + i] = eyes * engine.seconds(drawing(scene.objects[i], ms.t[k], head, ipd_m, std::llround(fill.texels[k * n + i])));
   }
   return out;
 }
@@ -490,10 +490,11 @@ int64_t bytes_as_planned(dp::ArpConfig c, const TileBound& b, bool tile_sparse, 
 // frame of the motion as if every memory were free to render, each update rendering the pieces of that
 // memory for each eye, sent to every face their bound reaches (the engine's cost of set-up and triangles).
 RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, const HeadMotion& head_motion, const MotionSamples& ms,
-                       double hz, double threshold_rad,
+                       const dp::VideoTiming& vt, double threshold_rad,
                        int count, int S, double size_m, const dp::HostEngineConfig& config, int eyes, double ipd_m,
                        const FillSamples& fill) {
   RegionLoad out;
+  const double hz = vt.refresh_hz();
   out.size_m = size_m;
   out.margin_m = host::swept_margin_m(size_m);
   std::unique_ptr<host::RegionGrid> grid;
@@ -525,7 +526,7 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   HeadTurnRate rate(walk, head_motion, ms.span_s);
   int64_t late = 0;
   for (int64_t f = 0; f < frames; ++f) {
-    const double t = static_cast<double>(f) / hz;
+    const double t = vt.frame_start_s(f);
     const glm::dvec3 head = walk.position(t);
     const host::EyeTurn turn = ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(t, 1.0 / hz), ipd_m);
     const host::RegionScheduler::Step st = sched.step(head, true);
@@ -542,7 +543,7 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
         // Its fill: its object's at the sample at or before (measure_fill), by its share of the pieces' triangles.
         const size_t src = seg.source[i], k = std::min(samples - 1, static_cast<size_t>(f / step));
         const host::RenderStats drawn = drawing(
-            o, t, head, std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) / std::max(1.0, piece_triangles[src])));
+            o, t, head, ipd_m, std::llround(fill.texels[k * n + src] * static_cast<double>(o.mesh->triangles()) / std::max(1.0, piece_triangles[src])));
         triangles += static_cast<double>(o.mesh->triangles());
         pieces += 1;
         sent += static_cast<double>(drawn.triangles);
@@ -613,10 +614,14 @@ Plan make_plan(const PlanRequest& r) {
   hs.walk = r.walk;
   hs.walk_speed = r.walk_speed;
   const host::WalkPath walk = hs.make_walk();
-  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
-  const double ipd_m = r.base.timing.eyes > 1 ? r.memories.ipd_m : 0.0;  // (the run's rule: HostSimulation)
+  const dp::VideoTiming timing(r.base.timing);
+  const double hz = timing.refresh_hz();
+  const double ipd_given = r.memories.checked_ipd_m();                     // --ipd
+  const double ipd_m = r.base.timing.eyes > 1 ? ipd_given : 0.0;  // (the run's rule: HostSimulation)
   if (r.head.motion.given() && !r.head.trace.empty()) throw InputError("--trace", "", "give either --trace or --motion, not both");
-  const MotionSamples ms = sample_motion(walk, r.head, hz, ipd_m);
+  // Each pass of the plan reads the trace again: standard input can be read only once.
+  if (r.head.trace == "-") throw InputError("--trace", "-", "a plan reads the trace more than once: give it as a file");
+  const MotionSamples ms = sample_motion(walk, r.head, timing, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
@@ -703,7 +708,7 @@ Plan make_plan(const PlanRequest& r) {
   // walk's point, and the head moves up to a sample step between samples. (An animated object's own motion
   // between samples is not covered beyond that: the samples are display frames, or at most kMaxSamples.)
   const double near_m = host::DepthCode{}.near_m;
-  const double margin = 0.5 * MemoryContents{}.ipd_m + walk.speed() * ms.step_s;
+  const double margin = 0.5 * ipd_given + walk.speed() * ms.step_s;
   for (const double t : ms.t) {
     const glm::dvec3 head = walk.position(t);
     for (const host::SceneObject& o : scene.objects) {
@@ -740,7 +745,7 @@ Plan make_plan(const PlanRequest& r) {
   const int eyes = p.config.timing.eyes;
   const FillSamples fill = measure_fill(scene, walk, ms, S, [&](double f) { progress(0.96 + 0.02 * f, "measuring the fill"); });
   p.fill_points = fill.points;
-  const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, fill);
+  const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, ipd_m, fill);
   if (n == 0) {
     candidates.push_back(ladder_load(scene, walk, ms, hz, p.threshold_rad, 1, 1, 2, validity_s, engine_s, fill, eyes));
   } else {
@@ -841,7 +846,7 @@ Plan make_plan(const PlanRequest& r) {
           ? fill
           : measure_fill(scene, walk, ms, r.base.memory.face_size, [&](double f) { progress(0.98 + 0.01 * f, "measuring the fill"); });
   const std::vector<double> base_engine_s =
-      r.base.memory.face_size == S ? engine_s : engine_seconds(scene, walk, ms, engine, eyes, base_fill);
+      r.base.memory.face_size == S ? engine_s : engine_seconds(scene, walk, ms, engine, eyes, ipd_m, base_fill);
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
                                        r.base.memory.update_ratio, base_validity, base_engine_s, base_fill, eyes);
@@ -990,7 +995,7 @@ Plan make_plan(const PlanRequest& r) {
        scene.objects.empty() ? "the scene is empty: no face is ever written; the cube is kept whole (it shows the background)"
        : present == 6        ? "every face is reached by some object at some point of the motion"
                              : "faces " + p.config.memory.absent_face_names() +
-                                   " are never reached by any object's bounding sphere, grown by half the default distance between the eyes "
+                                   " are never reached by any object's bounding sphere, grown by half the distance between the eyes (--ipd) "
                                    "and a sample step, at any point of the motion (the renderers' face test, host::sphere_meets_face): "
                                    "left out of every memory, " +
                                    std::to_string(6 - present) + " of 6 faces' storage saved; a run that draws on them "
@@ -1047,7 +1052,7 @@ Plan make_plan(const PlanRequest& r) {
              printf_text("%.1f", static_cast<double>(p.memory_bytes_fixed_tiles) / 1048576.0) + " MiB so against " +
              printf_text("%.1f", static_cast<double>(p.memory_bytes_whole) / 1048576.0) + " MiB as whole faces" +
              (any_pool ? " (a memory with a tile pool below holds every tile instead: its pool bounds how many at once)" : "") +
-             ". A run of this plan, with the default distance between the eyes, object-level priority (no --baseline, "
+             ". A run of this plan, with the same distance between the eyes (--ipd), object-level priority (no --baseline, "
              "--regions) and the planned theta_t, draws within these (a texel drawn outside them is lost, counted in "
              "footprint.texels_lost_off_tiles, and the run warns); its report gives the tiles it drew on, every eye's banks "
              "together (footprint.display_memory_tiles_drawn_on)"});
@@ -1102,7 +1107,7 @@ Plan make_plan(const PlanRequest& r) {
   if (r.weigh_regions && n > 0 && walk.speed() > 0) {
     progress(1.0, "weighing region priority rendering");
     for (const double size : {2.0, 4.0, 8.0})
-      p.regions.push_back(region_load(scene, walk, r.head, ms, hz, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
+      p.regions.push_back(region_load(scene, walk, r.head, ms, timing, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
     const RegionLoad* best = nullptr;
     for (const RegionLoad& R : p.regions)
       if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&
@@ -1183,8 +1188,8 @@ Plan make_plan(const PlanRequest& r) {
                                 "table); by objects it carries the planned ladder: busy "
                               : std::string("it carries the planned ladder: busy ")) + printf_text("%.3g", p.planned.engine_busy) +
                            " s of each second (every object drawn for each eye at each update of its memory: its set-up, "
-                           "its triangles sent to every face its bound reaches from both eyes, the default " +
-                           printf_text("%.0f", 1000 * MemoryContents{}.ipd_m) + " mm apart, and its fill, " +
+                           "its triangles sent to every face its bound reaches from both eyes, " +
+                           printf_text("%.0f", 1000 * ipd_given) + " mm apart (--ipd), and its fill, " +
                            printf_text("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + printf_text("%.3g", engine.texels_per_s) +
                            ", measured by rendering the scene at " + std::to_string(fill.points) +
                            " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)"});
@@ -1227,7 +1232,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
        (r.head.given() ? ", the head turning with " + r.head.describe() + " on top" : "") +
        ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
-       std::to_string(p.config.plan.motion_hash) + "). Started from " + r.base_source + ".\n\n";
+       std::to_string(p.config.plan.motion_hash) + "), the eyes " + printf_text("%g", 1000 * r.memories.ipd_m) +
+       " mm apart (--ipd). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
   s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";

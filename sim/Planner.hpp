@@ -115,7 +115,7 @@ struct RegionLoad {
 };
 
 // The tiles of each planned memory that any of its objects can be drawn on over the motion (a bound for an
-// eye within half the default distance between the eyes of the walk's point, at the motion's samples).
+// eye within half the distance between the eyes (--ipd) of the walk's point, at the motion's samples).
 struct TileBound {
   int tiles_per_row = 0;
   // Per memory: the tiles reachable (none on a face the plan leaves out); the plan's memory.tiles when

@@ -44,8 +44,6 @@ int64_t plus_saturated(int64_t a, int64_t b) { return a > INT64_MAX - b ? INT64_
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-double seconds_of(int64_t ps) { return static_cast<double>(ps) * 1e-12; }
-
 // "A:B" -> two numbers; InputError naming the option otherwise.
 std::pair<double, double> parse_window(const std::string& opt, const std::string& s) {
   const auto colon = s.find(':');
@@ -358,9 +356,9 @@ void Session::build_motion() {
     trace_poses_ = std::make_shared<std::vector<tracker::PoseSample>>(std::move(poses));
   } else if (spec_.motion.given()) {
     // Synthetic motion keeps its sample times in double seconds; past the pose time limit it refuses to start.
-    if (seconds_of(start_ps_) - 1.0 > tracker::kPoseTimeLimitS)
+    if (ps_to_seconds(start_ps_) - 1.0 > tracker::kPoseTimeLimitS)
       throw InputError("--first-frame", std::to_string(spec_.first_frame),
-                       "starts " + std::to_string(static_cast<int64_t>(seconds_of(start_ps_))) +
+                       "starts " + std::to_string(static_cast<int64_t>(ps_to_seconds(start_ps_))) +
                            " s in; synthetic motion (--motion) covers the first " + tracker::pose_time_limit_text() +
                            ": use a trace or a still head");
     motion_source_ = "synthetic " + spec_.motion.motion;
@@ -398,7 +396,7 @@ Session::MorePoses Session::pose_source(bool consume) const {
   if (spec_.motion.given()) {
     // A second of margin before the first frame covers every lead; 10 ms after the last covers the sampling.
     auto g = std::make_shared<tracker::MotionGenerator>(
-        spec_.motion.generator(seconds_of(start_ps_) - 1.0, seconds_of(end_ps_ - start_ps_) + 1.01));
+        spec_.motion.generator(ps_to_seconds(start_ps_) - 1.0, ps_to_seconds(end_ps_ - start_ps_) + 1.01));
     return [g](int64_t through_ps, std::vector<tracker::PoseSample>& out) {
       g->take_through(through_ps, out);
       return g->done();
@@ -406,11 +404,11 @@ Session::MorePoses Session::pose_source(bool consume) const {
   }
   if (!walk_) return {};
   // A still head on the walk: sampled at 1 kHz (the walk turns it, face_walk).
-  const double t1 = seconds_of(end_ps_) + 0.01;
-  return [tt = seconds_of(start_ps_) - 1.0, t1](int64_t through_ps, std::vector<tracker::PoseSample>& out) mutable {
+  const double t1 = ps_to_seconds(end_ps_) + 0.01;
+  return [tt = ps_to_seconds(start_ps_) - 1.0, t1](int64_t through_ps, std::vector<tracker::PoseSample>& out) mutable {
     for (; tt <= t1; tt += 1e-3) {
       tracker::PoseSample p;
-      p.time_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+      p.time_ps = seconds_to_ps(tt);
       out.push_back(p);
       if (p.time_ps > through_ps) {
         tt += 1e-3;
@@ -450,7 +448,7 @@ std::vector<double> Session::frame_speeds_dps() const {
     }
     if (held.empty()) return out;
     const double c = std::min(1.0, std::abs(glm::dot(at(f0), at(f1))));
-    out[static_cast<size_t>(k)] = rad_to_deg(2.0 * std::acos(c)) / seconds_of(f1 - f0);
+    out[static_cast<size_t>(k)] = rad_to_deg(2.0 * std::acos(c)) / ps_to_seconds(f1 - f0);
     while (held.size() > 1 && held[1].time_ps <= f1) held.pop_front();
   }
   return out;
@@ -497,7 +495,7 @@ void Session::build_memories() {
   auto head = [this](double tt) {
     // The host may render ahead of the frame (a memory queued behind a busy
     // engine): the generated motion is extended to whatever time it asks for.
-    const int64_t t_ps = static_cast<int64_t>(std::llround(tt * 1e12));
+    const int64_t t_ps = seconds_to_ps(tt);
     extend_motion(t_ps);
     const dp::Quat& q = stream_[stream_.index_at(t_ps)].q;
     return glm::dquat(q.w, q.x, q.y, q.z);
@@ -514,20 +512,20 @@ void Session::build_memories() {
     rc.margin_m = c.memory.region_margin_m;
     rc.memories = c.memory.count;
     rc.threshold_rad = pc.threshold_rad;
-    regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(seconds_of(start_ps_)),
+    regions_ = std::make_unique<host::RegionScheduler>(*grid_, rc, c.memory.face_size, walk_->position(ps_to_seconds(start_ps_)),
                                                        h.margin ? std::string("--margin")
                                                        : h.region_size
                                                            ? "--regions, with " + spec_.config_source + "'s memory.region_margin_m"
                                                            : spec_.config_source + ": memory.region_margin_m");
   }
-  host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.ipd_m,
+  host_ = std::make_unique<host::HostSimulation>(*scene_, pc, host::RenderEngine(c.host), *walk_, head, memories_, spec_.memories.checked_ipd_m(),
                                                  timing_.refresh_hz());
   check_assignment();
   // A head with no motion of its own only faces the walk: its turn rate from the walk itself, exact at any time
   // (the motion stream holds it at 1 kHz samples), from the run's start on, as the plan replays it. A head
   // motion given (--motion, --trace) was already turning before the run.
   if (!spec_.motion.given() && spec_.trace.empty() && spec_.live.empty())
-    host_->use_turn_rate([w = walk_.get(), t0 = seconds_of(start_ps_)](double t, double dt) {
+    host_->use_turn_rate([w = walk_.get(), t0 = ps_to_seconds(start_ps_)](double t, double dt) {
       return host::facing_turn_rate_rad_s(*w, t, dt, t0);
     });
   if (regions_) {
@@ -539,7 +537,7 @@ void Session::build_memories() {
     host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads, spec_.memories.face_culling));
   host_->set_render_threads(spec_.threads);
   host_->set_face_culling(spec_.memories.face_culling);
-  host_->prime(seconds_of(start_ps_));
+  host_->prime(ps_to_seconds(start_ps_));
   memory_source_ = "scene " + scene_->name + " (" + std::to_string(scene_->objects.size()) + " objects, " +
                    std::to_string(scene_->triangles()) + " triangles), host rendering " +
                    (h.baseline ? "everything every frame (baseline)" : "by priority") +
@@ -739,7 +737,7 @@ RunSummary Session::run() {
     ps.memories = &memories_;
     ps.orientation = &stream_;
     ps.segmented = regions_ ? &segmented_ : nullptr;
-    ps.ipd_m = spec_.memories.ipd_m;
+    ps.ipd_m = spec_.memories.checked_ipd_m();
     ps.threads = spec_.threads;
     ps.first_frame = spec_.first_frame;
     ps.frames = spec_.frames;
@@ -806,7 +804,7 @@ RunSummary Session::run() {
   if (motion_started_ && motion_done_ && last_pose_ps_ < end_ps_) {
     char b[160];
     std::snprintf(b, sizeof b, "  note: the trace ends at %.6f s; later pixels hold its last sample (sample-and-hold)",
-                  seconds_of(last_pose_ps_));
+                  ps_to_seconds(last_pose_ps_));
     s.notes.push_back(b);
   }
   // A sparse trace's own sample period is part of every latency measured: say so when it is a large part.

@@ -1748,6 +1748,36 @@ TEST(Planner, TheAssignmentHoldsWhatTheRuleDoesAtTheCornersOfAWalk) {
   EXPECT_GT(test::load_json(j)["host"]["object_frames_held_slower_by_assignment"].get<int64_t>(), 0);
 }
 
+// The turn a plan replays is the one a run's host takes before each frame: the frame's start as the run tells it (a
+// whole picosecond, rounded down), the orientation held then and a display frame before (the last tracker sample at or
+// before each, to the nearest picosecond), the motion generated from a second before the first frame. A constant
+// rotation at R sampled every millisecond then turns R x (samples between the two) / 1000 over the frame: at 60 Hz,
+// 17 steps every frame (frame 0's frame before is held by the samples before 0; frame 1 starts 1/3 ps before 16 2/3
+// ms, so its frame before reaches back past 0 to the sample at -1 ms: with the frame times f / 60 Hz, 16 steps at
+// frames 1, 4, 7, 10).
+TEST(HeadTurnRate, AConstantRotationTurnsBetweenTheSamplesARunHolds) {
+  const host::WalkPath still({{0, 1.6, 0}, {0, 1.6, -1}}, 0.0, "still");
+  HeadMotion head;
+  head.motion.motion = "rotate";
+  head.motion.rate = 300;
+  const dp::VideoTiming vt(small_display_60hz().timing);
+  const double hz = vt.refresh_hz(), dt = 1.0 / hz;
+  ASSERT_EQ(hz, 60.0);
+  auto held_ms = [](double s) {  // the sample held at time s: the last whole millisecond at or before it
+    const int64_t ps = std::llround(s * 1e12);
+    return ps >= 0 ? ps / 1000000000 : -((-ps + 999999999) / 1000000000);
+  };
+  HeadTurnRate rate(still, head, 1.0);
+  int steps_17 = 0;
+  for (int64_t f = 0; f < 12; ++f) {
+    const double t = vt.frame_start_s(f);
+    const int64_t steps = held_ms(t) - held_ms(t - dt);
+    steps_17 += steps == 17 ? 1 : 0;
+    EXPECT_NEAR(rate.at(t, dt), deg_to_rad(300.0) * static_cast<double>(steps) / 1000.0 / dt, 1e-9) << "frame " << f;
+  }
+  EXPECT_EQ(steps_17, 12);
+}
+
 // The memory a plan updates `object` in, slowest (memory 0 with one memory): its period, in display frames.
 int64_t slowest_period_frames(const Plan& p, const std::string& object) {
   const dp::MemoryConfig& m = p.config.memory;
@@ -1761,9 +1791,10 @@ int64_t slowest_period_frames(const Plan& p, const std::string& object) {
 }
 
 // Standing still, nothing changes: one memory. Turning, the eyes move (IPD/2 either side of the head's centre): a
-// ball d = 1.5 m ahead has shifted by theta_t once an eye has moved x = 2 d sin(theta_t / 2) (Regan & Pose's
-// translational validity) at omega IPD / 2, its speed on the circle it turns on; the plan for that turning must
-// update the ball at least every x / (omega IPD / 2): 18.7 frames at 300 deg/s, 2 deg, 60 Hz.
+// 0.3 m ball 1.5 m ahead, d = 1.2 m to its surface, has shifted by theta_t once an eye has moved x = 2 d sin(theta_t
+// / 2) (Regan & Pose's translational validity) at omega IPD / 2, its speed on the circle it turns on: every
+// x / (omega IPD / 2) = 15.0 frames at 300 deg/s, 2 deg, 60 Hz. The plan's memory 0 updates every power of two of
+// frames within the fastest need (docs/planning.md, item 3): 8; with the eyes twice as far apart, 7.5 frames: 4.
 TEST(Planner, AHeadTurningStandingStillIsUpdatedAsItsEyesMove) {
   TempDir d;
   write(d.file("ball.json"), R"({"name": "ahead", "objects": [{"name": "ball", "sphere": 0.3, "position": [0, 1.6, -1.5]}]})");
@@ -1778,12 +1809,17 @@ TEST(Planner, AHeadTurningStandingStillIsUpdatedAsItsEyesMove) {
   r.head.motion.rate = 300;
   const Plan turning = make_plan(r);
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
-  const double x = 2 * 1.5 * std::sin(deg_to_rad(2.0) / 2), eye_speed = deg_to_rad(300.0) * MemoryContents{}.ipd_m / 2;
+  const double x = 2 * (1.5 - 0.3) * std::sin(deg_to_rad(2.0) / 2), eye_speed = deg_to_rad(300.0) * MemoryContents{}.ipd_m / 2;
   const double need_frames = x / eye_speed * hz;
-  ASSERT_NEAR(need_frames, 18.7, 0.05);
+  ASSERT_NEAR(need_frames, 15.0, 0.05);
   EXPECT_EQ(still.config.memory.count, 1);
   EXPECT_GT(static_cast<double>(slowest_period_frames(still, "ball")), need_frames);
-  EXPECT_LE(static_cast<double>(slowest_period_frames(turning, "ball")), need_frames);
+  EXPECT_EQ(turning.config.memory.count, 1);
+  EXPECT_EQ(slowest_period_frames(turning, "ball"), 8);
+  // Eyes twice as far apart (--ipd) move twice as fast: twice as often.
+  r.memories.ipd_m = 2 * MemoryContents{}.ipd_m;
+  const Plan wide = make_plan(r);
+  EXPECT_EQ(slowest_period_frames(wide, "ball"), 4);
   // Over the rotation's second (standing_span_s), every frame's turn.
   EXPECT_NEAR(turning.motion_s, 1.0, 1e-9);
   EXPECT_EQ(turning.samples, static_cast<int>(hz) + 1);

@@ -15,7 +15,8 @@
 // kept -- the last at or before the window's start, every one inside it and
 // the first after its end, where reading stops (times never decrease, so the
 // rest cannot matter). A ten-million-line trace then costs a 3-frame run
-// nothing but the reading of its first seconds.
+// nothing but the reading of its first seconds (and, with a planned
+// configuration, one pass over its bytes: sim::motion_hash, plan.motion_hash).
 #pragma once
 #include <cstdint>
 #include <cstdio>

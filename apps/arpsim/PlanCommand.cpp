@@ -59,6 +59,9 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_option("--trace", a->req.head.trace,
                   "A recorded head motion on top of the walk (CSV, docs/tracker.md), from the walk's start; standing (--speed 0) "
                   "the plan covers the trace to its last sample");
+  cmd->add_option("--ipd", a->req.memories.ipd_m,
+                  "Distance between the eyes, metres, as run's --ipd: how far turning moves them, and where they see from")
+      ->capture_default_str();
   cmd->add_option("--texel-error", a->req.texel_error,
                   "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
       ->capture_default_str();

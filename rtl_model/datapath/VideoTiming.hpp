@@ -38,6 +38,9 @@ class VideoTiming {
   // Exact conversions: ps = floor(cycles * 1e12 / f_pixel); std::overflow_error
   // for a time outside the 64-bit picosecond range (never a wrapped time).
   int64_t cycles_to_ps(int64_t cycles) const;
+  // A frame's start in seconds, as the host is told it before the frame (and a plan replays it): its picosecond
+  // start, a whole picosecond, as a double.
+  double frame_start_s(int64_t frame) const { return static_cast<double>(cycles_to_ps(frame_start_cycle(frame))) * 1e-12; }
   // The last cycle that starts at or before ps.
   int64_t ps_to_cycle_floor(int64_t ps) const;
 

@@ -22,7 +22,7 @@ void BufferSwapper::tick(int64_t cycle) {
   next_swap_ = sched_.swap_cycle(f + 1);
   swap_strobe = true;
   if (hook_ && f + 1 < hook_end_) {  // the host model updates the memories in this blank, before the next frame
-    hook_(f + 1, static_cast<double>(timing_.cycles_to_ps(timing_.frame_start_cycle(f + 1))) * 1e-12);
+    hook_(f + 1, timing_.frame_start_s(f + 1));
     ++host_calls_;
   }
   const int64_t now = timing_.cycles_to_ps(cycle);

@@ -99,7 +99,7 @@ void LooselyTimedModel::run() {
   const int64_t sw = sched.swap_cycle(frame_no_);
   swaps_ += host_.at_vertical_blank(t.cycles_to_ps(sw), *in_.memories);
   if (in_.before_frame && frame_no_ + 1 < timing_.scan().end_frame())
-    in_.before_frame(frame_no_ + 1, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame_no_ + 1))) * 1e-12);
+    in_.before_frame(frame_no_ + 1, t.frame_start_s(frame_no_ + 1));
   stage::FrameReport r;
   r.frame = frame_no_;
   r.pixels = static_cast<int64_t>(frame_.width) * frame_.height;

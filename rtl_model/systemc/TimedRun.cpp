@@ -88,7 +88,7 @@ TimedResult run_functional(const stage::TimedInputs& in, const TimedRunOptions& 
   const auto t0 = Clock::now();
   for (int64_t k = 0; k < in.frames; ++k) {
     const int64_t frame = in.first_frame + k;
-    if (in.before_frame) in.before_frame(frame, static_cast<double>(t.cycles_to_ps(t.frame_start_cycle(frame))) * 1e-12);
+    if (in.before_frame) in.before_frame(frame, t.frame_start_s(frame));
     const stage::FrameReport fr = frames.render(frame);
     if (in.sink) in.sink(frames.frame(), fr);
     ++r.frames;
@@ -215,7 +215,7 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   // The host model's state before the first frame (the timed levels call it in each later vertical blank).
   if (in.before_frame) {
     const dp::VideoTiming vt(in.config.timing);
-    in.before_frame(in.first_frame, static_cast<double>(vt.cycles_to_ps(vt.frame_start_cycle(in.first_frame))) * 1e-12);
+    in.before_frame(in.first_frame, vt.frame_start_s(in.first_frame));
   }
   const auto t0 = Clock::now();
   auto advance_to = [&r](int64_t sim_ps) {
