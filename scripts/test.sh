@@ -18,6 +18,8 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DARPSIM_REQUIRE_HDL=ON >/dev/nul
 cmake --build build -j"$jobs"
 phase "release tests"
 (cd build && ctest --output-on-failure -j"$jobs")
+phase "each unity-built source alone, syntax only (the per-file build of quick edits)"
+scripts/check-standalone.sh build
 phase "ASan + UBSan build"
 sanitizer_flags="-O1 -g1 -DNDEBUG"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$sanitizer_flags" \
