@@ -46,12 +46,15 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
     return h.key();
   }
   const tracker::MotionSpec& m = head.motion;
-  const glm::dvec3 axis = glm::normalize(tracker::parse_axis(m.axis));  // "0,2,0" turns as "0,1,0" does
-  h.add(m.motion).add(axis.x).add(axis.y).add(axis.z).add(m.hz).add(m.noise);
+  // The rotation as the unit axis times its signed size (the rate, the shake's peak, the pendulum's amplitude): an axis
+  // written longer ("0,2,0") or reversed with its size ("0,-1,0" at -30 deg/s) turns the head as "0,1,0" at 30 does,
+  // sample for sample. (+ 0.0: a zero component's sign, which the product can flip, is not the motion's.)
+  const double size = m.motion == "rotate" ? m.rate : m.motion == "shake" ? m.peak : m.amplitude;
+  const glm::dvec3 turn = glm::normalize(tracker::parse_axis(m.axis)) * size;
+  h.add(m.motion).add(turn.x + 0.0).add(turn.y + 0.0).add(turn.z + 0.0).add(m.hz).add(m.noise);
   if (m.noise > 0) h.add(m.seed);
-  if (m.motion == "rotate") h.add(m.rate);
-  else if (m.motion == "shake") h.add(m.peak).add(m.frequency);
-  else h.add(m.amplitude).add(m.period);
+  if (m.motion == "shake") h.add(m.frequency);
+  else if (m.motion == "pendulum") h.add(m.period);
   return h.key();
 }
 

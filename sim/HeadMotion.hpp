@@ -28,8 +28,8 @@ void face_walk(const host::WalkPath& walk, std::vector<tracker::PoseSample>& pos
 
 // plan.motion_hash: the walk's alone (host::walk_hash) when the head has no motion of its own -- the hash plans
 // made before head motions were planned for recorded -- else the walk's with the synthetic motion's parameters
-// (those that shape it: the axis as a direction, the rate or the shake's or pendulum's, the sampling, the noise
-// and its seed) or the trace file's bytes. InputError naming the trace if it cannot be read.
+// (those that shape it: the unit axis times the rate, the shake's peak or the pendulum's amplitude; the shake's
+// frequency or the pendulum's period; the sampling, the noise and its seed) or the trace file's bytes. InputError naming the trace if it cannot be read.
 int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head);
 
 // The head's turn rate over a motion starting at time 0 (a run's first frame), as a run with this walk and head

@@ -946,7 +946,7 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
 }
 
 // And the head's own motion on the walk (--motion, --trace): the same motion runs quietly, and so does the same
-// rotation about an axis written longer; no head motion, another rate, or a trace edited after the plan is said once.
+// rotation about an axis written longer, or reversed with its rate; no head motion, another rate, or a trace edited after the plan is said once.
 // A plan for the walk alone keeps the walk's hash (plans made before head motions were planned for still match).
 TEST(PlanCli, ThePlanKnowsItsHeadMotion) {
   TempDir d;
@@ -964,7 +964,8 @@ TEST(PlanCli, ThePlanKnowsItsHeadMotion) {
   EXPECT_NE(hash, config::load_file(d.file("walk-only.json")).plan.motion_hash);
   const std::string run = kArpsim + " run -q --frames 1 --every 0 --scene " + d.file("far.json") + " --walk " + d.file("walk.json");
   const std::string warn = " was planned for another motion";
-  for (const std::string& same : {std::string(" --motion rotate --rate 30"), std::string(" --motion rotate --rate 30 --axis 0,2,0")}) {
+  for (const std::string& same : {std::string(" --motion rotate --rate 30"), std::string(" --motion rotate --rate 30 --axis 0,2,0"),
+                                   std::string(" --motion rotate --rate -30 --axis 0,-1,0")}) {
     const auto o = run_command(run + " --config " + d.file("turning.json") + same);
     ASSERT_EQ(o.status, 0) << same << "\n" << o.output;
     EXPECT_EQ(o.output.find(warn), std::string::npos) << same << "\n" << o.output;
