@@ -60,8 +60,9 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
 
 double standing_span_s(const HeadMotion& head) {
   if (!head.trace.empty()) {
-    const std::vector<tracker::PoseSample> poses = tracker::read_trace_csv(head.trace);
-    return poses.empty() ? 0.0 : std::max(0.0, ps_to_seconds(poses.back().time_ps));
+    const std::vector<tracker::PoseSample> poses = head.trace_poses ? std::vector<tracker::PoseSample>{} : tracker::read_trace_csv(head.trace);
+    const std::vector<tracker::PoseSample>& p = head.trace_poses ? *head.trace_poses : poses;
+    return p.empty() ? 0.0 : std::max(0.0, ps_to_seconds(p.back().time_ps));
   }
   if (!head.motion.given()) return 0.0;
   const tracker::MotionSpec& m = head.motion;
@@ -83,7 +84,7 @@ HeadTurnRate::HeadTurnRate(const host::WalkPath& walk, const HeadMotion& head, d
   if (!head.trace.empty()) {
     source_ = head.trace;
     // As a run from frame 0 reads its window: a second before the first frame (and the sample held then) on.
-    trace_ = tracker::read_trace_csv(head.trace, {-kPsPerSecond, seconds_to_ps(end_s)});
+    trace_ = head.trace_poses ? *head.trace_poses : tracker::read_trace_csv(head.trace, {-kPsPerSecond, seconds_to_ps(end_s)});
   } else {
     source_ = "synthetic " + head.motion.motion;
     // (The generator's own limit names its --seconds, which plan has not got.)

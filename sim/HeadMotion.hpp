@@ -18,6 +18,8 @@ namespace arp::sim {
 struct HeadMotion {
   tracker::MotionSpec motion;
   std::string trace;
+  // The trace's samples when already read (a plan reads it once for all its passes); null: each reader reads it.
+  std::shared_ptr<const std::vector<tracker::PoseSample>> trace_poses;
   bool given() const { return motion.given() || !trace.empty(); }
   // "synthetic rotate at 300 deg/s about 0,1,0", "trace FILE", "" (none).
   std::string describe() const;

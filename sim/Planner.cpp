@@ -29,6 +29,7 @@
 #include "reference/golden/GoldenReference.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
+#include "tracker/TraceFile.hpp"
 
 namespace arp::sim {
 
@@ -621,7 +622,15 @@ Plan make_plan(const PlanRequest& r) {
   if (r.head.motion.given() && !r.head.trace.empty()) throw InputError("--trace", "", "give either --trace or --motion, not both");
   // Each pass of the plan reads the trace again: standard input can be read only once.
   if (r.head.trace == "-") throw InputError("--trace", "-", "a plan reads the trace more than once: give it as a file");
-  const MotionSamples ms = sample_motion(walk, r.head, timing, ipd_m);
+  // A trace is read once, for every pass below: standing, whole (the plan covers it to its end); walking, from a second
+  // before the first frame to a second past the walk's end, as a run of the walk reads its window.
+  HeadMotion head_motion = r.head;
+  if (!head_motion.trace.empty())
+    head_motion.trace_poses = std::make_shared<const std::vector<tracker::PoseSample>>(
+        walk.speed() > 0 ? tracker::read_trace_csv(head_motion.trace, {-kPsPerSecond, seconds_to_ps(std::min(walk.length() / walk.speed() + 1.01,
+                                                                                                       tracker::kPoseTimeLimitS))})
+                         : tracker::read_trace_csv(head_motion.trace));
+  const MotionSamples ms = sample_motion(walk, head_motion, timing, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
@@ -1107,7 +1116,7 @@ Plan make_plan(const PlanRequest& r) {
   if (r.weigh_regions && n > 0 && walk.speed() > 0) {
     progress(1.0, "weighing region priority rendering");
     for (const double size : {2.0, 4.0, 8.0})
-      p.regions.push_back(region_load(scene, walk, r.head, ms, timing, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
+      p.regions.push_back(region_load(scene, walk, head_motion, ms, timing, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
     const RegionLoad* best = nullptr;
     for (const RegionLoad& R : p.regions)
       if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&

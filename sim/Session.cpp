@@ -297,7 +297,7 @@ void Session::warn_if_planned_for_another_motion() const {
   // A plan's tiles are bounded for its walk: another motion (a slower one puts objects in slower memories) draws outside them.
   const char* tiles = spec_.config.memory.tiles.empty() ? "" : " (its memory.tiles hold only the tiles that walk draws on: texels drawn outside them are lost)";
   // (A live head's motion is not known before the run: the walk alone is compared.)
-  const HeadMotion head{spec_.motion, spec_.trace};
+  const HeadMotion head{spec_.motion, spec_.trace, nullptr};
   if (const int64_t h = motion_hash(*walk_, head); h != planned)
     std::fprintf(stderr, "arpsim: warning: %s was planned for another motion (plan.motion_hash %lld)%s; walk %s at %g m/s%s "
                          "hashes to %lld: run `arpsim plan` for it (with the same --motion or --trace)\n",
