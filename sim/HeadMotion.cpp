@@ -25,6 +25,15 @@ std::string HeadMotion::describe() const {
   return "synthetic pendulum of " + printf_text("%g", m.amplitude) + " deg, " + printf_text("%g", m.period) + " s" + about;
 }
 
+void HeadMotion::check() const {
+  if (!trace.empty() && motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+}
+
+std::vector<tracker::PoseSample> read_planned_trace(const std::string& path, std::optional<double> walk_span_s) {
+  if (!walk_span_s) return tracker::read_trace_csv(path);
+  return tracker::read_trace_csv(path, {-kPsPerSecond, seconds_to_ps(std::min(*walk_span_s + 1.01, tracker::kPoseTimeLimitS))});
+}
+
 void face_walk(const host::WalkPath& walk, std::vector<tracker::PoseSample>& poses) {
   for (auto& p : poses) p.orientation = walk.facing(ps_to_seconds(p.time_ps)) * p.orientation;
 }
@@ -60,9 +69,9 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
 
 double standing_span_s(const HeadMotion& head) {
   if (!head.trace.empty()) {
-    const std::vector<tracker::PoseSample> poses = head.trace_poses ? std::vector<tracker::PoseSample>{} : tracker::read_trace_csv(head.trace);
-    const std::vector<tracker::PoseSample>& p = head.trace_poses ? *head.trace_poses : poses;
-    return p.empty() ? 0.0 : std::max(0.0, ps_to_seconds(p.back().time_ps));
+    const auto poses = head.trace_poses ? head.trace_poses
+                                        : std::make_shared<const std::vector<tracker::PoseSample>>(read_planned_trace(head.trace, std::nullopt));
+    return poses->empty() ? 0.0 : std::max(0.0, ps_to_seconds(poses->back().time_ps));
   }
   if (!head.motion.given()) return 0.0;
   const tracker::MotionSpec& m = head.motion;
@@ -83,8 +92,7 @@ HeadTurnRate::HeadTurnRate(const host::WalkPath& walk, const HeadMotion& head, d
   const double end_s = std::min(span_s + 1.01, tracker::kPoseTimeLimitS);
   if (!head.trace.empty()) {
     source_ = head.trace;
-    // As a run from frame 0 reads its window: a second before the first frame (and the sample held then) on.
-    trace_ = head.trace_poses ? *head.trace_poses : tracker::read_trace_csv(head.trace, {-kPsPerSecond, seconds_to_ps(end_s)});
+    trace_ = head.trace_poses ? *head.trace_poses : read_planned_trace(head.trace, span_s);
   } else {
     source_ = "synthetic " + head.motion.motion;
     // (The generator's own limit names its --seconds, which plan has not got.)

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
@@ -29,7 +30,6 @@
 #include "reference/golden/GoldenReference.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "rtl_model/datapath/VideoTiming.hpp"
-#include "tracker/TraceFile.hpp"
 
 namespace arp::sim {
 
@@ -123,10 +123,16 @@ struct MotionSamples {
 // head motion's: standing_span_s), at most kMaxSamples of them, and at each the eyes' turning as a run's rule takes
 // it (HostSimulation::eye_turn_at): the head's turn over the frame before, from the walk's facing and the head
 // motion (HeadTurnRate), for eyes ipd_m apart (0: one eye, no turn).
+// The walk's span (nullopt standing still: the head motion's is planned over, standing_span_s).
+std::optional<double> walk_span_s(const host::WalkPath& walk) {
+  return walk.speed() > 0 ? std::optional<double>(walk.length() / walk.speed()) : std::nullopt;
+}
+
 MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, const dp::VideoTiming& vt, double ipd_m) {
   const double hz = vt.refresh_hz();
   MotionSamples m;
-  m.span_s = walk.speed() > 0 ? walk.length() / walk.speed() : standing_span_s(head);
+  const std::optional<double> walking = walk_span_s(walk);
+  m.span_s = walking ? *walking : standing_span_s(head);
   // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
   // (every sample within the motion: past its end a looping walk would be back at its start)
   const int64_t frames = static_cast<int64_t>(std::clamp(std::floor(m.span_s * hz) + 1, 1.0, 1099511627776.0));
@@ -134,7 +140,7 @@ MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, 
   HeadTurnRate rate(walk, head, m.span_s);
   for (int64_t f = 0; f < frames; f += step) {
     m.t.push_back(vt.frame_start_s(f));  // (as a run's host is told it: the frame's whole picosecond)
-    m.turn.push_back(ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(m.t.back(), 1.0 / hz), ipd_m));
+    m.turn.push_back(rate.eyes_at(m.t.back(), 1.0 / hz, ipd_m));
   }
   m.step_s = static_cast<double>(step) / hz;
   return m;
@@ -529,7 +535,7 @@ RegionLoad region_load(const host::Scene& scene, const host::WalkPath& walk, con
   for (int64_t f = 0; f < frames; ++f) {
     const double t = vt.frame_start_s(f);
     const glm::dvec3 head = walk.position(t);
-    const host::EyeTurn turn = ipd_m == 0 ? host::EyeTurn{} : host::eye_turn(rate.at(t, 1.0 / hz), ipd_m);
+    const host::EyeTurn turn = rate.eyes_at(t, 1.0 / hz, ipd_m);
     const host::RegionScheduler::Step st = sched.step(head, true);
     for (size_t i = 0; i < seg.scene.objects.size(); ++i) {  // each piece's memory this frame, once
       memory_of[i] = sched.memory_of_object(seg.region[i], seg.span.empty() ? nullptr : &seg.span[i]);
@@ -619,17 +625,14 @@ Plan make_plan(const PlanRequest& r) {
   const double hz = timing.refresh_hz();
   const double ipd_given = r.memories.checked_ipd_m();                     // --ipd
   const double ipd_m = r.base.timing.eyes > 1 ? ipd_given : 0.0;  // (the run's rule: HostSimulation)
-  if (r.head.motion.given() && !r.head.trace.empty()) throw InputError("--trace", "", "give either --trace or --motion, not both");
-  // Each pass of the plan reads the trace again: standard input can be read only once.
+  r.head.check();
+  // The plan reads a trace twice, its samples and its bytes (plan.motion_hash): standard input can be read only once.
   if (r.head.trace == "-") throw InputError("--trace", "-", "a plan reads the trace more than once: give it as a file");
-  // A trace is read once, for every pass below: standing, whole (the plan covers it to its end); walking, from a second
-  // before the first frame to a second past the walk's end, as a run of the walk reads its window.
+  // A trace's samples are read once, for every pass below.
   HeadMotion head_motion = r.head;
   if (!head_motion.trace.empty())
-    head_motion.trace_poses = std::make_shared<const std::vector<tracker::PoseSample>>(
-        walk.speed() > 0 ? tracker::read_trace_csv(head_motion.trace, {-kPsPerSecond, seconds_to_ps(std::min(walk.length() / walk.speed() + 1.01,
-                                                                                                       tracker::kPoseTimeLimitS))})
-                         : tracker::read_trace_csv(head_motion.trace));
+    head_motion.trace_poses =
+        std::make_shared<const std::vector<tracker::PoseSample>>(read_planned_trace(head_motion.trace, walk_span_s(walk)));
   const MotionSamples ms = sample_motion(walk, head_motion, timing, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());

@@ -81,7 +81,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const auto& h = s.host;
   if (s.frames < 1 || s.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
   if (o.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
-  if (!s.trace.empty() && s.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  HeadMotion{s.motion, s.trace, nullptr}.check();
   if (!s.live.empty()) {
     if (s.live != "usb") throw InputError("--live", s.live, "the live source is usb (an Oculus Rift DK1/DK2)");
     if (!s.trace.empty() || s.motion.given() || !h.walk.empty())
