@@ -1,6 +1,8 @@
 #include "AtomicFile.hpp"
 
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 
 #include <unistd.h>
 
@@ -10,17 +12,42 @@ namespace arp {
 
 namespace fs = std::filesystem;
 
-fs::path temp_path_beside(const std::string& target) {
-  const fs::path t(target);
-  const fs::path dir = t.has_parent_path() ? t.parent_path() : fs::path(".");
+namespace {
+
+// The file an output replaces: a symbolic link's file (the link stays a link), else the path itself.
+fs::path replaced_file(const std::string& target) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(target, "", "folder " + dir.string() + " does not exist");
+  if (!fs::is_symlink(target, ec)) return target;
+  const fs::path resolved = fs::weakly_canonical(target, ec);
+  return ec ? fs::path(target) : resolved;
+}
+
+}  // namespace
+
+fs::path temp_path_beside(const std::string& target) {
+  const fs::path t = replaced_file(target);
+  std::error_code ec;
+  const fs::file_status st = fs::status(t, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st))
+    throw InputError(target, "",
+                     std::string("is ") +
+                         (fs::is_character_file(st) || fs::is_block_file(st) ? "a device"
+                          : fs::is_fifo(st)                                  ? "a FIFO"
+                          : fs::is_socket(st)                                ? "a socket"
+                                                                             : "not a regular file") +
+                         ", not a file: arpsim writes an output as a file (a temporary one renamed into place), which "
+                         "would replace it");
+  const fs::path dir = t.has_parent_path() ? t.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) {
+    throw InputError(target, "", fs::exists(dir, ec) ? dir.string() + " is a file, not a folder"
+                                                     : "folder " + dir.string() + " does not exist");
+  }
   return dir / ("." + t.stem().string() + ".tmp-" + std::to_string(::getpid()) + t.extension().string());
 }
 
 void commit_temp_file(const fs::path& tmp, const std::string& target) {
   std::error_code ec;
-  fs::rename(tmp, target, ec);
+  fs::rename(tmp, replaced_file(target), ec);
   if (ec) {
     discard_temp_file(tmp);
     throw InputError(target, "", "cannot move the finished file into place: " + ec.message());
@@ -32,16 +59,49 @@ void discard_temp_file(const fs::path& tmp) noexcept {
   fs::remove(tmp, ec);
 }
 
+void write_text_file(const fs::path& file, const std::string& text, const std::string& shown) {
+  // stdio, not a stream: a full disk or a file-size limit must come back with its reason (errno).
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (!f) throw InputError(shown, "", std::string("cannot write the file: ") + std::strerror(errno));
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
+  const int err = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !closed) throw InputError(shown, "", std::string("cannot write the file: ") + std::strerror(written ? errno : err));
+}
+
 void write_text_atomic(const std::string& path, const std::string& text) {
   const auto tmp = temp_path_beside(path);
-  std::ofstream out(tmp, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) {
+  try {
+    write_text_file(tmp, text, path);
+  } catch (...) {
     discard_temp_file(tmp);
-    throw InputError(path, "", "cannot write the file");
+    throw;
   }
   commit_temp_file(tmp, path);
+}
+
+OutputGroup::~OutputGroup() {
+  for (const auto& s : staged_) discard_temp_file(s.first);
+}
+
+fs::path OutputGroup::stage(const std::string& target) {
+  staged_.emplace_back(temp_path_beside(target), target);
+  return staged_.back().first;
+}
+
+void OutputGroup::commit() {
+  // Renames cannot run out of space: once every file is written, they all appear.
+  while (!staged_.empty()) {
+    const auto s = staged_.front();
+    staged_.erase(staged_.begin());
+    try {
+      commit_temp_file(s.first, s.second);
+    } catch (...) {
+      for (const auto& rest : staged_) discard_temp_file(rest.first);
+      staged_.clear();
+      throw;
+    }
+  }
 }
 
 }  // namespace arp

@@ -4,19 +4,43 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace arp {
 
-// A temporary path beside `target`; InputError naming `target` if its folder does not exist.
+// A temporary path beside the file `target` names (beside the file a symbolic link names, so the rename
+// replaces that file and keeps the link); InputError naming `target` if its folder does not exist, or if
+// it names something other than a file (a device, a FIFO, a socket: a rename would replace the node).
 std::filesystem::path temp_path_beside(const std::string& target);
 
-// Moves the finished temporary file onto `target`; on failure removes it and throws InputError.
+// Moves the finished temporary file onto `target` (the file a link names); on failure removes it and
+// throws InputError.
 void commit_temp_file(const std::filesystem::path& tmp, const std::string& target);
 
 // Removes a temporary file after a failed write (never throws).
 void discard_temp_file(const std::filesystem::path& tmp) noexcept;
 
+// Writes text to a file as it is (no temporary): InputError naming `shown` with the system's reason on failure.
+void write_text_file(const std::filesystem::path& file, const std::string& text, const std::string& shown);
+
 // Writes text to path through a temporary file and a rename; InputError naming the path on failure.
 void write_text_atomic(const std::string& path, const std::string& text);
+
+// Several outputs of one command that appear together or not at all: each is written to its temporary
+// path, and commit() renames them all; those not committed are removed when the group goes.
+class OutputGroup {
+ public:
+  OutputGroup() = default;
+  OutputGroup(const OutputGroup&) = delete;
+  OutputGroup& operator=(const OutputGroup&) = delete;
+  ~OutputGroup();
+  // The temporary path to write `target` to (temp_path_beside).
+  std::filesystem::path stage(const std::string& target);
+  void commit();
+
+ private:
+  std::vector<std::pair<std::filesystem::path, std::string>> staged_;
+};
 
 }  // namespace arp

@@ -1,7 +1,9 @@
 #include "OutputPaths.hpp"
 
 #include <filesystem>
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 
 #include <stdlib.h>
 
@@ -25,10 +27,14 @@ void check_writable(const NamedPath& o) {
   std::error_code ec;
   if (fs::is_directory(o.path, ec)) throw InputError(o.option, o.path, "is a folder, not a file");
   const fs::path tmp = temp_path_beside(o.path);  // InputError if the folder does not exist
-  {
-    std::ofstream probe(tmp, std::ios::binary);
-    if (!probe) throw InputError(o.option, o.path, "cannot write there (no permission or a read-only file system)");
+  std::FILE* probe = std::fopen(tmp.c_str(), "wb");
+  if (!probe) {
+    const int err = errno;
+    throw InputError(o.option, o.path,
+                     err == ENAMETOOLONG ? std::string("cannot write there: the name is too long for the file system")
+                                         : std::string("cannot write there: ") + std::strerror(err));
   }
+  std::fclose(probe);
   discard_temp_file(tmp);
 }
 

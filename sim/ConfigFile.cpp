@@ -11,7 +11,6 @@ namespace arp::config {
 using nlohmann::json;
 
 namespace {
-constexpr size_t kMaxConfigBytes = 1 << 20;  // a configuration is a few kB
 }
 
 json to_json(const dp::ArpConfig& c) { return parameters_to_json(dp::arp_parameters(), c); }

@@ -12,6 +12,8 @@
 
 namespace arp::config {
 
+constexpr size_t kMaxConfigBytes = 1 << 20;  // the largest configuration file read (a configuration is a few kB)
+
 nlohmann::json to_json(const dp::ArpConfig& c);
 
 // Applies the keys present in `j` on top of `base`; `source` names the origin in errors.

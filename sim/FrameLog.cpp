@@ -37,33 +37,41 @@ void FrameLog::add(const nlohmann::json& row, const std::string& csv_row) {
 }
 
 void FrameLog::finish(const nlohmann::json& report) {
+  // Both files written before either is moved into place: a failure leaves neither.
   if (csv_.is_open()) {
     csv_.close();
     if (!csv_) {
       discard_temp_file(csv_tmp_);
       throw InputError(csv_path_, "", "cannot write the file");
     }
-    commit_temp_file(csv_tmp_, csv_path_);
   }
-  if (!rows_file_.is_open()) return;
-  rows_file_.close();
-  const auto tmp = temp_path_beside(report_path_);
-  std::ofstream out(tmp, std::ios::binary);
-  // The report's other keys, then "frames": one row per line, read back from the temporary file.
-  const std::string head = dump_json(report, 2);  // "{\n  ...\n}" (or "{}")
-  out << (report.empty() ? std::string("{") : head.substr(0, head.size() - 2) + ",") << "\n  \"frames\": [";
-  std::ifstream in(rows_tmp_, std::ios::binary);
-  std::string line;
-  for (int64_t i = 0; std::getline(in, line); ++i) out << (i ? ",\n    " : "\n    ") << line;
-  out << (rows_ ? "\n  " : "") << "]\n}\n";
-  out.close();
-  discard_temp_file(rows_tmp_);
-  rows_tmp_.clear();
-  if (!out) {
-    discard_temp_file(tmp);
-    throw InputError(report_path_, "", "cannot write the file");
+  std::filesystem::path tmp;
+  if (rows_file_.is_open()) {
+    rows_file_.close();
+    if (!rows_file_) {
+      if (!csv_tmp_.empty()) discard_temp_file(csv_tmp_);
+      throw InputError(report_path_, "", "cannot write the file (its frames' rows)");
+    }
+    tmp = temp_path_beside(report_path_);
+    std::ofstream out(tmp, std::ios::binary);
+    // The report's other keys, then "frames": one row per line, read back from the temporary file.
+    const std::string head = dump_json(report, 2);  // "{\n  ...\n}" (or "{}")
+    out << (report.empty() ? std::string("{") : head.substr(0, head.size() - 2) + ",") << "\n  \"frames\": [";
+    std::ifstream in(rows_tmp_, std::ios::binary);
+    std::string line;
+    for (int64_t i = 0; std::getline(in, line); ++i) out << (i ? ",\n    " : "\n    ") << line;
+    out << (rows_ ? "\n  " : "") << "]\n}\n";
+    out.close();
+    discard_temp_file(rows_tmp_);
+    rows_tmp_.clear();
+    if (!out) {
+      discard_temp_file(tmp);
+      if (!csv_tmp_.empty()) discard_temp_file(csv_tmp_);
+      throw InputError(report_path_, "", "cannot write the file");
+    }
   }
-  commit_temp_file(tmp, report_path_);
+  if (!csv_path_.empty()) commit_temp_file(csv_tmp_, csv_path_);
+  if (!tmp.empty()) commit_temp_file(tmp, report_path_);
 }
 
 }  // namespace arp::sim

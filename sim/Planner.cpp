@@ -36,6 +36,9 @@ namespace arp::sim {
 namespace {
 
 constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spread over it)
+// The longest motion a plan covers: region priority rendering is weighed by stepping the region rule at every
+// display frame, and frame times are whole picoseconds (a walk at a vanishing speed would last for ever).
+constexpr double kMaxPlanSpanS = 3600.0;
 constexpr int kFillPoints = 16;    // of them, where the fill is measured by rendering the scene
 
 // The smallest angle between neighbouring display pixels (across and down) after the lens, and the
@@ -43,6 +46,10 @@ constexpr int kFillPoints = 16;    // of them, where the fill is measured by ren
 // eye mirrors it).
 std::pair<double, double> pixel_angles(const dp::ArpConfig& c) {
   const int W = c.timing.h_active, H = c.timing.v_active;
+  if (W < 2 || H < 2)
+    throw InputError(W < 2 ? "display.h_active" : "display.v_active", std::to_string(W < 2 ? W : H),
+                     "a plan sizes the faces from the angle between neighbouring display pixels: it needs a display of at "
+                     "least 2 x 2 pixels");
   std::vector<glm::dvec3> d(static_cast<size_t>(W) * static_cast<size_t>(H));
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) d[static_cast<size_t>(y) * static_cast<size_t>(W) + static_cast<size_t>(x)] = golden::lens_direction(c, 0, x, y);
@@ -133,9 +140,18 @@ MotionSamples sample_motion(const host::WalkPath& walk, const HeadMotion& head, 
   MotionSamples m;
   const std::optional<double> walking = walk_span_s(walk);
   m.span_s = walking ? *walking : standing_span_s(head);
-  // (a walk at a vanishing speed lasts for ever: its frames are counted in double and held to 2^40)
+  if (!(m.span_s <= kMaxPlanSpanS)) {
+    const std::string lasts = printf_text("%.6g s", m.span_s), limit = "a plan covers at most an hour (" +
+                                                                       printf_text("%g", kMaxPlanSpanS) + " s) of motion";
+    if (walking)
+      throw InputError("--walk", "",
+                       printf_text("%.6g m", walk.length()) + " at " + printf_text("%.6g m/s", walk.speed()) + " lasts " + lasts +
+                           "; " + limit + ": plan a faster walk (--speed) or a part of it");
+    throw InputError(head.trace.empty() ? "--motion" : "--trace", head.trace.empty() ? head.describe() : head.trace,
+                     "standing, the plan covers the head motion's span, " + lasts + "; " + limit);
+  }
   // (every sample within the motion: past its end a looping walk would be back at its start)
-  const int64_t frames = static_cast<int64_t>(std::clamp(std::floor(m.span_s * hz) + 1, 1.0, 1099511627776.0));
+  const int64_t frames = static_cast<int64_t>(std::floor(m.span_s * hz) + 1);
   const int64_t step = std::max<int64_t>(1, (frames + kMaxSamples - 1) / kMaxSamples);
   HeadTurnRate rate(walk, head, m.span_s);
   for (int64_t f = 0; f < frames; f += step) {
@@ -1236,7 +1252,16 @@ host::RgbImage plan_tiles_image(const Plan& p) {
   return img;
 }
 
-std::string plan_config_text(const Plan& p) { return config::to_json(p.config).dump(2) + "\n"; }
+std::string plan_config_text(const Plan& p) {
+  std::string text = config::to_json(p.config).dump(2) + "\n";
+  // A plan every command can read back: its object names (memory.assignment) must not take it past the limit.
+  if (text.size() > config::kMaxConfigBytes)
+    throw InputError("--scene", p.scene_name,
+                     "the plan's configuration would be " + std::to_string(text.size()) + " bytes (memory.assignment names " +
+                         std::to_string(p.config.memory.assignment.size()) + " objects), more than the " +
+                         std::to_string(config::kMaxConfigBytes) + " a configuration file may be");
+  return text;
+}
 
 std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   std::string s = "# Plan for scene " + p.scene_name + "\n\n";

@@ -320,9 +320,9 @@ void Session::check_assignment() const {
   const auto& unknown = host_->scheduler().unknown_names();
   if (unknown.empty()) return;
   std::string names;
-  for (size_t i = 0; i < unknown.size() && i < 5; ++i) names += (i ? ", \"" : "\"") + unknown[i] + "\"";
+  for (size_t i = 0; i < unknown.size() && i < 5; ++i) names += (i ? ", \"" : "\"") + quoted(unknown[i]) + "\"";  // (a name can be megabytes long)
   if (unknown.size() > 5) names += " and " + std::to_string(unknown.size() - 5) + " more";
-  const std::string what = std::to_string(unknown.size()) + " of its names are no object of scene " + scene_->name + ": " + names;
+  const std::string what = std::to_string(unknown.size()) + " of its names are no object of scene " + quoted(scene_->name) + ": " + names;
   const int64_t planned = spec_.config.plan.scene_hash;
   if (planned == 0 || planned == host::scene_hash(*scene_)) throw InputError(spec_.config_source, "memory.assignment", what);
   std::fprintf(stderr, "arpsim: warning: %s: %s (the plan was made for another scene; those strings are not used)\n",

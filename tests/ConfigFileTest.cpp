@@ -208,7 +208,7 @@ TEST(ConfigFile, BadValuesNameTheKeyAndReason) {
            {R"("wall: 4")", "memory 4 is past memory.count (4 memories, 0 .. 3)"},
            {R"("wall: 1-4")", "memory 4 is past memory.count"},
            {R"("wall: 3-1")", "runs from memory 3 to the faster memory 1"},
-           {R"("wall: -1")", "\"\" is not a memory number"},
+           {R"("wall: -1")", "\"-1\" is not a memory number (nor a range a-b of them)"},
            {R"("wall: x")", "\"x\" is not a memory number"},
            {R"("wall: 1.5")", "\"1.5\" is not a memory number"},
            {R"("wall: ")", "\"\" is not a memory number"},

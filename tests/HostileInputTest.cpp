@@ -145,12 +145,40 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
   ASSERT_EQ(run_command(kArpsim + " frame --out " + d.file("x.png")).status, 0);
   ASSERT_EQ(run_command(kArpsim + " tracker synth --motion rotate --seconds 1 --out " + d.file("t.csv")).status, 0);
   std::ofstream(d.file("d.txt")) << "timestamp frameId w x y z\n0 0 1 0 0 0\n1 1 1 0 0 0\n";
+  ASSERT_EQ(::mkfifo(d.file("fifo").c_str(), 0600), 0);  // an output onto it would replace the node
   const auto size_of = [&](const std::string& f) { return fs::file_size(d.file(f)); };
   const auto png = size_of("x.png"), csv = size_of("t.csv"), txt = size_of("d.txt");
   expect_refused("outputs", d);
   EXPECT_EQ(size_of("x.png"), png);
   EXPECT_EQ(size_of("t.csv"), csv);
   EXPECT_EQ(size_of("d.txt"), txt);
+  EXPECT_TRUE(fs::is_fifo(d.file("fifo")));
+}
+
+// An output that cannot be written in full (a full disk; here a file-size limit, its signal ignored as a
+// shell's `ulimit -f` leaves it) is an error naming the file and the reason, and leaves nothing: not a
+// truncated image behind a success (OpenImageIO's writers do not report a short write), not the picture and
+// account of a plan whose configuration failed. A symbolic link named as an output keeps being a link.
+TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
+  TempDir d;
+  std::ofstream(d.file("s.json")) << R"({"name": "tiny", "extent": {"min": [-5, -1, -5], "max": [5, 5, 5]},
+    "objects": [{"name": "ball", "sphere": 0.3, "position": [0, 1.6, -2]}]})";
+  std::ofstream(d.file("w.json")) << R"({"speed": 1.0, "points": [[0, 1.6, 0], [1, 1.6, 0]]})";
+  const std::string limited = "cd " + d.path() + " && trap '' XFSZ && ulimit -f 2 && timeout 120 " + kArpsim;
+  auto r = run_command(limited + " frame --scene s.json --out f.png");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("f.png: cannot write image: File too large"), std::string::npos) << r.output;
+  r = run_command(limited + " plan -q --keep-widths --objects-only --scene s.json --walk w.json -o p.json");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+  EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no temporary file";
+  // Through a link: the file it names is written, the link stays.
+  std::ofstream(d.file("real.json")) << "{}";
+  fs::create_symlink("real.json", d.file("link.json"));
+  r = run_command("cd " + d.path() + " && " + kArpsim + " run -q --frames 1 --every 0 --report link.json");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::is_symlink(d.file("link.json")));
+  EXPECT_GT(fs::file_size(d.file("real.json")), 100u);
 }
 
 TEST(HostileInput, SameFileIsTheSameInodeOrTheSamePath) {

@@ -217,6 +217,20 @@ TEST(MotionSummary, ACleanTraceIsDescribedAndNotFlagged) {
   EXPECT_NE(describe(s)[0].find("2001 samples over 2.000 s, 1000.0 Hz"), std::string::npos) << describe(s)[0];
 }
 
+// The widest trace the reader takes (+-9e6 s) is 1.8e19 ps long: more than int64_t holds. Its span and
+// interval are the closed form's, not a wrapped (negative) figure.
+TEST(MotionSummary, TheWidestAcceptedTraceHasItsOwnSpan) {
+  std::vector<PoseSample> v(2);
+  v[0].time_ps = -9'000'000'000'000'000'000;
+  v[1].time_ps = 9'000'000'000'000'000'000;
+  v[1].orientation = glm::angleAxis(glm::radians(90.0), glm::dvec3(0, 1, 0));
+  const auto s = summarize_motion(v);
+  EXPECT_NEAR(s.span_s, 1.8e7, 1e-3);
+  EXPECT_NEAR(s.median_period_s, 1.8e7, 1e-3);
+  EXPECT_NEAR(s.peak_speed_dps, 90.0 / 1.8e7, 1e-12);
+  EXPECT_NE(describe(s)[0].find("2 samples over 18000000.000 s"), std::string::npos) << describe(s)[0];
+}
+
 // The quirks the issue found in real datasets, each built here and each flagged.
 TEST(MotionSummary, FlagsWhatAHumanHeadDoesNot) {
   // Milliseconds read as seconds: a 60 Hz tracker looks like 60 kHz and 6000 deg/s.

@@ -22,6 +22,9 @@ double tilt_deg(const glm::dquat& q) {
 }
 
 double seconds(int64_t ps) { return static_cast<double>(ps) * 1e-12; }
+// From a to b in seconds, in double: two sample times within the accepted +-9e6 s are up to 1.8e19 ps apart,
+// more than int64_t holds (at that span a double's step is a few nanoseconds: enough for a summary).
+double seconds_between(int64_t a_ps, int64_t b_ps) { return (static_cast<double>(b_ps) - static_cast<double>(a_ps)) * 1e-12; }
 
 }  // namespace
 
@@ -29,11 +32,11 @@ MotionSummary summarize_motion(const std::vector<PoseSample>& v, const MotionPla
   MotionSummary s;
   s.samples = v.size();
   if (v.empty()) return s;
-  s.span_s = seconds(v.back().time_ps - v.front().time_ps);
+  s.span_s = seconds_between(v.front().time_ps, v.back().time_ps);
   std::vector<double> dts;
   dts.reserve(v.size());
   for (size_t i = 1; i < v.size(); ++i)
-    if (v[i].time_ps > v[i - 1].time_ps) dts.push_back(seconds(v[i].time_ps - v[i - 1].time_ps));
+    if (v[i].time_ps > v[i - 1].time_ps) dts.push_back(seconds_between(v[i - 1].time_ps, v[i].time_ps));
   if (!dts.empty()) {
     std::vector<double> sorted = dts;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
@@ -56,12 +59,11 @@ MotionSummary summarize_motion(const std::vector<PoseSample>& v, const MotionPla
     }
     if (i == 0) continue;
     if (v[i].orientation == v[i - 1].orientation) ++s.repeats;
-    const int64_t dt_ps = v[i].time_ps - v[i - 1].time_ps;
-    if (dt_ps == 0) {
+    if (v[i].time_ps == v[i - 1].time_ps) {
       ++s.same_time;
       continue;
     }
-    const double dt = seconds(dt_ps);
+    const double dt = seconds_between(v[i - 1].time_ps, v[i].time_ps);
     if (dt < lim.burst_fraction * s.median_period_s) ++s.bursts;
     if (dt > lim.gap_periods * s.median_period_s && dt > 0.02) {
       ++s.gaps;

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
 
 #include <cmath>
 #include <functional>
@@ -113,11 +114,20 @@ std::vector<PoseSample> MotionSpec::make(double start_s, double seconds) const {
   return out;
 }
 
+namespace {
+// The fastest synthetic turn: far past a head's few thousand degrees a second, short of where an angle's
+// arithmetic over a run's hour loses its degrees.
+constexpr double kMaxTurnDps = 1e6;
+constexpr const char* kTurnLimit = "must be -1e6 .. 1e6 degrees per second";
+}  // namespace
+
 MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   if (!(seconds > 0.0) || !std::isfinite(seconds)) throw InputError("--seconds", "", "must be a positive number");
   if (!(hz > 0.0) || !std::isfinite(hz)) throw InputError("--hz", "", "must be a positive number");
+  if (hz < 1.0 || hz > 1e6) throw InputError("--hz", printf_text("%g", hz), "must be 1 .. 1e6 Hz (a tracker's sample rate)");
   if (seconds * hz > 1e8) throw InputError("--seconds", "", "more than 1e8 samples; lower --seconds or --hz");
   if (!(noise >= 0.0) || !std::isfinite(noise)) throw InputError("--noise", "", "must be >= 0 degrees");
+  if (noise > 180.0) throw InputError("--noise", printf_text("%g", noise), "must be at most 180 degrees a sample");
   if (!std::isfinite(start_s) || std::abs(start_s) > kPoseTimeLimitS)
     throw InputError("--start", "", "must be within +-" + pose_time_limit_text());
   SamplingSpec s;
@@ -128,16 +138,19 @@ MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   s.seed = seed;
   const glm::dvec3 ax = parse_axis(axis);
   if (motion == "rotate") {
-    if (!std::isfinite(rate)) throw InputError("--rate", "", "must be finite");
+    if (!(std::abs(rate) <= kMaxTurnDps)) throw InputError("--rate", printf_text("%g", rate), kTurnLimit);
     return MotionGenerator(ax, rotation_angle(rate), s);
   }
   if (motion == "shake") {
     if (!(frequency > 0.0) || !std::isfinite(frequency)) throw InputError("--frequency", "", "must be positive");
-    if (!std::isfinite(peak)) throw InputError("--peak", "", "must be finite");
+    if (frequency > hz / 2.0)
+      throw InputError("--frequency", printf_text("%g", frequency),
+                       "is above half the sample rate (--hz " + printf_text("%g", hz) + "): the samples would alias it");
+    if (!(std::abs(peak) <= kMaxTurnDps)) throw InputError("--peak", printf_text("%g", peak), kTurnLimit);
     return MotionGenerator(ax, shake_angle(peak, frequency), s);
   }
   if (!(period > 0.0) || !std::isfinite(period)) throw InputError("--period", "", "must be positive");
-  if (!std::isfinite(amplitude)) throw InputError("--amplitude", "", "must be finite");
+  if (!(std::abs(amplitude) <= 360.0)) throw InputError("--amplitude", printf_text("%g", amplitude), "must be -360 .. 360 degrees");
   return MotionGenerator(ax, pendulum_angle(amplitude, period), s);
 }
 

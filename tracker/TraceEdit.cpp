@@ -28,7 +28,7 @@ std::vector<PoseSample> resample(const std::vector<PoseSample>& v, double hz) {
   if (v.empty()) return out;
   const int64_t t0 = v.front().time_ps, t1 = v.back().time_ps;
   const double step_ps = 1e12 / hz;
-  const double last_k = std::floor(static_cast<double>(t1 - t0) / step_ps);
+  const double last_k = std::floor((static_cast<double>(t1) - static_cast<double>(t0)) / step_ps);
   if (last_k >= kMaxResampled) throw std::invalid_argument("resample: more than 10 million samples at this rate");
   out.reserve(static_cast<size_t>(last_k) + 1);
   size_t j = 0;  // v[j] <= t < v[j + 1]
@@ -41,7 +41,9 @@ std::vector<PoseSample> resample(const std::vector<PoseSample>& v, double hz) {
     p.has_angular_velocity = false;
     if (j + 1 < v.size() && v[j + 1].time_ps > v[j].time_ps) {
       const PoseSample& b = v[j + 1];
-      const double f = static_cast<double>(t - v[j].time_ps) / static_cast<double>(b.time_ps - v[j].time_ps);
+      // (in double: two samples within the accepted +-9e6 s can be more ps apart than int64_t holds)
+      const double f = (static_cast<double>(t) - static_cast<double>(v[j].time_ps)) /
+                       (static_cast<double>(b.time_ps) - static_cast<double>(v[j].time_ps));
       p.orientation = glm::normalize(glm::slerp(v[j].orientation, b.orientation, f));  // GLM's slerp goes the short way
       if (p.has_position && b.has_position) p.position = v[j].position + f * (b.position - v[j].position);
     }
@@ -57,7 +59,7 @@ void check_resample_rate(double hz) {
 std::vector<PoseSample> resample_as_asked(const std::vector<PoseSample>& samples, double hz) {
   check_resample_rate(hz);
   const std::string rate = std::to_string(hz);
-  const double span_s = static_cast<double>(samples.back().time_ps - samples.front().time_ps) * 1e-12;
+  const double span_s = (static_cast<double>(samples.back().time_ps) - static_cast<double>(samples.front().time_ps)) * 1e-12;
   if (span_s * hz >= kMaxResampled)
     throw InputError("--resample", rate,
                      "would make " + std::to_string(static_cast<int64_t>(span_s * hz)) + " samples of this " +

@@ -6,6 +6,7 @@
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "MotionOptions.hpp"
+#include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
 #include "host/cubemap/ImageFiles.hpp"
@@ -26,6 +27,7 @@ int run_plan(PlanArgs& a) {
   sim::PlanRequest& r = a.req;
   r.base = a.cfg.resolve();
   r.base_source = (a.cfg.file.empty() ? std::string("the default configuration") : a.cfg.file) + (a.cfg.sets.empty() ? "" : " with --set");
+  if (a.out.empty()) throw InputError("--out", "", "is empty: name the configuration file to write (its .md and .tiles.png go beside it)");
   const std::string md = std::filesystem::path(a.out).replace_extension(".md").string();
   const std::string tiles = std::filesystem::path(a.out).replace_extension(".tiles.png").string();
   check_output_paths({{"--out", a.out}, {"--out's account", md}, {"--out's tile picture", tiles}},
@@ -36,10 +38,12 @@ int run_plan(PlanArgs& a) {
   const sim::Plan p = sim::make_plan(r);
   progress.finish();
   const std::string text = sim::plan_markdown(p, r);
-  // The picture and the account first, the configuration last: a failure leaves no new plan beside an old picture.
-  host::write_rgb8(tiles, sim::plan_tiles_image(p));
-  write_text_atomic(md, text);
-  write_text_atomic(a.out, sim::plan_config_text(p));
+  // The three together or none: a failure leaves no new plan beside an old picture, nor a picture of no plan.
+  OutputGroup outputs;
+  host::write_rgb8_file(outputs.stage(tiles), sim::plan_tiles_image(p), tiles);
+  write_text_file(outputs.stage(md), text, md);
+  write_text_file(outputs.stage(a.out), sim::plan_config_text(p), a.out);
+  outputs.commit();
   std::printf("%s\narpsim plan: %s, %s and %s (the tiles each memory can be drawn on) written; run with --config %s\n", text.c_str(),
               a.out.c_str(), md.c_str(), tiles.c_str(), a.out.c_str());
   return 0;

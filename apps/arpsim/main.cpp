@@ -31,8 +31,10 @@ int sc_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);  // prints the message, or the help (status 0)
-    return rc == 0 ? 0 : 2;      // a malformed option is bad input like any other: status 2
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help: the help, status 0
+    // A malformed option is bad input like any other: said as every other error is, status 2.
+    std::fprintf(stderr, "arpsim: error: %s\nRun with --help for more information.\n", e.what());
+    return 2;
   }
   try {
     for (const auto& [sub, run] : runners)

@@ -154,18 +154,23 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>&
   return img;
 }
 
-void write_rgb8(const std::string& path, const RgbImage& img) {
-  const Oiio& api = oiio(path);
-  const fs::path tmp = temp_path_beside(path);  // keeps the extension: OpenImageIO picks the format by it
+void write_rgb8_file(const fs::path& file, const RgbImage& img, const std::string& shown) {
+  const Oiio& api = oiio(shown);
   char err[kErrorLength] = "";
-  const int rc = api.write(tmp.string().c_str(), img.width, img.height, img.rgb.data(), err, sizeof err);
-  if (rc == 0) {
-    commit_temp_file(tmp, path);
-    return;
+  const int rc = api.write(file.string().c_str(), img.width, img.height, img.rgb.data(), err, sizeof err);
+  if (rc == 1) throw InputError(shown, "", "no image format for extension '" + fs::path(shown).extension().string() + "': " + err);
+  if (rc != 0) throw InputError(shown, "", "cannot write image: " + std::string(err));
+}
+
+void write_rgb8(const std::string& path, const RgbImage& img) {
+  const fs::path tmp = temp_path_beside(path);  // keeps the extension: OpenImageIO picks the format by it
+  try {
+    write_rgb8_file(tmp, img, path);
+  } catch (...) {
+    discard_temp_file(tmp);
+    throw;
   }
-  discard_temp_file(tmp);
-  if (rc == 1) throw InputError(path, "", "no image format for extension '" + fs::path(path).extension().string() + "': " + err);
-  throw InputError(path, "", "cannot write image: " + std::string(err));
+  commit_temp_file(tmp, path);
 }
 
 }  // namespace arp::host

@@ -2,6 +2,7 @@
 // writing atomically (a temporary file in the same folder, then a rename), so
 // a failed run never leaves a half-written image.
 #pragma once
+#include <filesystem>
 #include <functional>
 #include <cstdint>
 #include <string>
@@ -24,7 +25,11 @@ constexpr uint64_t kMaxImageBytes = uint64_t{1} << 30;
 // a gigabyte first); it throws to refuse.
 RgbImage read_rgb8(const std::string& path, const std::function<void(int width, int height)>& check_size = {});
 
-// Format from the extension (.png, .exr, .tif, ...). InputError naming the file on failure.
+// Format from the extension (.png, .exr, .tif, ...), through a temporary file renamed into place.
+// InputError naming the file on failure, with the reason (a full disk, a file-size limit: never a
+// truncated image left behind a success).
 void write_rgb8(const std::string& path, const RgbImage& img);
+// The same written to `file` as it is (a temporary path an arp::OutputGroup staged), errors naming `shown`.
+void write_rgb8_file(const std::filesystem::path& file, const RgbImage& img, const std::string& shown);
 
 }  // namespace arp::host

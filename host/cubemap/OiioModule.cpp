@@ -5,9 +5,12 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -70,17 +73,36 @@ void arp_oiio_close(void* image) {
 }
 
 int arp_oiio_write(const char* path, int width, int height, const unsigned char* rgb, char* err, size_t err_len) {
+  // Encoded into memory where the writer can, and stored here: OpenImageIO's writers do not report a short
+  // write (a full disk, a file-size limit) and would leave a truncated image behind a success. (Declared
+  // before the writer, which must not outlive them.)
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) {
     say(err, err_len, OIIO::geterror());
     return 1;
   }
   const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  const bool in_memory = out->supports("ioproxy") && out->set_ioproxy(&memory);
   bool ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, rgb);
   std::string e = ok ? "" : out->geterror();
   ok = out->close() && ok;
-  if (ok) return 0;
-  say(err, err_len, e.empty() ? out->geterror() : e);
+  if (!ok) {
+    say(err, err_len, e.empty() ? out->geterror() : e);
+    return 2;
+  }
+  if (!in_memory) return 0;
+  std::FILE* f = std::fopen(path, "wb");
+  if (!f) {
+    say(err, err_len, std::strerror(errno));
+    return 2;
+  }
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size() && std::fflush(f) == 0;
+  const int write_errno = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (written && closed) return 0;
+  say(err, err_len, std::strerror(written ? errno : write_errno));
   return 2;
 }
 }

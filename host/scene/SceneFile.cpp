@@ -21,6 +21,8 @@ using nlohmann::json;
 
 namespace {
 
+constexpr size_t kMaxNameChars = 256;  // a scene's or an object's name
+
 // One JSON object read key by key; leftovers are unknown keys.
 class Fields {
  public:
@@ -66,6 +68,13 @@ class Fields {
     if (!j_.at(k).is_string()) fail(k, "must be a string");
     return j_.at(k).get<std::string>();
   }
+  // A name: written back into plans (memory.assignment) and quoted in messages, so of a bounded length.
+  std::string name(const std::string& def) {
+    std::string n = text("name", def);
+    if (n.size() > kMaxNameChars)
+      fail("name", "is " + std::to_string(n.size()) + " characters long; a name may have at most " + std::to_string(kMaxNameChars));
+    return n;
+  }
   const json* sub(const char* k) {
     seen_.insert(k);
     return j_.contains(k) ? &j_.at(k) : nullptr;
@@ -98,7 +107,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
   const std::string base = top.text("base", "");
   if (!base.empty() && base != "gallery") top.fail("base", "must be \"gallery\" (the built-in scene) or absent");
   Scene s = base.empty() ? Scene{} : make_gallery();
-  s.name = top.text("name", base.empty() ? "scene" : base);
+  s.name = top.name(base.empty() ? "scene" : base);
   if (const json* ext = top.sub("extent")) {
     Fields e(*ext, source, "extent");
     s.extent_min = e.vec3("min", s.extent_min, -kWorldLimitM, kWorldLimitM);
@@ -153,7 +162,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
       if (it == textures.end()) it = textures.emplace(file, std::make_shared<RgbImage>(read_rgb8(file))).first;
       mat.texture = it->second;
     }
-    SceneObject& so = add_object(s, o.text("name", "object " + std::to_string(i)), mesh,
+    SceneObject& so = add_object(s, o.name("object " + std::to_string(i)), mesh,
                                  o.vec3("position", {0, 0, 0}, -kWorldLimitM, kWorldLimitM), mat);
     so.rotation_deg = o.vec3("rotation_deg", {0, 0, 0}, -3600, 3600);
     so.scale = o.vec3("scale", {1, 1, 1}, 1e-6, 1e6);

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "CubeFaceAddressGenerator.hpp"
+#include "common/InputError.hpp"
 #include "PipelineSchedule.hpp"
 #include "TileMap.hpp"
 
@@ -230,7 +231,7 @@ std::string trimmed(const std::string& s) {
 // A memory index in decimal digits only, below `memories`.
 bool memory_index(const std::string& s, int memories, int& out, std::string& why) {
   if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) {
-    why = "\"" + s + "\" is not a memory number";
+    why = "\"" + quoted(s) + "\" is not a memory number";
     return false;
   }
   out = std::stoi(s);
@@ -261,6 +262,10 @@ bool ObjectAssignment::parse(const std::string& text, int memories, ObjectAssign
   }
   const std::string range = trimmed(text.substr(colon + 1));
   const size_t dash = range.find('-');
+  if (dash == 0) {
+    why = "\"" + quoted(range) + "\" is not a memory number (nor a range a-b of them)";
+    return false;
+  }
   if (!memory_index(trimmed(range.substr(0, dash)), memories, a.fastest, why)) return false;
   a.slowest = a.fastest;
   if (dash != std::string::npos && !memory_index(trimmed(range.substr(dash + 1)), memories, a.slowest, why)) return false;
@@ -321,6 +326,26 @@ std::vector<ConfigIssue> validate(const ArpConfig& c) {
   if (!c.memory.tile_pool.empty() && static_cast<int>(c.memory.tile_pool.size()) != c.memory.count)
     ck.fail("memory.tile_pool", "has " + std::to_string(c.memory.tile_pool.size()) + " numbers and memory.count is " +
                                     std::to_string(c.memory.count) + ": one for each memory, or none (no pool)");
+  if (issues.empty() && static_cast<int>(c.memory.tile_pool.size()) == c.memory.count) {
+    // A pool holds tiles of the memory's two buffers: more slots than both could ever use describe memory
+    // that is never there (and a hardware figure of it).
+    std::vector<TileMap> maps;
+    std::string why;
+    const bool listed = !c.memory.tiles.empty() && tile_maps(c.memory, maps, why);
+    const TileMap whole(c.memory.face_size, true);
+    for (int m = 0; m < c.memory.count; ++m) {
+      int64_t held = 0;
+      for (int f = 0; f < 6; ++f)
+        if (c.memory.faces[static_cast<size_t>(f)] != 0) held += (listed ? maps[static_cast<size_t>(m)] : whole).tiles(f);
+      if (c.memory.tile_pool[static_cast<size_t>(m)] > 2 * held) {
+        ck.fail("memory.tile_pool", "memory " + std::to_string(m) + "'s pool of " + std::to_string(c.memory.tile_pool[static_cast<size_t>(m)]) +
+                                        " slots is more than its two buffers can use: " + std::to_string(held) +
+                                        " tiles each (its faces present at face size " + std::to_string(c.memory.face_size) +
+                                        (listed ? ", as memory.tiles lists them" : "") + "), at most " + std::to_string(2 * held));
+        break;
+      }
+    }
+  }
   if (issues.empty() && !c.memory.assignment.empty()) {
     std::vector<ObjectAssignment> a;
     std::string why;
