@@ -242,6 +242,9 @@ TEST(TraceFile, BadTracesNameTheFileLineAndReason) {
   EXPECT_NE(error_of(h + "1e300,1,0,0,0\n").find("outside"), std::string::npos);
   EXPECT_NE(error_of(h + "0,1,0,0,0,\n").find("6 columns"), std::string::npos);
   EXPECT_EQ(error_of("# a comment\n\n" + h + "  0 , 1 ,0,0,0\n0,1,0,0,0\n"), "no error");  // spaces, equal times
+  // A spreadsheet's byte-order mark before the header is read past; lines ending in CR alone are named as such.
+  EXPECT_EQ(error_of("\xEF\xBB\xBF" + h + "0,1,0,0,0\n"), "no error");
+  EXPECT_NE(error_of("time_s,qw,qx,qy,qz\r0,1,0,0,0\r").find("line 1: lines end in a carriage return alone"), std::string::npos);
   try {
     read_trace_csv(d.file("missing.csv"));
     FAIL();

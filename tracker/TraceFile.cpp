@@ -45,6 +45,10 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
     auto fields = split(t);
     for (auto& f : fields) f = trim_blanks(f);
     if (columns == 0) {  // the header
+      // A spreadsheet's UTF-8 byte-order mark is not part of the first name (and would not be seen in a message).
+      if (!fields.empty() && fields[0].rfind("\xEF\xBB\xBF", 0) == 0) fields[0].erase(0, 3);
+      if (t.find('\r') != std::string::npos)
+        throw InputError(path, where, "lines end in a carriage return alone (CR, not LF or CR LF): save the file with LF line ends");
       if (fields.size() != 5 && fields.size() != 8)
         throw InputError(path, where, "header must be time_s,qw,qx,qy,qz or time_s,qw,qx,qy,qz,px,py,pz");
       for (size_t i = 0; i < fields.size(); ++i)

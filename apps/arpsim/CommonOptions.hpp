@@ -33,6 +33,12 @@ void strict_numbers(CLI::App& app);
 // The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
 void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, std::optional<double>& threshold_deg);
 
+// An output's name: given, it must name something (an empty --report would silently write nothing).
+inline CLI::Validator output_name() {
+  return CLI::Validator([](std::string& s) { return s.empty() ? std::string("is empty: name the file to write") : std::string(); },
+                        "", "output name");
+}
+
 // --threads: worker threads of the functional model and the scene renderer.
 void add_threads_option(CLI::App& cmd, int& threads);
 

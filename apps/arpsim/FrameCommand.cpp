@@ -87,12 +87,12 @@ Runner add_frame_command(CLI::App& app) {
   cmd->add_option("--quat", args->quat, "Orientation quaternion w,x,y,z (head frame to world) instead of angles")
       ->type_name("W,X,Y,Z");
   add_memory_options(*cmd, args->spec.memories);
-  cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str();
+  cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str()->check(output_name());
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
   cmd->add_option("--frame", args->spec.frame, "Frame index (sets the photon times)")
       ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()));
   add_threads_option(*cmd, args->spec.threads);
-  cmd->add_option("--report", args->report, "Also write a JSON report of the frame");
+  cmd->add_option("--report", args->report, "Also write a JSON report of the frame")->check(output_name());
   return [args] { return run_frame(*args); };
 }
 

@@ -66,9 +66,9 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_option("--ipd", a->req.memories.ipd_m,
                   "Distance between the eyes, metres, as run's --ipd: how far turning moves them, and where they see from")
       ->capture_default_str();
-  cmd->add_option("--texel-error", a->req.texel_error,
-                  "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
-      ->capture_default_str();
+  auto* texel_error = cmd->add_option("--texel-error", a->req.texel_error,
+                                      "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
+                          ->capture_default_str();
   cmd->add_option("--resolve", a->req.resolve,
                   "The display pixel a face's largest texel is held to: at the lens centre, or the finest (a corner)")
       ->check(CLI::IsMember({"centre", "finest"}))
@@ -86,7 +86,8 @@ Runner add_plan_command(CLI::App& app) {
       "With several memories: the share of the texels two or more memories hold that the depth code may compose from the "
       "wrong memory (default: what the starting configuration's width measures)");
   cmd->add_flag_function("--keep-widths", [a](int64_t) { a->req.size_widths = false; },
-                "Keep the starting configuration's datapath widths (no accuracy-harness search)");
+                "Keep the starting configuration's datapath widths (no accuracy-harness search)")
+      ->excludes(texel_error);  // (a bound no search is made for would be silently ignored)
   auto* objects_only = cmd->add_flag_function("--objects-only", [a](int64_t) { a->req.weigh_regions = false; },
                                               "Keep object-level priority rendering: do not weigh region priority rendering "
                                               "(memory.region_size_m 0)");

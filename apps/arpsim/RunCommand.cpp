@@ -37,12 +37,12 @@ int run(RunArgs& a) {
 }
 
 void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
-  cmd->add_option("--out-dir", o.out_dir, "Folder for frame_NNNNNN.png (created if missing)")->capture_default_str();
+  cmd->add_option("--out-dir", o.out_dir, "Folder for frame_NNNNNN.png (created if missing)")->capture_default_str()->check(output_name());
   cmd->add_option("--every", o.every, "Write every Nth frame as an image (0: none)")->capture_default_str();
   cmd->add_flag("--photon-times", o.photon_times, "Also write photon_NNNNNN.csv (every pixel's photon time) with each image");
-  cmd->add_option("--report", o.report, "JSON report: latencies, stage and FIFO statistics, underflows, speed");
-  cmd->add_option("--csv", o.csv, "CSV, one row per frame: underflows, latency, fingerprints");
-  cmd->add_option("--vcd", o.vcd, "VCD waveform (lt, cycle, detailed); a bare name goes into waveforms/; a .gtkw is written beside it");
+  cmd->add_option("--report", o.report, "JSON report: latencies, stage and FIFO statistics, underflows, speed")->check(output_name());
+  cmd->add_option("--csv", o.csv, "CSV, one row per frame: underflows, latency, fingerprints")->check(output_name());
+  cmd->add_option("--vcd", o.vcd, "VCD waveform (lt, cycle, detailed); a bare name goes into waveforms/; a .gtkw is written beside it")->check(output_name());
   cmd->add_option("--vcd-lines", o.vcd_lines, "Trace only scanlines START:END counted from the first frame's start");
   cmd->add_option("--vcd-time-us", o.vcd_time_us, "Trace only START:END microseconds of absolute simulated time");
   cmd->add_option("--vcd-signals", o.vcd_signals,
