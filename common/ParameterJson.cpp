@@ -1,5 +1,7 @@
 #include "ParameterJson.hpp"
 
+#include <cmath>
+
 namespace arp {
 
 using nlohmann::json;
@@ -23,6 +25,10 @@ bool integer_of(const json& v, int64_t& out, std::string& why) {
     return true;
   }
   why = "must be an integer, got " + brief(v);
+  // A whole number written with an exponent or a point (1e11, 4.0) is read as a real number: say how to write it.
+  if (v.is_number_float() && std::isfinite(v.get<double>()) && std::floor(v.get<double>()) == v.get<double>() &&
+      std::abs(v.get<double>()) < 9.2e18)
+    why += " (an integer key is written in digits alone: " + std::to_string(static_cast<int64_t>(v.get<double>())) + ")";
   return false;
 }
 
