@@ -13,6 +13,11 @@ constexpr int64_t kPsPerSecond = 1'000'000'000'000;
 inline double ps_to_seconds(int64_t ps) { return static_cast<double>(ps) * 1e-12; }
 inline int64_t seconds_to_ps(double s) { return static_cast<int64_t>(std::llround(s * 1e12)); }
 
+// How far from the origin objects, eyes, walks and traced heads may be, metres, per coordinate. The
+// renderer works relative to the eye in double precision, so a view this far out renders as the same
+// view at the origin (tests/ExtremesTest measures it); farther positions are refused where they are read.
+constexpr double kWorldLimitM = 1e6;
+
 constexpr double kPi = 3.14159265358979323846;
 constexpr double deg_to_rad(double deg) { return deg * kPi / 180.0; }
 constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }

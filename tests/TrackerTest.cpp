@@ -244,6 +244,9 @@ TEST(TraceFile, BadTracesNameTheFileLineAndReason) {
   EXPECT_EQ(error_of("# a comment\n\n" + h + "  0 , 1 ,0,0,0\n0,1,0,0,0\n"), "no error");  // spaces, equal times
   // A spreadsheet's byte-order mark before the header is read past; lines ending in CR alone are named as such.
   EXPECT_EQ(error_of("\xEF\xBB\xBF" + h + "0,1,0,0,0\n"), "no error");
+  EXPECT_NE(error_of(h + "0x1,1,0,0,0\n").find("time_s '0x1' is not a decimal number"), std::string::npos);
+  EXPECT_NE(error_of("time_s,qw,qx,qy,qz,px,py,pz\n0,1,0,0,0,1e300,0,0\n").find("px 1e300 is outside +-1000000 m"),
+            std::string::npos);
   EXPECT_NE(error_of("time_s,qw,qx,qy,qz\r0,1,0,0,0\r").find("line 1: lines end in a carriage return alone"), std::string::npos);
   try {
     read_trace_csv(d.file("missing.csv"));

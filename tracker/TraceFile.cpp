@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/AtomicFile.hpp"
+#include "common/Units.hpp"
 #include "common/InputError.hpp"
 #include "common/InputFile.hpp"
 
@@ -68,6 +69,8 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
       v[i] = std::strtod(s, &end);
       if (fields[i].empty() || end == s || *end != '\0')
         throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a number");
+      if (fields[i].find_first_of("xX") != std::string::npos)  // (strtod reads C's hexadecimal numbers: 0x1 would be 1 s)
+        throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a decimal number");
       if (!std::isfinite(v[i]) || (errno == ERANGE && std::abs(v[i]) > 1.0))
         throw InputError(path, where, std::string(kNames[i]) + " '" + quoted(fields[i]) + "' is not a finite number");
     }
@@ -80,6 +83,10 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
     p.time_ps = std::llround(v[0] * 1e12);
     p.orientation = glm::dquat(v[1] / n, v[2] / n, v[3] / n, v[4] / n);
     if (columns == 8) {
+      for (size_t i = 5; i < 8; ++i)
+        if (std::abs(v[i]) > kWorldLimitM)
+          throw InputError(path, where, std::string(kNames[i]) + " " + quoted(fields[i]) + " is outside +-" +
+                                            std::to_string(static_cast<int64_t>(kWorldLimitM)) + " m (the world's reach)");
       p.has_position = true;
       p.position = glm::dvec3(v[5], v[6], v[7]);
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Mesh.hpp"
+#include "common/Units.hpp"
 #include "host/cubemap/CubeMapImages.hpp"
 
 namespace arp::host {
@@ -44,11 +45,8 @@ struct SceneObject {
   glm::dvec3 position_at(double t_s) const;
 };
 
-// How far from the origin objects, eyes and walks may be, metres, per coordinate. The
-// renderer works relative to the eye in double precision, so a view this far
-// out renders as the same view at the origin (tests/ExtremesTest measures
-// it); farther positions are refused where they are read.
-constexpr double kWorldLimitM = 1e6;
+// How far from the origin objects, eyes, walks and traced heads may be (common/Units.hpp).
+using arp::kWorldLimitM;
 
 struct Scene {
   std::string name;
