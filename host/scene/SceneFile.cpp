@@ -2,6 +2,7 @@
 
 #include "Gallery.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -187,6 +188,10 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
         if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
           f.fail("points", "point " + std::to_string(k) + " must be [x, y, z]");
         so.animation.path.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+        const glm::dvec3& q = so.animation.path.back();
+        if (std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}) > kWorldLimitM)
+          f.fail("points", "point " + std::to_string(k) + " has a coordinate beyond +-" +
+                               std::to_string(static_cast<int64_t>(kWorldLimitM)) + " m (the world's reach)");
       }
     }
     o.finish();
