@@ -1,5 +1,6 @@
 #include "AtomicFile.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -12,21 +13,11 @@ namespace arp {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The file an output replaces: a symbolic link's file (the link stays a link), else the path itself.
-fs::path replaced_file(const std::string& target) {
-  std::error_code ec;
-  if (!fs::is_symlink(target, ec)) return target;
-  const fs::path resolved = fs::weakly_canonical(target, ec);
-  return ec ? fs::path(target) : resolved;
-}
-
-}  // namespace
-
 fs::path temp_path_beside(const std::string& target) {
-  const fs::path t = replaced_file(target);
+  const fs::path t(target);
   std::error_code ec;
+  // What it names, through links (/dev/stdout is a link to a descriptor): a link to a file is replaced, never
+  // followed (see the header); one to anything else is refused as that thing is.
   const fs::file_status st = fs::status(t, ec);
   if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st))
     throw InputError(target, "",
@@ -42,12 +33,16 @@ fs::path temp_path_beside(const std::string& target) {
     throw InputError(target, "", fs::exists(dir, ec) ? dir.string() + " is a file, not a folder"
                                                      : "folder " + dir.string() + " does not exist");
   }
-  return dir / ("." + t.stem().string() + ".tmp-" + std::to_string(::getpid()) + t.extension().string());
+  // ".NAME.tmp-PID.EXT", its stem cut so that it is no longer than the longest name a file system takes
+  // (255): any name the target may have, its temporary may too.
+  const std::string tail = ".tmp-" + std::to_string(::getpid()) + t.extension().string();
+  const std::string stem = t.stem().string();
+  return dir / ("." + stem.substr(0, std::min(stem.size(), 255 - std::min<size_t>(255, 1 + tail.size()))) + tail);
 }
 
 void commit_temp_file(const fs::path& tmp, const std::string& target) {
   std::error_code ec;
-  fs::rename(tmp, replaced_file(target), ec);
+  fs::rename(tmp, target, ec);
   if (ec) {
     discard_temp_file(tmp);
     throw InputError(target, "", "cannot move the finished file into place: " + ec.message());
@@ -89,8 +84,11 @@ fs::path OutputGroup::stage(const std::string& target) {
   return staged_.back().first;
 }
 
+void OutputGroup::adopt(const fs::path& tmp, const std::string& target) { staged_.emplace_back(tmp, target); }
+
 void OutputGroup::commit() {
-  // Renames cannot run out of space: once every file is written, they all appear.
+  // Renames cannot run out of space: once every file is written, they appear one after the other (a rename
+  // that fails midway -- a folder put in the way meanwhile -- leaves the ones before it in place).
   while (!staged_.empty()) {
     const auto s = staged_.front();
     staged_.erase(staged_.begin());

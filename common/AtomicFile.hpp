@@ -9,13 +9,13 @@
 
 namespace arp {
 
-// A temporary path beside the file `target` names (beside the file a symbolic link names, so the rename
-// replaces that file and keeps the link); InputError naming `target` if its folder does not exist, or if
-// it names something other than a file (a device, a FIFO, a socket: a rename would replace the node).
+// A temporary path beside `target`; InputError naming `target` if its folder does not exist, or if it
+// names something other than a file (a device, a FIFO, a socket: a rename would replace the node). A
+// symbolic link named as an output is replaced by the file, not followed (as `sed -i` does): following it
+// would let a link planted in a shared folder choose what a run as root overwrites.
 std::filesystem::path temp_path_beside(const std::string& target);
 
-// Moves the finished temporary file onto `target` (the file a link names); on failure removes it and
-// throws InputError.
+// Moves the finished temporary file onto `target`; on failure removes it and throws InputError.
 void commit_temp_file(const std::filesystem::path& tmp, const std::string& target);
 
 // Removes a temporary file after a failed write (never throws).
@@ -27,8 +27,9 @@ void write_text_file(const std::filesystem::path& file, const std::string& text,
 // Writes text to path through a temporary file and a rename; InputError naming the path on failure.
 void write_text_atomic(const std::string& path, const std::string& text);
 
-// Several outputs of one command that appear together or not at all: each is written to its temporary
-// path, and commit() renames them all; those not committed are removed when the group goes.
+// Several outputs of one command, every one written before any is moved into place: each is written to its
+// temporary path, and commit() renames them all; those not committed are removed when the group goes. A
+// failed write (a full disk) leaves none of them.
 class OutputGroup {
  public:
   OutputGroup() = default;
@@ -37,6 +38,8 @@ class OutputGroup {
   ~OutputGroup();
   // The temporary path to write `target` to (temp_path_beside).
   std::filesystem::path stage(const std::string& target);
+  // A temporary file already made for `target` (temp_path_beside), now the group's to commit or remove.
+  void adopt(const std::filesystem::path& tmp, const std::string& target);
   void commit();
 
  private:

@@ -191,8 +191,21 @@ std::string LatencyStudy::run() {
     for (const auto& w : tracker::motion_warnings(ms)) note("warning: " + w);
     // Played from its first sample at time zero.
     const int64_t t0 = motion.front().time_ps;
+    // Only what is played, and a sample after it: a trace may span +-9e6 s, more picoseconds from its first
+    // sample than int64_t holds (offsets are compared in double before any is subtracted).
+    auto offset_s = [&](const tracker::PoseSample& s) { return (static_cast<double>(s.time_ps) - static_cast<double>(t0)) * 1e-12; };
+    const double have = offset_s(motion.back());
+    size_t keep = 1;
+    while (keep < motion.size() && offset_s(motion[keep]) <= t_first + span_s) ++keep;
+    if (keep < motion.size()) {
+      if (offset_s(motion[keep]) >= 9e6)
+        throw InputError(a.trace, "", "after its sample at " + printf_text("%.3f", offset_s(motion[keep - 1])) +
+                                          " s from its first, the next is " + printf_text("%.6g", offset_s(motion[keep])) +
+                                          " s from it: more than the laboratory's picosecond clock holds");
+      ++keep;
+    }
+    motion.resize(keep);
     for (auto& s : motion) s.time_ps -= t0;
-    const double have = static_cast<double>(motion.back().time_ps) * 1e-12;
     if (have < t_first + span_s)
       throw InputError(a.trace, "", "the trace lasts " + printf_text("%.3f", have) + " s; the laboratory needs " + printf_text("%.3f", t_first + span_s) +
                                         " s (the pipelines' latency plus --frames)");

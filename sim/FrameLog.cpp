@@ -37,22 +37,17 @@ void FrameLog::add(const nlohmann::json& row, const std::string& csv_row) {
 }
 
 void FrameLog::finish(const nlohmann::json& report) {
-  // Both files written before either is moved into place: a failure leaves neither.
+  // Both files written before either is moved into place: a failure leaves neither, nor a temporary file.
+  OutputGroup outputs;
   if (csv_.is_open()) {
     csv_.close();
-    if (!csv_) {
-      discard_temp_file(csv_tmp_);
-      throw InputError(csv_path_, "", "cannot write the file");
-    }
+    outputs.adopt(csv_tmp_, csv_path_);  // (removed with the group if anything below fails)
+    if (!csv_) throw InputError(csv_path_, "", "cannot write the file");
   }
-  std::filesystem::path tmp;
   if (rows_file_.is_open()) {
     rows_file_.close();
-    if (!rows_file_) {
-      if (!csv_tmp_.empty()) discard_temp_file(csv_tmp_);
-      throw InputError(report_path_, "", "cannot write the file (its frames' rows)");
-    }
-    tmp = temp_path_beside(report_path_);
+    if (!rows_file_) throw InputError(report_path_, "", "cannot write the file (its frames' rows)");
+    const std::filesystem::path tmp = outputs.stage(report_path_);
     std::ofstream out(tmp, std::ios::binary);
     // The report's other keys, then "frames": one row per line, read back from the temporary file.
     const std::string head = dump_json(report, 2);  // "{\n  ...\n}" (or "{}")
@@ -62,16 +57,12 @@ void FrameLog::finish(const nlohmann::json& report) {
     for (int64_t i = 0; std::getline(in, line); ++i) out << (i ? ",\n    " : "\n    ") << line;
     out << (rows_ ? "\n  " : "") << "]\n}\n";
     out.close();
-    discard_temp_file(rows_tmp_);
+    in.close();
+    discard_temp_file(rows_tmp_);  // (read: its rows are in the report, or the report failed)
     rows_tmp_.clear();
-    if (!out) {
-      discard_temp_file(tmp);
-      if (!csv_tmp_.empty()) discard_temp_file(csv_tmp_);
-      throw InputError(report_path_, "", "cannot write the file");
-    }
+    if (!out) throw InputError(report_path_, "", "cannot write the file");
   }
-  if (!csv_path_.empty()) commit_temp_file(csv_tmp_, csv_path_);
-  if (!tmp.empty()) commit_temp_file(tmp, report_path_);
+  outputs.commit();
 }
 
 }  // namespace arp::sim

@@ -158,7 +158,9 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
 // An output that cannot be written in full (a full disk; here a file-size limit, its signal ignored as a
 // shell's `ulimit -f` leaves it) is an error naming the file and the reason, and leaves nothing: not a
 // truncated image behind a success (OpenImageIO's writers do not report a short write), not the picture and
-// account of a plan whose configuration failed. A symbolic link named as an output keeps being a link.
+// account of a plan whose configuration failed; a format OpenImageIO can only write to a file (SGI) is read
+// back. A symbolic link named as an output is replaced by the file, the file it named left as it was (never
+// followed: a link planted in a shared folder must not choose what is overwritten).
 TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
   TempDir d;
   std::ofstream(d.file("s.json")) << R"({"name": "tiny", "extent": {"min": [-5, -1, -5], "max": [5, 5, 5]},
@@ -168,17 +170,24 @@ TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
   auto r = run_command(limited + " frame --scene s.json --out f.png");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("f.png: cannot write image: File too large"), std::string::npos) << r.output;
+  r = run_command(limited + " frame --scene s.json --out f.sgi");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("f.sgi: cannot write image: the written file does not read back whole"), std::string::npos) << r.output;
   r = run_command(limited + " plan -q --keep-widths --objects-only --scene s.json --walk w.json -o p.json");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
-  EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no temporary file";
-  // Through a link: the file it names is written, the link stays.
+  // The run's CSV (a few hundred bytes) is written, its report (some kB) is not: neither appears.
+  r = run_command(limited + " run -q --frames 1 --every 0 --report r.json --csv c.csv");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("r.json: cannot write the file"), std::string::npos) << r.output;
+  EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no CSV, no temporary file";
   std::ofstream(d.file("real.json")) << "{}";
   fs::create_symlink("real.json", d.file("link.json"));
   r = run_command("cd " + d.path() + " && " + kArpsim + " run -q --frames 1 --every 0 --report link.json");
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_TRUE(fs::is_symlink(d.file("link.json")));
-  EXPECT_GT(fs::file_size(d.file("real.json")), 100u);
+  EXPECT_FALSE(fs::is_symlink(d.file("link.json")));
+  EXPECT_GT(fs::file_size(d.file("link.json")), 100u);
+  EXPECT_EQ(fs::file_size(d.file("real.json")), 2u);
 }
 
 TEST(HostileInput, SameFileIsTheSameInodeOrTheSamePath) {

@@ -145,7 +145,8 @@ MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
     if (!(frequency > 0.0) || !std::isfinite(frequency)) throw InputError("--frequency", "", "must be positive");
     if (frequency > hz / 2.0)
       throw InputError("--frequency", printf_text("%g", frequency),
-                       "is above half the sample rate (--hz " + printf_text("%g", hz) + "): the samples would alias it");
+                       "is above half the sample rate (--hz " + printf_text("%g", hz) +
+                           "): the samples would alias it; raise --hz or lower --frequency");
     if (!(std::abs(peak) <= kMaxTurnDps)) throw InputError("--peak", printf_text("%g", peak), kTurnLimit);
     return MotionGenerator(ax, shake_angle(peak, frequency), s);
   }

@@ -52,7 +52,7 @@ Runner add_latency_command(CLI::App& app) {
   lab::LatencySpec& s = a->spec;
   CLI::App* cmd = a->cfg.add_command(
       app, "latency", "Latency laboratory: the ARP against conventional, Slats and just-in-time pixels on one head motion (docs/latency.md)");
-  add_motion_options(*cmd, s.motion, false);
+  add_motion_options(*cmd, s.motion, false, false);  // (no --motion: a default shake these shape)
   cmd->add_option("--trace", s.trace, "Head motion from a trace file (CSV, docs/tracker.md) instead of --motion");
   cmd->add_flag("--olano", s.olano, "Olano et al.'s set-up: NTSC-like interlaced 600-pixel display, 60 deg across, 33 ms tracker");
   cmd->add_option("--frames", s.frames, "Display refreshes measured")->capture_default_str();

@@ -112,7 +112,7 @@ Runner add_live_command(CLI::App& app) {
   auto a = std::make_shared<LiveArgs>();
   CLI::App* cmd = a->cfg.add_command(app, "live", "A window showing the HMD output at the display rate as the head moves (SDL2)");
   add_memory_options(*cmd, a->spec.memories);
-  add_motion_options(*cmd, a->spec.motion, false);
+  add_motion_options(*cmd, a->spec.motion, false, false);  // (no --motion: a default shake these shape)
   cmd->add_option("--trace", a->spec.trace, "Head motion from a trace file (CSV, docs/tracker.md)");
   cmd->add_option("--live", a->spec.live, "Head motion from a tracker: usb (an Oculus Rift DK1/DK2; --device chooses one)");
   add_device_option(*cmd, a->spec.tracker);

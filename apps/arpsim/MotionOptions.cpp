@@ -15,17 +15,20 @@ void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice) {
                "only once it is known (look around, up and down, for a minute)");
 }
 
-void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required) {
+void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bool shape_needs_motion) {
   auto* o = cmd.add_option("--motion", m.motion, "Synthetic motion: rotate (constant rate), shake (sinusoid), pendulum")
                 ->check(CLI::IsMember({"rotate", "shake", "pendulum"}));
   if (required) o->required();
   // The shape of a motion means nothing without one: given alone, it is refused rather than silently unused.
-  cmd.add_option("--axis", m.axis, "Rotation axis in the head frame, x,y,z (0,1,0: yaw)")->capture_default_str()->needs(o);
-  cmd.add_option("--rate", m.rate, "rotate: degrees per second")->capture_default_str()->needs(o);
-  cmd.add_option("--peak", m.peak, "shake: peak angular velocity, degrees per second")->capture_default_str()->needs(o);
-  cmd.add_option("--frequency", m.frequency, "shake: Hz")->capture_default_str()->needs(o);
-  cmd.add_option("--amplitude", m.amplitude, "pendulum: degrees")->capture_default_str()->needs(o);
-  cmd.add_option("--period", m.period, "pendulum: seconds")->capture_default_str()->needs(o);
+  auto shape = [&](CLI::Option* opt) {
+    if (shape_needs_motion) opt->needs(o);
+  };
+  shape(cmd.add_option("--axis", m.axis, "Rotation axis in the head frame, x,y,z (0,1,0: yaw)")->capture_default_str());
+  shape(cmd.add_option("--rate", m.rate, "rotate: degrees per second")->capture_default_str());
+  shape(cmd.add_option("--peak", m.peak, "shake: peak angular velocity, degrees per second")->capture_default_str());
+  shape(cmd.add_option("--frequency", m.frequency, "shake: Hz")->capture_default_str());
+  shape(cmd.add_option("--amplitude", m.amplitude, "pendulum: degrees")->capture_default_str());
+  shape(cmd.add_option("--period", m.period, "pendulum: seconds")->capture_default_str());
   cmd.add_option("--hz", m.hz, "Tracker sample rate")->capture_default_str();
   cmd.add_option("--noise", m.noise, "Random extra rotation per sample, degrees (standard deviation)")->capture_default_str();
   cmd.add_option("--seed", m.seed, "Noise seed")->capture_default_str();

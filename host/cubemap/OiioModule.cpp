@@ -92,7 +92,17 @@ int arp_oiio_write(const char* path, int width, int height, const unsigned char*
     say(err, err_len, e.empty() ? out->geterror() : e);
     return 2;
   }
-  if (!in_memory) return 0;
+  if (!in_memory) {
+    // A writer that can only write a file (SGI, FITS ...): read back, since it too would not report a short write.
+    std::vector<unsigned char> back(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    auto in = OIIO::ImageInput::open(path);
+    const bool whole = in && in->spec().width == width && in->spec().height == height &&
+                       in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, back.data());
+    if (in) in->close();
+    if (whole) return 0;
+    say(err, err_len, "the written file does not read back whole (a full disk or a file-size limit?)");
+    return 2;
+  }
   std::FILE* f = std::fopen(path, "wb");
   if (!f) {
     say(err, err_len, std::strerror(errno));

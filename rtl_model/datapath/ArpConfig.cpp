@@ -133,7 +133,8 @@ ParameterTable<ArpConfig> make_parameters() {
   t.number_list("memory.tile_pool", [](auto& c) -> auto& { return c.memory.tile_pool; }, 16, 0, int64_t{1} << 24, "tiles",
                 "a tile pool per memory, one number per memory (none: no pool): that many 32 x 32 tile slots shared by the "
                 "memory's two buffers, each buffer's tile table naming its tiles' slots; a tile first drawn on while every "
-                "slot is taken gets none until its buffer is cleared, its texels lost and counted; 0: no pool for that memory "
+                "slot is taken gets none until its buffer is cleared, its texels lost and counted; 0: no pool for that memory; "
+                "at most twice the tiles of the memory's faces (its two buffers' worth) "
                 "(arpsim plan sizes them from the motion; docs/planning.md)");
   t.number("memory.update_frames", [](auto& c) -> auto& { return c.memory.update_frames; }, 1, MemoryConfig::kMaxUpdateFrames,
            "frames", "display frames between host updates of memory 0 (object-level priority rendering)");
