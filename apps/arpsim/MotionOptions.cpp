@@ -29,9 +29,9 @@ void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bo
   shape(cmd.add_option("--frequency", m.frequency, "shake: Hz")->capture_default_str());
   shape(cmd.add_option("--amplitude", m.amplitude, "pendulum: degrees")->capture_default_str());
   shape(cmd.add_option("--period", m.period, "pendulum: seconds")->capture_default_str());
-  cmd.add_option("--hz", m.hz, "Tracker sample rate")->capture_default_str();
-  cmd.add_option("--noise", m.noise, "Random extra rotation per sample, degrees (standard deviation)")->capture_default_str();
-  cmd.add_option("--seed", m.seed, "Noise seed")->capture_default_str();
+  shape(cmd.add_option("--hz", m.hz, "Tracker sample rate")->capture_default_str());
+  shape(cmd.add_option("--noise", m.noise, "Random extra rotation per sample, degrees (standard deviation)")->capture_default_str());
+  shape(cmd.add_option("--seed", m.seed, "Noise seed")->capture_default_str());
 }
 
 }  // namespace arp::app

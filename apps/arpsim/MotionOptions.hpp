@@ -8,8 +8,8 @@
 
 namespace arp::app {
 
-// `required`: --motion must be given. `shape_needs_motion`: --axis, --rate, --peak, --frequency, --amplitude and
-// --period are refused without --motion (run, plan: no --motion is no motion); where a default motion plays
+// `required`: --motion must be given. `shape_needs_motion`: --axis, --rate, --peak, --frequency, --amplitude,
+// --period, --hz, --noise and --seed are refused without --motion (run, plan: no --motion is no motion); where a default motion plays
 // without one (latency, live: a shake) they shape that.
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bool shape_needs_motion = true);
 // --device SERIAL|BUS:ADDR: which USB tracker, and --mag-yaw GAIN: its magnetometer's yaw correction
