@@ -37,10 +37,7 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
     source_ = tracker::trace_file_source(spec_.trace);
   } else if (!source_) {
     tracker::MotionSpec m = spec_.motion;
-    if (!m.given()) {
-      m.motion = "shake";
-      m.peak = 100;
-    }
+    if (!m.given()) m.motion = "shake";  // (at its peak: 100 deg/s by LiveSpec's default, or --peak)
     // Generated as the frames need it (a window ahead, trimmed behind): the loop starts at once and its
     // memory stays flat however long it runs. Until stopped: a day of motion, then its last pose held.
     const double span = (spec_.seconds > 0 ? spec_.seconds : 24 * 3600.0) + 1.0;

@@ -21,7 +21,12 @@ struct LiveSpec {
   dp::ArpConfig config;
   std::string config_source = "the configuration";  // names it in messages (--config's file)
   MemoryContents memories;
-  tracker::MotionSpec motion;  // default: a 100 deg/s head shake
+  // Without a motion (motion.motion empty), a head shake at motion.peak: 100 deg/s unless set (`live --peak`).
+  tracker::MotionSpec motion = [] {
+    tracker::MotionSpec m;
+    m.peak = 100;
+    return m;
+  }();
   std::string trace, live;     // --trace FILE, --live usb
   tracker::TrackerChoice tracker;  // --device, --mag-yaw, --mag-calibrate
   double seconds = 0;          // 0: until stopped
