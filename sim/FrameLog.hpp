@@ -31,6 +31,7 @@ class FrameLog {
   std::filesystem::path csv_tmp_, rows_tmp_;
   std::ofstream csv_, rows_file_;
   int64_t rows_ = 0;
+  int csv_errno_ = 0, rows_errno_ = 0;  // the system's reason at each stream's first failed write (0: none)
 };
 
 }  // namespace arp::sim

@@ -179,7 +179,7 @@ TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
   // The run's CSV (a few hundred bytes) is written, its report (some kB) is not: neither appears.
   r = run_command(limited + " run -q --frames 1 --every 0 --report r.json --csv c.csv");
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("r.json: cannot write the file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("r.json: cannot write the file: File too large"), std::string::npos) << r.output;
   EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no CSV, no temporary file";
   std::ofstream(d.file("real.json")) << "{}";
   fs::create_symlink("real.json", d.file("link.json"));

@@ -14,6 +14,7 @@
 #include "CommonOptions.hpp"
 #include "MotionOptions.hpp"
 #include "common/InputError.hpp"
+#include "common/OutputPaths.hpp"
 #include "host/cubemap/BitmapFont.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "sim/FrameImage.hpp"
@@ -53,6 +54,7 @@ int run_live(LiveArgs& a) {
   a.spec.config = a.cfg.resolve();
   a.spec.config_source = a.cfg.source();
   if (a.scale < 1 || a.scale > 8) throw InputError("--scale", "", "must be 1 .. 8");
+  check_output_paths({{"--screenshot", a.screenshot}}, {{"--config", a.cfg.file}, {"--trace", a.spec.trace}});
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER")) {
     std::fprintf(stderr, "arpsim live: no display to open a window on; run it on a desktop, or headless: xvfb-run -a arpsim live ...\n");
     return 1;

@@ -4,6 +4,7 @@
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
+#include "common/OutputPaths.hpp"
 #include "reference/accuracy/AccuracyHarness.hpp"
 
 namespace arp::app {
@@ -20,6 +21,7 @@ struct VerifyArgs {
 
 int run_verify(VerifyArgs& a) {
   const dp::ArpConfig c = a.cfg.resolve();
+  check_output_paths({{"--json", a.json}}, {{"--config", a.cfg.file}});  // before the harness's minutes, not after
   a.opt.directed = !a.no_directed;
   a.opt.aligned = !a.no_aligned;
   auto progress = std::make_shared<ProgressLine>("verify", !a.quiet);
