@@ -64,15 +64,19 @@ void write_text_file(const fs::path& file, const std::string& text, const std::s
   if (!written || !closed) throw InputError(shown, "", std::string("cannot write the file: ") + std::strerror(written ? errno : err));
 }
 
-void write_text_atomic(const std::string& path, const std::string& text) {
-  const auto tmp = temp_path_beside(path);
+void write_through_temp(const std::string& target, const std::function<void(const fs::path&)>& write) {
+  const auto tmp = temp_path_beside(target);
   try {
-    write_text_file(tmp, text, path);
+    write(tmp);
   } catch (...) {
     discard_temp_file(tmp);
     throw;
   }
-  commit_temp_file(tmp, path);
+  commit_temp_file(tmp, target);
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) {
+  write_through_temp(path, [&](const fs::path& tmp) { write_text_file(tmp, text, path); });
 }
 
 OutputGroup::~OutputGroup() {

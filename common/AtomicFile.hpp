@@ -3,6 +3,7 @@
 // detection by name still works), then rename it into place.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,10 @@ void discard_temp_file(const std::filesystem::path& tmp) noexcept;
 
 // Writes text to a file as it is (no temporary): InputError naming `shown` with the system's reason on failure.
 void write_text_file(const std::filesystem::path& file, const std::string& text, const std::string& shown);
+
+// Calls write(temporary path) for `target`, then renames the temporary into place; a write that throws
+// leaves no temporary behind (and its exception goes on).
+void write_through_temp(const std::string& target, const std::function<void(const std::filesystem::path&)>& write);
 
 // Writes text to path through a temporary file and a rename; InputError naming the path on failure.
 void write_text_atomic(const std::string& path, const std::string& text);

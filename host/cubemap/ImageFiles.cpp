@@ -163,14 +163,8 @@ void write_rgb8_file(const fs::path& file, const RgbImage& img, const std::strin
 }
 
 void write_rgb8(const std::string& path, const RgbImage& img) {
-  const fs::path tmp = temp_path_beside(path);  // keeps the extension: OpenImageIO picks the format by it
-  try {
-    write_rgb8_file(tmp, img, path);
-  } catch (...) {
-    discard_temp_file(tmp);
-    throw;
-  }
-  commit_temp_file(tmp, path);
+  // (the temporary keeps the extension: OpenImageIO picks the format by it)
+  write_through_temp(path, [&](const fs::path& tmp) { write_rgb8_file(tmp, img, path); });
 }
 
 }  // namespace arp::host
