@@ -288,6 +288,94 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
+// The engine a ladder needs (EngineNeed): each memory's render cost at every sample of the motion, then the run's
+// engine replayed at every display frame at a multiple of the configured engine's speed.
+EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, const dp::VideoTiming& vt,
+                       double threshold_rad, const LadderLoad& L, const std::vector<double>& engine_s,
+                       const dp::HostEngineConfig& engine) {
+  const double hz = vt.refresh_hz();
+  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
+  const size_t n = scene.objects.size(), N = static_cast<size_t>(L.count);
+  std::vector<double> cost(ms.t.size() * N, 0.0);  // engine seconds of memory m's render at sample k (k * N + m)
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
+    for (size_t i = 0; i < n; ++i) cost[k * N + static_cast<size_t>(sched.belongs_in(i))] += engine_s[k * n + i];
+  }
+  std::vector<int64_t> period(N);
+  for (size_t m = 0; m < N; ++m) period[m] = sched.frames_per_update(static_cast<int>(m));
+  const int64_t frames = static_cast<int64_t>(std::floor(ms.span_s * hz)) + 1;
+  const int64_t step = std::max<int64_t>(1, std::llround(ms.step_s * hz));
+  struct Replay {
+    int64_t renders = 0, skipped = 0;
+    double longest_s = 0;
+  };
+  const auto replay = [&](double scale) {
+    Replay out;
+    double engine_free = -std::numeric_limits<double>::infinity();
+    std::vector<int64_t> swap(N, -1);  // the frame a memory's pending image is shown at (-1: none pending)
+    for (int64_t f = 0; f < frames; ++f) {
+      for (int64_t& w : swap)
+        if (w >= 0 && w <= f) w = -1;
+      const size_t k = std::min(static_cast<size_t>(f / step), ms.t.size() - 1);
+      const double t = vt.frame_start_s(f);
+      for (size_t m = 0; m < N; ++m) {
+        if (f % period[m] != 0) continue;
+        if (swap[m] >= 0) {
+          ++out.skipped;
+          continue;
+        }
+        const double c = cost[k * N + m] / scale;
+        engine_free = std::max(t, engine_free) + c;
+        swap[m] = std::max(f + 1, static_cast<int64_t>(std::floor(engine_free * hz + 1e-9)) + 1);
+        ++out.renders;
+        out.longest_s = std::max(out.longest_s, c);
+      }
+    }
+    return out;
+  };
+  EngineNeed need;
+  const Replay at_one = replay(1.0);
+  need.renders = at_one.renders;
+  need.skipped = at_one.skipped;
+  need.longest_render_s = at_one.longest_s;
+  bool twice = false;  // a memory due twice within the motion: only then can a render be skipped
+  for (size_t m = 0; m < N; ++m) twice |= frames > period[m];
+  if (twice && std::any_of(cost.begin(), cost.end(), [](double c) { return c > 0; })) {
+    double hi = 1.0, lo = 1.0;
+    if (at_one.skipped > 0) {
+      while (replay(hi).skipped > 0 && hi < 1e12) hi *= 2;
+      lo = hi / 2;
+    } else {
+      while (replay(lo).skipped == 0 && lo > 1e-12) lo /= 2;
+      hi = lo * 2;
+    }
+    while (hi / lo > 1 + 1e-6) {
+      const double mid = std::sqrt(lo * hi);
+      (replay(mid).skipped > 0 ? lo : hi) = mid;
+    }
+    need.scale = hi;
+  }
+  need.fill_texels_per_s = need.scale * engine.texels_per_s;
+  return need;
+}
+
+// What engine_need found, for the host.* row of a plan: the least engine, and what the configured one does.
+std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig& engine, double motion_s) {
+  if (need.scale == 0) return "; no memory is due twice within the motion, so any engine carries it without a skipped render";
+  return ". Replayed at every frame as a run's engine renders (memories due rendered one after another, fastest first, a "
+         "new image shown at the first vertical blank after it is done, a memory due again before then skipped), the least "
+         "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is " + printf_text("%.3g", need.scale) +
+         " times this one: " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
+         printf_text("%.4g", need.fill_texels_per_s) + " texels/s, " + printf_text("%.3g", engine.object_setup_s / need.scale) +
+         " s set-up an object" +
+         (need.skipped == 0 ? "; this one skips none of its " + std::to_string(need.renders) + " renders, the longest " +
+                                  printf_text("%.3g", 1000 * need.longest_render_s) + " ms"
+                            : "; this one skips " + std::to_string(need.skipped) + " updates (" + std::to_string(need.renders) +
+                                  " rendered, the longest " + printf_text("%.3g", 1000 * need.longest_render_s) +
+                                  " ms): a run shows it in host.memories[].skipped_overload") +
+         " (each memory's objects where the rule puts them, the moves a run defers until both memories render not replayed)";
+}
+
 // Each object's memories over the motion at the planned ladder, by the run's own rule (the scheduler replayed
 // over every sample, as ladder_load does): the fastest and slowest it is put in, every object of one name
 // together (memory.assignment names objects), in the order the names first appear in the scene. A name
@@ -878,6 +966,9 @@ Plan make_plan(const PlanRequest& r) {
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
                                        r.base.memory.update_ratio, base_validity, base_engine_s, base_fill, eyes);
+  p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, engine_s, engine);
+  p.base_need = n == 0 ? p.planned_need
+                       : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_engine_s, engine);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -1122,6 +1213,27 @@ Plan make_plan(const PlanRequest& r) {
                        "their own write port, never the pipeline's read port, so no host load stalls a stage; unstalled, "
                        "each inter-stage FIFO holds one token and the scan-out FIFO the issue slack and one (a cycle-level "
                        "run's report: fifos[].max_occupancy)"});
+  // 6b. The host's write port into display memory: at its configured clock, as many texels a clock as store the fill of
+  // the engine the planned ladder needs (EngineNeed) as fast as that engine fills -- a port narrower than the engine's
+  // fill would slow every render below the need.
+  {
+    const int64_t clock = p.config.timed.host_clock_hz;
+    const int64_t widest = dp::arp_parameters().find("timed.host_texels_per_cycle")->int_max;
+    const double port_fill = p.planned_need.fill_texels_per_s;
+    const double wanted = std::ceil(port_fill / static_cast<double>(clock));
+    p.config.timed.host_texels_per_cycle = static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(widest)));
+    p.choices.push_back(
+        {"timed.host_texels_per_cycle", std::to_string(p.config.timed.host_texels_per_cycle),
+         (p.planned_need.scale > 0
+              ? "the write port stores the fill of the engine the planned ladder needs (" + printf_text("%.4g", port_fill) +
+                    " texels/s: host.* below) at timed.host_clock_hz " + printf_text("%.4g", static_cast<double>(clock)) + " Hz" +
+                    (wanted > static_cast<double>(widest) ? ": it needs " + printf_text("%.0f", wanted) + " texels a clock, over the key's " +
+                                                                std::to_string(widest) + " -- a faster timed.host_clock_hz"
+                                                          : std::string())
+              : std::string("no memory is due twice within the motion, so any engine and a one-texel port carry it")) +
+             ". A run renders through the modelled engine (host.*), which the port's width does not slow; the port carries "
+             "host write jobs (the cycle-level testbenches')"});
+  }
   // 7. Region priority rendering against object-level, with the planned memories: regions are taken where they
   // carry the motion with less host load than the planned ladder by more than the load tolerance, the engine
   // carries them and, as whole faces (regions place objects by region, not where their tiles are) with the
@@ -1209,8 +1321,7 @@ Plan make_plan(const PlanRequest& r) {
     p.not_decided.push_back("an assignment other than the rule's: memory.assignment is where the rule put each object over the "
                             "motion (objects of one name together), not chosen to spare moves between memories or pool slots");
   p.not_decided.push_back("the region size at other memory counts than the ladder's, and the tearing between regions (measured by a "
-                          "run, not the plan); the host clock and the write port's bandwidth (timed.host_*): a run renders through "
-                          "the modelled engine (host.*), which the check above sizes, and uses the write port only for host write jobs");
+                          "run, not the plan); the host clock (timed.host_clock_hz, kept: the port's width above is sized at it)");
   p.choices.push_back({"host.* (the rendering engine)", "kept from " + r.base_source,
                        (taken ? "by regions it is busy " + printf_text("%.3g", taken->engine_busy) + " s of each second (plan.md's region "
                                 "table); by objects it carries the planned ladder: busy "
@@ -1220,7 +1331,8 @@ Plan make_plan(const PlanRequest& r) {
                            printf_text("%.0f", 1000 * ipd_given) + " mm apart (--ipd), and its fill, " +
                            printf_text("%.3g", p.planned.texels_per_s) + " texels/s against the engine's " + printf_text("%.3g", engine.texels_per_s) +
                            ", measured by rendering the scene at " + std::to_string(fill.points) +
-                           " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)"});
+                           " points of the motion, each other point interpolating the two around it; ladders it could not carry were not considered)" +
+                           engine_need_text(p.planned_need, engine, p.motion_s)});
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(base_whole);
   config::check(p.config, "the plan");
@@ -1282,6 +1394,11 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
   s += "| host load, triangles/s | " + printf_text("%.4g", p.base_ladder.triangles_per_s) + " | " + printf_text("%.4g", p.planned.triangles_per_s) + " |\n";
   s += "| host fill, texels/s | " + printf_text("%.4g", p.base_ladder.texels_per_s) + " | " + printf_text("%.4g", p.planned.texels_per_s) + " |\n";
   s += "| rendering engine busy, s a second | " + printf_text("%.3g", p.base_ladder.engine_busy) + " | " + printf_text("%.3g", p.planned.engine_busy) + " |\n";
+  const auto need = [](const EngineNeed& e) { return e.scale == 0 ? std::string("any") : printf_text("%.3g", e.scale); };
+  s += "| least engine that skips no render, times host.* (replayed every frame) | " + need(p.base_need) + " | " + need(p.planned_need) + " |\n";
+  s += "| renders skipped by host.*, of those due (replayed) | " + std::to_string(p.base_need.skipped) + " of " +
+       std::to_string(p.base_need.renders + p.base_need.skipped) + " | " + std::to_string(p.planned_need.skipped) + " of " +
+       std::to_string(p.planned_need.renders + p.planned_need.skipped) + " |\n";
   s += "| object-samples updated slower than they need | " + printf_text("%.2f %%", 100 * p.base_ladder.late_share) + " | " +
        printf_text("%.2f %%", 100 * p.planned.late_share) + " |\n";
   s += "| display memory, whole faces (hardware, MiB) | " + printf_text("%.1f", static_cast<double>(p.memory_bytes_base) / 1048576.0) + " | " +

@@ -98,6 +98,22 @@ struct LadderLoad {
   }
 };
 
+// The rendering engine a ladder needs (engine_need): the run's engine replayed at every display frame of the motion
+// (HostSimulation::before_frame: the memories due rendered one after another, fastest first, each new image
+// swapped in at the first vertical blank after it is done, a memory due again before then skipped), each
+// memory's objects where the run's rule puts them (PriorityScheduler::belongs_in: the moves a run defers until
+// both memories render are not replayed), each render costing what ladder_load charges (set-up, triangles,
+// interpolated fill, for each eye). `scale` is the least multiple of the configured engine's rates (its
+// triangle and fill rates times it, its set-up time over it) at which no render is skipped, found by
+// bisection to 1e-6; 0 where no memory is due twice within the motion (any engine carries it).
+struct EngineNeed {
+  double scale = 0;
+  int64_t renders = 0;          // at the configured engine
+  int64_t skipped = 0;          // at the configured engine: a memory due while its last image is not yet shown
+  double longest_render_s = 0;  // one memory's render at the configured engine, both eyes
+  double fill_texels_per_s = 0; // scale x the engine's fill rate: what the needed engine writes into display memory
+};
+
 // Region priority rendering (Chow, Pose & Regan 2005) with the planned memories, weighed against object-level:
 // the run's own region rule (host::RegionScheduler, host::segment_scene) stepped at every display frame of the
 // motion, each memory's pieces rendered at each update it asks for.
@@ -148,6 +164,7 @@ struct Plan {
   // Memories
   double threshold_rad = 0;
   LadderLoad planned, base_ladder, best;  // best: the lowest load of any candidate
+  EngineNeed planned_need, base_need;     // the engine each of the two ladders needs
   std::vector<LadderLoad> ladders;        // every candidate weighed
   double fastest_need_frames = 0;        // the shortest validity of any object, in display frames
   std::array<bool, 6> faces_reached{};    // by some object at some point of the motion

@@ -13,6 +13,7 @@
 
 #include "TestSupport.hpp"
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
 #include "common/Units.hpp"
 #include "host/motion/WalkPath.hpp"
 #include "host/priority/PriorityScheduler.hpp"
@@ -851,6 +852,39 @@ TEST(Planner, AnObjectOnACornerDiagonalCostsTheEngineThreeFaces) {
   EXPECT_NEAR(p.planned.engine_busy, 2.0 * 3.0 / 16.0 * hz / first, 1e-9);
 }
 
+// The engine a plan needs, in closed form. One ball far ahead of a short walk, always in the -Z face of both eyes:
+// each update of its one memory, every P frames, costs the engine 2 eyes x T triangles / rate (no set-up, the fill
+// made negligible), and must be done within P frames for its image to be shown before the memory is due again. So
+// the least engine is 2 T hz / (P rate) times this one. (With one memory that is its busy share: an engine any
+// slower is refused, AnEngineThatCannotCarryTheScene... above.) The write port that stores the needed engine's fill
+// (its rate times 1e15 texels/s here) at 100 MHz is that over the clock, or, wider than the key allows, the widest,
+// and the reason says so.
+TEST(Planner, TheLeastEngineRendersEachUpdateWithinItsPeriod) {
+  TempDir d;
+  write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -40]}]})");
+  write(d.file("walk.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  const double T = static_cast<double>(host::load_scene_file(d.file("far.json")).objects.at(0).mesh->triangles());
+  PlanRequest r = request(d.file("far.json"), d.file("walk.json"));
+  triangles_alone(r, 1000 * T);
+  const Plan p = make_plan(r);
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const double P = p.config.memory.update_frames;
+  ASSERT_EQ(p.config.memory.count, 1);
+  ASSERT_LT(P, p.motion_s * hz);  // due at least twice
+  EXPECT_NEAR(p.planned_need.scale, 2 * T * hz / (P * 1000 * T), 1e-5 * p.planned_need.scale);
+  EXPECT_EQ(p.planned_need.skipped, 0);
+  EXPECT_NEAR(p.planned_need.longest_render_s, 2 * T / (1000 * T), 1e-9);
+  EXPECT_EQ(p.config.timed.host_texels_per_cycle, static_cast<int>(std::ceil(p.planned_need.scale * 1e15 / 1e8)));
+  // Twice as slow as that, it needs half of itself; the port for the needed engine's 5e14 texels/s would take 5e6
+  // texels a clock at 100 MHz, over the key's range.
+  triangles_alone(r, T * 2 * hz / P / 0.5);
+  const Plan half = make_plan(r);
+  EXPECT_NEAR(half.planned_need.scale, 0.5, 1e-5);
+  EXPECT_EQ(half.config.timed.host_texels_per_cycle, 1 << 20);
+  const std::string md = plan_markdown(half, r);
+  EXPECT_NE(md.find("texels a clock, over the key's 1048576"), std::string::npos) << md;
+}
+
 TEST(Planner, ABoundNoWidthsMeetNamesTheBestAchievable) {
   TempDir d;
   write(d.file("empty.json"), R"({"name": "empty", "objects": []})");
@@ -1162,6 +1196,15 @@ void write_near_ball(TempDir& d) {
   write(d.file("near.json"), R"({"name": "near", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -2]}]})");
 }
 
+// The ball and a walk of a metre toward it at 1 m/s (walk.json), planned with the starting widths kept.
+PlanRequest near_ball_and_walk_toward(TempDir& d) {
+  write_near_ball(d);
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  PlanRequest r = request(d.file("near.json"), d.file("walk.json"));
+  r.size_widths = false;
+  return r;
+}
+
 // The engine's fill counts. A ball near the eye, with the engine's triangles and set-up made free: its fill
 // is all the engine does, and the plan's busy share is what a run with the plan reports of its modelled
 // engine (host.memories[].engine_busy_s over the simulated seconds: the host simulation's own account of
@@ -1208,15 +1251,58 @@ TEST(PlanCli, ThePlansEngineBusyIsWhatARunsEngineIs) {
   }
 }
 
+// The engine a plan says it needs is what a run's engine needs: the host simulation (its own queue of renders,
+// from the triangles its renderer sent) skips no update with an engine 2 % faster than the plan's least, and skips
+// some with one 3 % slower. A ball two metres ahead of a walk toward it, inside the -Z face of both eyes all along,
+// so the plan's count of the triangles sent (its bound's faces) is the renderer's; the fill made negligible.
+// The write port the plan sizes stores the least engine's fill at the host clock.
+TEST(PlanCli, ARunSkipsNoUpdateWithTheEngineThePlanNeedsAndSomeWithLess) {
+  TempDir d;
+  PlanRequest r = near_ball_and_walk_toward(d);
+  r.base.host.object_setup_s = 0;
+  r.base.host.texels_per_s = 1e15;
+  const Plan p = make_plan(r);
+  const double need = p.planned_need.scale;
+  ASSERT_GT(need, 0);
+  EXPECT_EQ(p.config.timed.host_texels_per_cycle,
+            static_cast<int>(std::ceil(need * 1e15 / static_cast<double>(p.config.timed.host_clock_hz))));
+  write(d.file("plan.json"), plan_config_text(p));
+  const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
+  const int frames = static_cast<int>(std::lround(p.motion_s * hz));
+  for (const double factor : {1.02, 0.97}) {
+    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
+                               d.file("plan.json") + " --scene " + d.file("near.json") + " --walk " + d.file("walk.json") +
+                               " --engine-setup 0 --engine-fill 1e15 --engine-triangles " +
+                               printf_text("%.17g", factor * need * r.base.host.triangles_per_s) + " --report " + d.file("r.json"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    const nlohmann::json rep = test::load_json(d.file("r.json"));
+    int64_t skipped = 0, updates = 0;
+    for (const auto& m : rep["host"]["memories"]) {
+      skipped += m["skipped_overload"].get<int64_t>();
+      updates += m["updates"].get<int64_t>();
+    }
+    ASSERT_GT(updates, 10) << factor;
+    if (factor > 1) EXPECT_EQ(skipped, 0) << "engine " << factor << " x the plan's least";
+    else EXPECT_GT(skipped, 0) << "engine " << factor << " x the plan's least";
+    // Planned with that engine, the same ladder, and the plan counts the updates it skips: within one in twenty (or
+    // two), as the plan moves the ball between its two memories when the rule first says so, where a run waits for a
+    // frame both render in (42 against 43 here).
+    PlanRequest with = r;
+    with.base.host.triangles_per_s = factor * need * r.base.host.triangles_per_s;
+    const Plan q = make_plan(with);
+    ASSERT_EQ(std::make_tuple(q.planned.count, q.planned.update_frames, q.planned.update_ratio),
+              std::make_tuple(p.planned.count, p.planned.update_frames, p.planned.update_ratio)) << factor;
+    EXPECT_NEAR(static_cast<double>(q.planned_need.skipped), static_cast<double>(skipped),
+                std::max(2.0, 0.05 * static_cast<double>(skipped))) << factor;
+  }
+}
+
 // The FIFOs are the smallest the configuration allows, and a cycle-level run of the plan, the host
 // rendering into its memories, shows why: nothing stalls, each inter-stage FIFO holds one token, the
 // scan-out FIFO the issue slack and one, and no write is blocked.
 TEST(PlanCli, TheFifosAreTheSmallestAndNothingStalls) {
   TempDir d;
-  write_near_ball(d);
-  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
-  PlanRequest r = request(d.file("near.json"), d.file("walk.json"));
-  r.size_widths = false;
+  PlanRequest r = near_ball_and_walk_toward(d);
   r.base.timed.issue_slack_cycles = 5;
   r.base.timed.fifo_depth = 64;
   const Plan p = make_plan(r);
