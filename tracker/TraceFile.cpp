@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -114,16 +115,25 @@ void write_trace_csv(const std::string& path, const std::vector<PoseSample>& sam
 TraceWriter::TraceWriter(const std::string& path, bool positions) : path_(path), positions_(positions) {
   tmp_ = temp_path_beside(path).string();
   f_ = std::fopen(tmp_.c_str(), "w");
-  if (!f_) throw InputError(path, "", "cannot write the trace file");
+  if (!f_) throw InputError(path, "", std::string("cannot write the trace file: ") + std::strerror(errno));
+  errno = 0;
   ok_ = std::fprintf(f_, "# arpsim head-motion trace: seconds, unit quaternion w x y z (head -> world)%s\n",
                      positions ? ", position in metres" : "") > 0;
   ok_ = ok_ && std::fprintf(f_, positions ? "time_s,qw,qx,qy,qz,px,py,pz\n" : "time_s,qw,qx,qy,qz\n") > 0;
+  if (!ok_) errno_ = errno;
 }
 
 TraceWriter::~TraceWriter() {
   if (!f_) return;
   std::fclose(f_);
   discard_temp_file(tmp_);
+}
+
+// Why a write failed: the errno of the first write that failed (kept), or of the close.
+std::string TraceWriter::failure() {
+  if (!ok_ && errno_ == 0) errno_ = errno;
+  const int e = errno_ != 0 ? errno_ : errno;
+  return e != 0 ? std::string(": ") + std::strerror(e) : std::string();
 }
 
 void TraceWriter::append(const PoseSample& s) {
@@ -134,18 +144,20 @@ void TraceWriter::append(const PoseSample& s) {
   ok_ = ok_ && std::fprintf(f_, "%.12f,%.17g,%.17g,%.17g,%.17g", static_cast<double>(s.time_ps) * 1e-12, q.w, q.x, q.y, q.z) > 0;
   if (positions_) ok_ = ok_ && std::fprintf(f_, ",%.17g,%.17g,%.17g", s.position.x, s.position.y, s.position.z) > 0;
   ok_ = ok_ && std::fputc('\n', f_) != EOF;
-  if (!ok_) throw InputError(path_, "", "writing the trace failed");
+  if (!ok_) throw InputError(path_, "", "writing the trace failed" + failure());
   last_ps_ = s.time_ps;
   ++written_;
 }
 
 void TraceWriter::commit() {
   if (!f_) throw std::logic_error("trace already committed");
+  if (ok_) errno = 0;
   const bool closed = std::fclose(f_) == 0;
   f_ = nullptr;
   if (!ok_ || !closed) {
+    const std::string why = failure();
     discard_temp_file(tmp_);
-    throw InputError(path_, "", "writing the trace failed");
+    throw InputError(path_, "", "writing the trace failed" + why);
   }
   commit_temp_file(tmp_, path_);
 }

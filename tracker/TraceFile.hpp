@@ -57,9 +57,11 @@ class TraceWriter {
   int64_t written() const { return written_; }
 
  private:
+  std::string failure();  // ": reason" of the first failed write, or ""
   std::string path_, tmp_;
   std::FILE* f_ = nullptr;
   bool positions_, ok_ = true;
+  int errno_ = 0;  // kept at the first failed write
   int64_t written_ = 0, last_ps_ = 0;
 };
 
