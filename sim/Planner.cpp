@@ -290,9 +290,10 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
 
 // The engine a ladder needs (EngineNeed): each memory's render cost at every sample of the motion, then the run's
 // engine replayed at every display frame at a multiple of the configured engine's speed.
+// (bisect false: only what the configured engine does, scale left 0)
 EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, const dp::VideoTiming& vt,
                        double threshold_rad, const LadderLoad& L, const std::vector<double>& engine_s,
-                       const dp::HostEngineConfig& engine) {
+                       const dp::HostEngineConfig& engine, bool bisect = true) {
   const double hz = vt.refresh_hz();
   host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size(), N = static_cast<size_t>(L.count);
@@ -340,7 +341,7 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
   need.longest_render_s = at_one.longest_s;
   bool twice = false;  // a memory due twice within the motion: only then can a render be skipped
   for (size_t m = 0; m < N; ++m) twice |= frames > period[m];
-  if (twice && std::any_of(cost.begin(), cost.end(), [](double c) { return c > 0; })) {
+  if (bisect && twice && std::any_of(cost.begin(), cost.end(), [](double c) { return c > 0; })) {
     double hi = 1.0, lo = 1.0;
     if (at_one.skipped > 0) {
       while (replay(hi).skipped > 0 && hi < 1e12) hi *= 2;
@@ -940,6 +941,10 @@ Plan make_plan(const PlanRequest& r) {
   }
   for (LadderLoad& L : candidates)
     if (L.memory_bytes_whole == 0) L.memory_bytes_whole = ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base));
+  // What the configured engine skips with each, replayed at every frame (EngineNeed): plan.md's ladder table. The
+  // choice below stays on the mean load.
+  for (LadderLoad& L : candidates)
+    L.skipped = engine_need(scene, walk, ms, timing, p.threshold_rad, L, engine_s, engine, false).skipped;
   p.best = *std::min_element(candidates.begin(), candidates.end(),
                              [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
   p.planned = p.best;
@@ -1426,9 +1431,9 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        "motion where that takes less" + std::string(r.tile_pool && r.weigh_pools ? ", or a tile pool where that takes less still (--weigh-pools)" : "") +
        "; the planned ladder as planned, at its depth code. Ladders the engine cannot "
        "carry, or over the limit either way, are not listed.\n\n"
-       "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | updated slower than needed | "
-       "display memory, whole faces, MiB | display memory as weighed, MiB |\n"
-       "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+       "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | renders skipped (replayed) | "
+       "updated slower than needed | display memory, whole faces, MiB | display memory as weighed, MiB |\n"
+       "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   const auto mib = [](int64_t b) { return printf_text("%.1f", static_cast<double>(b) / 1048576.0); };
   for (const LadderLoad& L : p.ladders) {
     const bool planned = ladder_key(L) == ladder_key(p.planned);
@@ -1437,7 +1442,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
     std::string periods;
     for (int m = 0; m < L.count; ++m) periods += (m ? ", " : "") + std::to_string(dp::update_period_frames(L.update_frames, L.update_ratio, m));
     s += "| " + std::to_string(L.count) + " | " + periods + " | " + printf_text("%.4g", L.triangles_per_s) + " | " +
-         printf_text("%.4g", L.texels_per_s) + " | " + printf_text("%.3g", L.engine_busy) + " | " + printf_text("%.2f %%", 100 * L.late_share) + " | " +
+         printf_text("%.4g", L.texels_per_s) + " | " + printf_text("%.3g", L.engine_busy) + " | " + std::to_string(L.skipped) + " | " +
+         printf_text("%.2f %%", 100 * L.late_share) + " | " +
          mib(whole) + " | " + (held < whole ? mib(held) + (!planned && r.tile_pool && r.weigh_pools ? " tile-sparse or pooled" : " tile-sparse") : "whole faces") + (planned ? " (planned)" : "") + " |\n";
   }
   if (!p.regions.empty()) {

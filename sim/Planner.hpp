@@ -86,6 +86,7 @@ struct LadderLoad {
   // points rendered). Above 1, the engine cannot carry the ladder.
   double engine_busy = 0;
   double late_share = 0;          // object-samples whose memory updates slower than their validity needs
+  int64_t skipped = 0;            // updates the configured engine skips over the motion, replayed (EngineNeed)
   std::vector<double> objects;    // mean objects in each memory
   // Its hardware display memory at the planned face size and faces, with the depth code it is weighed at: as
   // whole faces, and as it would be planned -- each memory holding only the tiles its objects can be drawn on
