@@ -438,7 +438,14 @@ std::string LatencyStudy::run() {
     // The VCD goes to a temporary name first, then is renamed (no half-written waveform).
     const fs::path vcd = out / "apparatus.vcd";
     run.vcd_path = (out / "apparatus.partial").string();
-    const apparatus::ScopeEdges edges = apparatus::run_oscilloscope(ps, ch, run);
+    run.vcd_shown = vcd.string();
+    apparatus::ScopeEdges edges;
+    try {
+      edges = apparatus::run_oscilloscope(ps, ch, run);
+    } catch (...) {
+      discard_temp_file(run.vcd_path + ".vcd");
+      throw;
+    }
     fs::rename(run.vcd_path + ".vcd", vcd);
     write_text_atomic((out / "apparatus.gtkw").string(), gtkw_for_vcd(vcd.string(), "apparatus.vcd"));
     step("pendulum apparatus");

@@ -604,6 +604,7 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
   make_output_folder("--vcd", fs::path(vcd_final_).parent_path().string());
   vcd_tmp_base_ = temp_path_beside(vcd_final_).string();
   opt.vcd.path = vcd_tmp_base_;
+  opt.vcd.shown = vcd_final_;
   opt.vcd.data = o.vcd_signals == "all";
   if (!o.vcd_lines.empty()) {
     const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);

@@ -180,10 +180,14 @@ TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
   r = run_command(limited + " run -q --frames 1 --every 0 --report r.json --csv c.csv");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("r.json: cannot write the file: File too large"), std::string::npos) << r.output;
+  // SystemC's VCD writer checks no write: the waveform's last line, the time it was closed, shows it whole.
+  r = run_command(limited + " run -q --fidelity cycle --frames 1 --every 0 --vcd ./w.vcd --vcd-signals control");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("w.vcd: the waveform was cut short: it does not end at the time it was closed"), std::string::npos) << r.output;
   r = run_command(limited + " tracker synth --motion rotate --seconds 10 -o t.csv");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("t.csv: writing the trace failed: File too large"), std::string::npos) << r.output;
-  EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no CSV, no trace, no temporary file";
+  EXPECT_EQ(d.entries(), 2u) << "only the scene and the walk: no image, no plan, no account, no CSV, no waveform, no trace, no temporary file";
   std::ofstream(d.file("real.json")) << "{}";
   fs::create_symlink("real.json", d.file("link.json"));
   r = run_command("cd " + d.path() + " && " + kArpsim + " run -q --frames 1 --every 0 --report link.json");

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "rtl_model/systemc/TimedRun.hpp"
+#include "rtl_model/systemc/VcdClose.hpp"
 
 namespace arp::apparatus {
 
@@ -94,9 +95,10 @@ ScopeEdges run_oscilloscope(const PendulumSpec& p, const std::vector<ChannelEven
   ScopeEdges edges;
   PendulumScope scope("scope", p, channels, run, edges);
   sc_trace_file* tf = nullptr;
+  const sc_time vcd_unit(1, SC_NS);
   if (!run.vcd_path.empty()) {
     tf = sc_create_vcd_trace_file(run.vcd_path.c_str());
-    tf->set_time_unit(1, SC_NS);
+    tf->set_time_unit(1, SC_NS);  // vcd_unit
     sc_trace(tf, scope.pendulum_angle_mdeg, "pendulum_angle_mdeg");
     sc_trace(tf, scope.pendulum_photodiode, "pendulum_photodiode");
     for (size_t c = 0; c < channels.size(); ++c) {
@@ -105,7 +107,7 @@ ScopeEdges run_oscilloscope(const PendulumSpec& p, const std::vector<ChannelEven
     }
   }
   sc_start(sc_time(static_cast<double>(run.end_ps - run.start_ps), SC_PS));
-  if (tf) sc_close_vcd_trace_file(tf);
+  if (tf) scm::close_vcd_checked(tf, run.vcd_path + ".vcd", vcd_unit, run.vcd_shown.empty() ? run.vcd_path + ".vcd" : run.vcd_shown);
   return edges;
 }
 

@@ -15,6 +15,7 @@ struct ScopeRun {
   int64_t start_ps = 0, end_ps = 0;
   double render_pulse_s = 50e-6;  // the D/A converter's pulse width
   std::string vcd_path;           // empty: no waveform (the path gets ".vcd" from SystemC; give it without)
+  std::string vcd_shown;          // the name an error gives the waveform (vcd_path may be a temporary's)
 };
 
 // Runs the simulation (one per process: scm::claim_simulation). Channel names

@@ -13,6 +13,7 @@
 #include "FunctionalFrames.hpp"
 #include "FunctionalStandIn.hpp"
 #include "LooselyTimedModel.hpp"
+#include "VcdClose.hpp"
 #include "common/InputError.hpp"
 #include "rtl_model/verilated/VerilatedFrameModel.hpp"
 
@@ -203,10 +204,11 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     to = std::max(from, std::min(span + 1, opt.vcd.to_ps == INT64_MAX ? span + 1 : opt.vcd.to_ps - w.base_ps));
   }
   sc_trace_file* tf = nullptr;
+  const sc_time vcd_unit(1, SC_PS);
   auto open_trace = [&] {
     tf = sc_create_vcd_trace_file(opt.vcd.path.c_str());
     if (!tf) throw InputError(opt.vcd.path + ".vcd", "", "cannot create the waveform file");
-    tf->set_time_unit(1, SC_PS);
+    tf->set_time_unit(1, SC_PS);  // vcd_unit
     if (rtl) rtl->trace(tf, opt.vcd.data);
     if (fast) fast->trace(tf, opt.vcd.data);
     if (lt) lt->trace(tf);
@@ -226,7 +228,8 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     if (from > 0) advance_to(from);
     open_trace();
     advance_to(to);
-    sc_close_vcd_trace_file(tf);
+    const std::string file = opt.vcd.path + ".vcd";
+    close_vcd_checked(tf, file, vcd_unit, opt.vcd.shown.empty() ? file : opt.vcd.shown);
     tf = nullptr;
     if (rtl) rtl->stop_tracing();
     if (fast) fast->stop_tracing();

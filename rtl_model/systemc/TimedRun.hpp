@@ -28,6 +28,7 @@ const char* describe(Fidelity f);
 
 struct VcdOptions {
   std::string path;  // without ".vcd" (SystemC appends it); empty: no waveform
+  std::string shown;  // the name an error gives the file (path may be a temporary's); empty: path + ".vcd"
   int64_t from_ps = std::numeric_limits<int64_t>::min();  // absolute window
   int64_t to_ps = std::numeric_limits<int64_t>::max();
   // Each stage's register data fields too; off: the control signals only
