@@ -365,8 +365,8 @@ std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig&
   if (need.scale == 0) return "; no memory is due twice within the motion, so any engine carries it without a skipped render";
   return ". Replayed at every frame as a run's engine renders (memories due rendered one after another, fastest first, a "
          "new image shown at the first vertical blank after it is done, a memory due again before then skipped), the least "
-         "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is " + printf_text("%.3g", need.scale) +
-         " times this one: " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
+         "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is about " + printf_text("%.3g", need.scale) +
+         " times this one (an estimate: the fill is interpolated between rendered points): " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
          printf_text("%.4g", need.fill_texels_per_s) + " texels/s, " + printf_text("%.3g", engine.object_setup_s / need.scale) +
          " s set-up an object" +
          (need.skipped == 0 ? "; this one skips none of its " + std::to_string(need.renders) + " renders, the longest " +
