@@ -66,10 +66,10 @@ for level in $LEVELS; do
     jq -r --arg l "$level" --arg n "$name" --arg s "$s" --arg r "$ratio" --arg c "$cyc" \
       '(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000) as $p |
        "| \($l) | \($n) | \(.config.memory.count) every \(.config.memory.update_frames) x \(.config.memory.update_ratio)^m, face \(.config.memory.face_size) | " +
-       "\(.footprint.systemc_modules) | \(.simulation.pixel_clocks_evaluated) / \(.simulation.pixel_clocks) | \($p * 100 | round / 100) | " +
+       "\(.footprint.systemc_modules) | \(.simulation.pixel_clocks_evaluated // "all") / \(.simulation.pixel_clocks) | \($p * 100 | round / 100) | " +
        "\($s | tonumber / 1e4 | round / 100) | \($r) | \(if $l == "functional" then "\($c) (\("'"$cores"'") cores)" else $c end) |"' "$r"
     jq -r --arg l "$level" --arg n "$name" --arg s "$s" --arg h "$h" --arg c "$cyc" \
-      '"\($l),\($n),\(.config.memory.count),\(.footprint.systemc_modules),\(.simulation.pixel_clocks),\(.simulation.pixel_clocks_evaluated),\(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000),\($s),\($h),\($c)"' \
+      '"\($l),\($n),\(.config.memory.count),\(.footprint.systemc_modules),\(.simulation.pixel_clocks),\(.simulation.pixel_clocks_evaluated // .simulation.pixel_clocks),\(.simulation.wall_seconds - .host.host_wall_ms_per_frame * .frames_done / 1000),\($s),\($h),\($c)"' \
       "$r" >> "$tmp/out.csv"
   done
 done

@@ -214,12 +214,14 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
     if (lt) lt->trace(tf);
   };
 
-  // The host model's state before the first frame (the timed levels call it in each later vertical blank).
+  // The host model's state before the first frame (the timed levels call it in each later vertical blank),
+  // timed with the run: the host's wall time is reported apart (host_wall_ms_per_frame, every frame's render),
+  // and what is left of wall_seconds is the pipeline's at every level.
+  const auto t0 = Clock::now();
   if (in.before_frame) {
     const dp::VideoTiming vt(in.config.timing);
     in.before_frame(in.first_frame, vt.frame_start_s(in.first_frame));
   }
-  const auto t0 = Clock::now();
   auto advance_to = [&r](int64_t sim_ps) {
     const sc_time target = sc_time::from_value(static_cast<sc_time::value_type>(sim_ps));
     if (!r.stopped && target > sc_time_stamp()) sc_start(target - sc_time_stamp());
