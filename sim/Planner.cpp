@@ -354,7 +354,7 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
       const double mid = std::sqrt(lo * hi);
       (replay(mid).skipped > 0 ? lo : hi) = mid;
     }
-    need.scale = hi;
+    need.scale = replay(lo).skipped > 0 ? hi : 0.0;  // none skipped even at 1e-12 of the engine: any engine carries it
   }
   need.fill_texels_per_s = need.scale * engine.texels_per_s;
   return need;
@@ -362,7 +362,7 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
 
 // What engine_need found, for the host.* row of a plan: the least engine, and what the configured one does.
 std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig& engine, double motion_s) {
-  if (need.scale == 0) return "; no memory is due twice within the motion, so any engine carries it without a skipped render";
+  if (need.scale == 0) return "; no render can be skipped (no memory is due twice within the motion): any engine carries it";
   return ". Replayed at every frame as a run's engine renders (memories due rendered one after another, fastest first, a "
          "new image shown at the first vertical blank after it is done, a memory due again before then skipped), the least "
          "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is about " + printf_text("%.3g", need.scale) +
@@ -374,7 +374,8 @@ std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig&
                             : "; this one skips " + std::to_string(need.skipped) + " updates (" + std::to_string(need.renders) +
                                   " rendered, the longest " + printf_text("%.3g", 1000 * need.longest_render_s) +
                                   " ms): a run shows it in host.memories[].skipped_overload") +
-         " (each memory's objects where the rule puts them, the moves a run defers until both memories render not replayed)";
+         " (each memory's objects where the rule puts them: not replayed are the moves a run defers until both memories "
+         "render and their joint swap, the tile and pool guards, memory.assignment -- so low rather than high)";
 }
 
 // Each object's memories over the motion at the planned ladder, by the run's own rule (the scheduler replayed
@@ -1230,12 +1231,13 @@ Plan make_plan(const PlanRequest& r) {
     p.choices.push_back(
         {"timed.host_texels_per_cycle", std::to_string(p.config.timed.host_texels_per_cycle),
          (p.planned_need.scale > 0
-              ? "the write port stores the fill of the engine the planned ladder needs (" + printf_text("%.4g", port_fill) +
-                    " texels/s: host.* below) at timed.host_clock_hz " + printf_text("%.4g", static_cast<double>(clock)) + " Hz" +
+              ? "the write port stores texels as fast as the engine the planned ladder needs fills them (" + printf_text("%.4g", port_fill) +
+                    " texels/s: host.* below; that engine has no time to spare, so a narrower port, lengthening its fill, "
+                    "would skip renders) at timed.host_clock_hz " + printf_text("%.4g", static_cast<double>(clock)) + " Hz" +
                     (wanted > static_cast<double>(widest) ? ": it needs " + printf_text("%.0f", wanted) + " texels a clock, over the key's " +
                                                                 std::to_string(widest) + " -- a faster timed.host_clock_hz"
                                                           : std::string())
-              : std::string("no memory is due twice within the motion, so any engine and a one-texel port carry it")) +
+              : std::string("no render can be skipped (no memory is due twice within the motion): any engine and a one-texel port carry it")) +
              ". A run renders through the modelled engine (host.*), which the port's width does not slow; the port carries "
              "host write jobs (the cycle-level testbenches')"});
   }

@@ -616,6 +616,8 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
     opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
+    if (opt.vcd.to_ps <= opt.vcd.from_ps)
+      throw InputError("--vcd-time-us", o.vcd_time_us, "the window is shorter than the simulation's picosecond: nothing to trace");
   } else if (!timed_frames_.every_frame()) {
     // With detailed windows: the first window (its warm-up frames too), from the vertical blank before it to the one after it.
     const dp::PipelineSchedule sched(spec_.config);

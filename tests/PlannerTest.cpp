@@ -1286,7 +1286,7 @@ TEST(PlanCli, ARunSkipsNoUpdateWithTheEngineThePlanNeedsAndSomeWithLess) {
     else EXPECT_GT(skipped, 0) << "engine " << factor << " x the plan's least";
     // Planned with that engine, the same ladder, and the plan counts the updates it skips: within one in twenty (or
     // two), as the plan moves the ball between its two memories when the rule first says so, where a run waits for a
-    // frame both render in (42 against 43 here).
+    // frame both render in (here the plan 43, the run 42).
     PlanRequest with = r;
     with.base.host.triangles_per_s = factor * need * r.base.host.triangles_per_s;
     const Plan q = make_plan(with);
