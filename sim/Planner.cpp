@@ -288,8 +288,8 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
-// The engine a ladder needs (EngineNeed): each memory's render cost at every sample of the motion, then the run's
-// engine replayed at every display frame at a multiple of the configured engine's speed.
+// The engine a ladder needs (EngineNeed): where the rule puts each object at every sample of the motion, then the
+// run's engine and its moves replayed at every display frame at a multiple of the configured engine's speed.
 // (bisect false: only what the configured engine does, scale left 0)
 EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, const dp::VideoTiming& vt,
                        double threshold_rad, const LadderLoad& L, const std::vector<double>& engine_s,
@@ -297,10 +297,10 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
   const double hz = vt.refresh_hz();
   host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size(), N = static_cast<size_t>(L.count);
-  std::vector<double> cost(ms.t.size() * N, 0.0);  // engine seconds of memory m's render at sample k (k * N + m)
+  std::vector<int> belongs(ms.t.size() * n);  // where the rule puts object i at sample k (k * n + i)
   for (size_t k = 0; k < ms.t.size(); ++k) {
     sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
-    for (size_t i = 0; i < n; ++i) cost[k * N + static_cast<size_t>(sched.belongs_in(i))] += engine_s[k * n + i];
+    for (size_t i = 0; i < n; ++i) belongs[k * n + i] = sched.belongs_in(i);
   }
   std::vector<int64_t> period(N);
   for (size_t m = 0; m < N; ++m) period[m] = sched.frames_per_update(static_cast<int>(m));
@@ -314,23 +314,45 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
     Replay out;
     double engine_free = -std::numeric_limits<double>::infinity();
     std::vector<int64_t> swap(N, -1);  // the frame a memory's pending image is shown at (-1: none pending)
+    std::vector<int> memory(n);        // where each object is: where the rule puts it at the start (HostSimulation::prime)
+    for (size_t i = 0; i < n; ++i) memory[i] = belongs[i];
+    std::vector<char> render(N), moved(N);
+    std::vector<double> cost(N);
     for (int64_t f = 0; f < frames; ++f) {
       for (int64_t& w : swap)
         if (w >= 0 && w <= f) w = -1;
       const size_t k = std::min(static_cast<size_t>(f / step), ms.t.size() - 1);
       const double t = vt.frame_start_s(f);
       for (size_t m = 0; m < N; ++m) {
-        if (f % period[m] != 0) continue;
-        if (swap[m] >= 0) {
-          ++out.skipped;
-          continue;
-        }
-        const double c = cost[k * N + m] / scale;
+        const bool due = f % period[m] == 0;
+        out.skipped += due && swap[m] >= 0 ? 1 : 0;
+        render[m] = due && swap[m] < 0;
+        moved[m] = 0;
+        cost[m] = 0;
+      }
+      // An object moves only between memories rendering now, as far toward where it belongs as they allow.
+      for (size_t i = 0; i < n; ++i) {
+        const int from = memory[i];
+        if (!render[static_cast<size_t>(from)]) continue;
+        int to = belongs[k * n + i];
+        while (to != from && !render[static_cast<size_t>(to)]) to += to > from ? -1 : 1;
+        if (to != from) moved[static_cast<size_t>(from)] = moved[static_cast<size_t>(to)] = 1;
+        memory[i] = to;
+        cost[static_cast<size_t>(to)] += engine_s[k * n + i];
+      }
+      int64_t handover = -1;
+      for (size_t m = 0; m < N; ++m) {
+        if (!render[m]) continue;
+        const double c = cost[m] / scale;
         engine_free = std::max(t, engine_free) + c;
         swap[m] = std::max(f + 1, static_cast<int64_t>(std::floor(engine_free * hz + 1e-9)) + 1);
+        if (moved[m]) handover = std::max(handover, swap[m]);
         ++out.renders;
         out.longest_s = std::max(out.longest_s, c);
       }
+      // Memories exchanging objects swap together, at the last of them to finish.
+      for (size_t m = 0; m < N; ++m)
+        if (moved[m]) swap[m] = handover;
     }
     return out;
   };
@@ -341,7 +363,7 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
   need.longest_render_s = at_one.longest_s;
   bool twice = false;  // a memory due twice within the motion: only then can a render be skipped
   for (size_t m = 0; m < N; ++m) twice |= frames > period[m];
-  if (bisect && twice && std::any_of(cost.begin(), cost.end(), [](double c) { return c > 0; })) {
+  if (bisect && twice && std::any_of(engine_s.begin(), engine_s.end(), [](double c) { return c > 0; })) {
     double hi = 1.0, lo = 1.0;
     if (at_one.skipped > 0) {
       while (replay(hi).skipped > 0 && hi < 1e12) hi *= 2;
@@ -374,8 +396,8 @@ std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig&
                             : "; this one skips " + std::to_string(need.skipped) + " updates (" + std::to_string(need.renders) +
                                   " rendered, the longest " + printf_text("%.3g", 1000 * need.longest_render_s) +
                                   " ms): a run shows it in host.memories[].skipped_overload") +
-         " (each memory's objects where the rule puts them: not replayed are the moves a run defers until both memories "
-         "render and their joint swap, the tile and pool guards, memory.assignment -- so low rather than high)";
+         " (objects moving between memories as a run moves them, memories exchanging them swapping together; not "
+         "replayed are the tile and pool guards and memory.assignment)";
 }
 
 // Each object's memories over the motion at the planned ladder, by the run's own rule (the scheduler replayed
