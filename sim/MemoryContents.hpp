@@ -17,7 +17,7 @@ struct MemoryContents {
   std::string scene;                   // or a scene file / "gallery"
   std::string position;                // --scene: head position x,y,z (default: the gallery walk's start)
   double time_s = 0.0;                 // --scene: animation time
-  double ipd_m = 0.064;                // distance between the eyes
+  double ipd_m = dp::kDefaultIpdM;                // distance between the eyes
   std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
   bool face_culling = true;            // not --no-face-culling: each object drawn only on the faces it reaches
   // The scene the configuration was planned for (plan.scene_hash; 0: none) and the configuration's

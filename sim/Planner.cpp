@@ -766,6 +766,7 @@ Plan make_plan(const PlanRequest& r) {
   p.samples = static_cast<int>(ms.t.size());
   p.config.plan.scene_hash = p.scene_hash;
   p.config.plan.motion_hash = motion_hash(walk, r.head);
+  p.config.plan.ipd_m = ipd_given;
 
   // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
   progress(0.02, "measuring the display's pixel angles");
@@ -1411,7 +1412,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        (r.head.given() ? ", the head turning with " + r.head.describe() + " on top" : "") +
        ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
        std::to_string(p.config.plan.motion_hash) + "), the eyes " + printf_text("%g", 1000 * r.memories.ipd_m) +
-       " mm apart (--ipd). Started from " + r.base_source + ".\n\n";
+       " mm apart (--ipd; plan.ipd_m: a run with another warns). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
   s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";

@@ -36,7 +36,7 @@ struct TruthProbeSetup {
   const dp::DisplayMemorySet* memories = nullptr;
   const dp::OrientationStream* orientation = nullptr;
   const host::Segmented* segmented = nullptr;  // region mode with segmentation; nullptr otherwise
-  double ipd_m = 0.064;
+  double ipd_m = dp::kDefaultIpdM;
   int threads = 0;
   int64_t first_frame = 0, frames = 1, every = 1;  // the frames measured: first + k * every
   int truth_face_size = 0;  // 0: the truth reads as the run does; N: one reference at face size N (TruthProbe.cpp)

@@ -70,7 +70,7 @@ TEST(ConfigFile, EveryParameterIsDeclaredOnceWithADocAndItsDefaultInRange) {
     EXPECT_FALSE(p.doc.empty()) << p.key;
     EXPECT_EQ(p.range_error(p.get(dp::ArpConfig{})), "") << p.key;
   }
-  EXPECT_EQ(n, 12u + 3 + 12 + 16 + 5 + 2 * dp::kStageCount + 4 + 3 + 2);  // display, lens, datapath, memory, pipeline, timed, host, plan
+  EXPECT_EQ(n, 12u + 3 + 12 + 16 + 5 + 2 * dp::kStageCount + 4 + 3 + 3);  // display, lens, datapath, memory, pipeline, timed, host, plan
   // The table and the JSON writer agree: every key written is declared, and the other way round.
   const json j = config::to_json(dp::ArpConfig{});
   size_t written = 0;

@@ -952,7 +952,7 @@ TEST(PlanCli, ThePlanIsAConfigurationAndKnowsItsScene) {
 }
 
 // The plan knows its walk too: the same walk runs quietly; another walk, the
-// same walk at another speed, or no walk at all is said once, before the run.
+// same walk at another speed, or no walk at all is said once, before the run. So are other eyes (--ipd).
 TEST(PlanCli, ThePlanKnowsItsWalk) {
   TempDir d;
   write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
@@ -977,6 +977,22 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
     EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another motion"), std::string::npos) << o.output;
   }
+  // And the eyes it planned for (plan.ipd_m): another --ipd is said once; a plan made for that --ipd runs quietly with it.
+  EXPECT_EQ(config::load_file(d.file("plan.json")).plan.ipd_m, 0.064);
+  const std::string eyes = d.file("plan.json") + " was planned for eyes 64 mm apart (plan.ipd_m 0.064); this run's --ipd is 70 mm";
+  const auto wider = run_command(run + " --walk " + d.file("walk.json") + " --ipd 0.07");
+  ASSERT_EQ(wider.status, 0) << wider.output;
+  const size_t at = wider.output.find(eyes);
+  ASSERT_NE(at, std::string::npos) << wider.output;
+  EXPECT_EQ(wider.output.find(" was planned for eyes", at + eyes.size()), std::string::npos) << "warned more than once: " << wider.output;
+  const auto planned = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
+                                   " --ipd 0.07 -o " + d.file("wide.json"));
+  ASSERT_EQ(planned.status, 0) << planned.output;
+  EXPECT_EQ(config::load_file(d.file("wide.json")).plan.ipd_m, 0.07);
+  const auto quiet = run_command(kArpsim + " run -q --frames 1 --every 0 --config " + d.file("wide.json") + " --scene " + d.file("far.json") +
+                                 " --walk " + d.file("walk.json") + " --ipd 0.07");
+  ASSERT_EQ(quiet.status, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find(" was planned for "), std::string::npos) << quiet.output;
 }
 
 // And the head's own motion on the walk (--motion, --trace): the same motion runs quietly, and so does the same

@@ -200,6 +200,9 @@ ParameterTable<ArpConfig> make_parameters() {
            "hash of the motion this configuration was planned for: the walk (points and speed) and the head's own "
            "motion on it, if any (--motion, --trace) (0: not planned); a run with another, or with a scene and no walk, "
            "warns once");
+  t.number("plan.ipd_m", [](auto& c) -> auto& { return c.plan.ipd_m; }, 0.0, 1.0, "m",
+           "the distance between the eyes this configuration was planned for (--ipd): its tiles and faces were bounded "
+           "for eyes that far apart; a planned run (plan.scene_hash not 0) with another --ipd warns once");
   return t;
 }
 

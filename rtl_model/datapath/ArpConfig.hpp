@@ -152,10 +152,14 @@ struct HostEngineConfig {
   double object_setup_s = 5e-6;   // per object drawn (state changes, transforms)
 };
 
-// What `arpsim plan` records of the scene and motion it planned for.
+// The distance between the eyes when none is given (--ipd), in metres.
+inline constexpr double kDefaultIpdM = 0.064;
+
+// What `arpsim plan` records of the scene, the motion and the eyes it planned for.
 struct PlanRecord {
   int64_t scene_hash = 0;   // host::scene_hash of the scene (0: not planned)
   int64_t motion_hash = 0;  // sim::motion_hash of the walk and the head motion on it (0: not planned)
+  double ipd_m = kDefaultIpdM;  // the distance between the eyes it planned for (--ipd; plans from before it was kept: the default)
 };
 
 struct PipelineConfig {
