@@ -1312,6 +1312,37 @@ TEST(PlanCli, ARunSkipsNoUpdateWithTheEngineThePlanNeedsAndSomeWithLess) {
   }
 }
 
+// Memories exchanging an object swap together, at the last of them to finish, in the plan's replay as in a run: a
+// ball walked past moves from memory 1 (every 4th frame) to memory 0 (every frame) in a frame both render, while
+// memory 1 holds a far sphere whose render takes about 2.5 frames (20 000 triangles for each eye at 4.8e5 a second).
+// Memory 0's image of that frame then waits for memory 1's, and its next update is skipped too: one skip more than
+// the engine's queue alone gives (seen failing with the joint swap dropped from the replay: 23 against the run's 24).
+// The starting configuration's ladder, replayed (Plan::base_need), against a run of it over the whole walk at 60 Hz.
+TEST(PlanCli, MemoriesExchangingAnObjectSwapTogetherAsInARun) {
+  TempDir d;
+  write(d.file("pass.json"), R"({"name": "pass", "objects": [{"name": "ball", "sphere": 0.3, "segments": 8, "position": [0.5, 1.6, -1.5]},
+    {"name": "far", "sphere": 2, "segments": 100, "position": [0, 1.6, -40]}]})");
+  write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1.5]]})");
+  PlanRequest r = request(d.file("pass.json"), d.file("walk.json"));
+  r.base = config::apply_overrides(small_display_60hz(), {"memory.count=2", "memory.update_ratio=4", "memory.threshold_deg=5",
+                                                          "host.object_setup_s=0", "host.texels_per_s=1e15", "host.triangles_per_s=4.8e5"});
+  r.size_widths = false;
+  const Plan p = make_plan(r);
+  ASSERT_EQ(std::make_tuple(p.base_ladder.count, p.base_ladder.update_frames, p.base_ladder.update_ratio), std::make_tuple(2, 1, 4));
+  std::ofstream(d.file("base.json")) << config::to_json(r.base).dump(2);
+  const int frames = static_cast<int>(std::floor(p.motion_s * dp::VideoTiming(r.base.timing).refresh_hz())) + 1;  // the replay's
+  const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
+                             d.file("base.json") + " --scene " + d.file("pass.json") + " --walk " + d.file("walk.json") +
+                             " --report " + d.file("r.json"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const nlohmann::json rep = test::load_json(d.file("r.json"));
+  ASSERT_EQ(rep["host"]["memories"].size(), 2u);
+  const int64_t skipped = rep["host"]["memories"][0]["skipped_overload"].get<int64_t>();
+  EXPECT_EQ(rep["host"]["memories"][1]["skipped_overload"], 0);  // memory 1's own render fits in its period
+  EXPECT_GT(skipped, 0);
+  EXPECT_EQ(p.base_need.skipped, skipped);
+}
+
 // The FIFOs are the smallest the configuration allows, and a cycle-level run of the plan, the host
 // rendering into its memories, shows why: nothing stalls, each inter-stage FIFO holds one token, the
 // scan-out FIFO the issue slack and one, and no write is blocked.
