@@ -43,9 +43,11 @@ class Fingerprint {
     x ^= x >> 33;
     return x;
   }
-  // As a configuration key holds it: positive and never 0 (0 there means "none").
+  // As a configuration key holds it: positive and never 0 (0 there means "none"), and below 2^53, so that a JSON
+  // tool holding numbers as doubles (jq, JavaScript) writes it back exactly: a plan edited with jq kept 63 bits
+  // rounded, and its runs warned that it was planned for another scene and motion.
   int64_t key() const {
-    const auto v = static_cast<int64_t>(value() >> 1);
+    const auto v = static_cast<int64_t>(value() >> 11);
     return v == 0 ? 1 : v;
   }
 

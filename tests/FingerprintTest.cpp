@@ -50,6 +50,17 @@ TEST(Fingerprint, OneBitFlippedChangesAboutHalfTheBits) {
     }
 }
 
+// A key (plan.scene_hash, plan.motion_hash) is below 2^53: a JSON tool that holds numbers as doubles (jq, JavaScript)
+// writes it back as it read it. Seen failing with 63-bit keys (the key before 2026-11-28: jq rounded it).
+TEST(Fingerprint, AKeySurvivesAToolThatReadsNumbersAsDoubles) {
+  for (uint64_t i = 0; i < 1000; ++i) {
+    const int64_t k = Fingerprint{}.add(i).key();
+    EXPECT_GT(k, 0);
+    EXPECT_LT(k, int64_t{1} << 53) << i;
+    EXPECT_EQ(static_cast<int64_t>(static_cast<double>(k)), k) << i;
+  }
+}
+
 // What a plan records: the gallery, and its walk, mirrored in x and in z are another scene and another walk.
 TEST(Fingerprint, AMirroredSceneAndWalkAreOthers) {
   const host::Scene gallery = host::make_gallery();
