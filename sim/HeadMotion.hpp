@@ -32,8 +32,7 @@ struct HeadMotion {
 // On a walk the head faces where it goes, a head motion's rotation on top (in the head's frame).
 void face_walk(const host::WalkPath& walk, std::vector<tracker::PoseSample>& poses);
 
-// plan.motion_hash: the walk's alone (host::walk_hash) when the head has no motion of its own -- the hash plans
-// made before head motions were planned for recorded -- else the walk's with the synthetic motion's parameters
+// plan.motion_hash: the walk's alone (host::walk_hash) when the head has no motion of its own, else the walk's with the synthetic motion's parameters
 // (those that shape it: the unit axis times the rate, the shake's peak or the pendulum's amplitude; the shake's
 // frequency or the pendulum's period; the sampling, the noise and its seed) or the trace file's bytes. InputError naming the trace if it cannot be read.
 int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head);

@@ -73,6 +73,14 @@ host::Scene MemoryContents::load_scene() const {
       std::fprintf(stderr, "arpsim: warning: %s was planned for another scene (plan.scene_hash %lld); scene %s hashes to %lld: "
                            "run `arpsim plan` for it\n",
                    plan_source.c_str(), static_cast<long long>(plan_scene_hash), sc.name.c_str(), static_cast<long long>(h));
+    // The plan bounded its faces and tiles for an object's sphere grown by half the eyes' distance, and counted the
+    // engine's load for those eyes. (One eye has no distance. Within a nanometre: a value a hand or a tool rewrote.)
+    const double ipd = checked_ipd_m();
+    if (plan_eyes > 1 && std::abs(ipd - plan_ipd_m) > 1e-9)
+      std::fprintf(stderr, "arpsim: warning: %s was planned for eyes %g mm apart (plan.ipd_m %g); this run's --ipd is %g mm: "
+                           "its faces and tiles were bounded for the planned eyes%s (run `arpsim plan` with --ipd %g)\n",
+                   plan_source.c_str(), 1000 * plan_ipd_m, plan_ipd_m, 1000 * ipd,
+                   ipd > plan_ipd_m && plan_bounds_drawing ? ": wider ones can draw outside them, and those texels are lost" : "", ipd);
   }
   return sc;
 }

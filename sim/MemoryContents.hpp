@@ -17,15 +17,22 @@ struct MemoryContents {
   std::string scene;                   // or a scene file / "gallery"
   std::string position;                // --scene: head position x,y,z (default: the gallery walk's start)
   double time_s = 0.0;                 // --scene: animation time
-  double ipd_m = dp::kDefaultIpdM;                // distance between the eyes
+  double ipd_m = dp::kDefaultIpdM;     // distance between the eyes
   std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
   bool face_culling = true;            // not --no-face-culling: each object drawn only on the faces it reaches
-  // The scene the configuration was planned for (plan.scene_hash; 0: none) and the configuration's
-  // name: load_scene() warns once when the scene is another (expect_plan sets both).
+  // The scene and the eyes the configuration was planned for (plan.scene_hash, 0: none; plan.ipd_m) and the
+  // configuration's name: load_scene() warns once when the scene is another, or the eyes are another distance apart
+  // (expect_plan sets them).
   int64_t plan_scene_hash = 0;
+  double plan_ipd_m = dp::kDefaultIpdM;
+  int plan_eyes = 2;
+  bool plan_bounds_drawing = false;  // faces or tiles left out (memory.faces, memory.tiles): wider eyes lose texels there
   std::string plan_source;
   void expect_plan(const dp::ArpConfig& c, const std::string& source) {
     plan_scene_hash = c.plan.scene_hash;
+    plan_ipd_m = c.plan.ipd_m;
+    plan_eyes = c.timing.eyes;
+    plan_bounds_drawing = !c.memory.tiles.empty() || c.memory.faces_present() < 6;
     plan_source = source;
   }
 

@@ -39,7 +39,7 @@ constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spr
 // The longest motion a plan covers: region priority rendering is weighed by stepping the region rule at every
 // display frame, and frame times are whole picoseconds (a walk at a vanishing speed would last for ever).
 constexpr double kMaxPlanSpanS = 3600.0;
-constexpr int kFillPoints = 16;    // of them, where the fill is measured by rendering the scene
+constexpr int kCompositionPoints = 16;  // of them, where the depth code's composition is measured
 
 // The smallest angle between neighbouring display pixels (across and down) after the lens, and the
 // angle at the panel's centre, from the golden reference's exact lens directions (eye 0; the other
@@ -170,7 +170,7 @@ size_t rendered_sample(size_t j, size_t points, size_t samples) {
 
 // Texels each object fills (passing the depth test) per update at each sample (k * objects + i), for one
 // eye: the whole scene rendered from the walk's point at face size S, by the run's own renderer, at
-// kFillPoints samples evenly spread over the motion; every other sample interpolates the two around it.
+// `fill_points` samples evenly spread over the motion; every other sample interpolates the two around it.
 // Within one render an object's fill is at most what it fills in a memory holding only some of the objects
 // (fewer occluders drawn before it: host::CubeFaceRenderer draws in scene order), so for any ladder each
 // rendered point's figure is a lower bound; the samples between are not rendered, and their figures are
@@ -180,13 +180,13 @@ struct FillSamples {
   std::vector<double> texels;  // k * objects + i
   int points = 0;              // samples rendered
 };
-FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, int S,
+FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, int S, int fill_points,
                          const std::function<void(double)>& progress) {
   const size_t n = scene.objects.size(), samples = ms.t.size();
   FillSamples out;
   out.texels.assign(samples * n, 0.0);
   if (n == 0 || samples == 0) return out;
-  const size_t points = std::min<size_t>(samples, kFillPoints);
+  const size_t points = std::min<size_t>(samples, static_cast<size_t>(fill_points));
   host::CubeFaceRenderer renderer;
   renderer.set_fill_by_object(true);
   std::vector<host::FaceImage> faces;
@@ -457,15 +457,15 @@ int min_depth_bits() { return static_cast<int>(dp::arp_parameters().find("memory
 // configuration's.
 int depth_bits_for(int count, const dp::ArpConfig& base) { return count == 1 ? min_depth_bits() : base.memory.depth_bits; }
 
-// The planned ladder's composition at every depth-code width (CompositionDepth): at the fill's rendered points of
-// the motion, each object in the memory the run's priority rule puts it in there (the scheduler replayed over
+// The planned ladder's composition at every depth-code width (CompositionDepth): at kCompositionPoints points of
+// the motion evenly spread (rendered_sample; the fill's, at its default --fill-points), each object in the memory the run's priority rule puts it in there (the scheduler replayed over
 // every sample, as ladder_load does), from the walk's point, at face size S.
 CompositionDepth measure_composition(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
                                      double hz, double threshold_rad, const LadderLoad& L, int S,
                                      const std::function<void(double)>& progress) {
   CompositionDepth out;
   host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
-  const size_t samples = ms.t.size(), points = std::min<size_t>(samples, kFillPoints);
+  const size_t samples = ms.t.size(), points = std::min<size_t>(samples, kCompositionPoints);
   std::vector<int> memory_of(scene.objects.size());
   for (size_t k = 0, j = 0; k < samples && j < points; ++k) {
     sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
@@ -717,6 +717,8 @@ Plan make_plan(const PlanRequest& r) {
   if (r.walk.empty())
     throw InputError("--walk", "", "a plan is made for a motion: a walk file, or gallery (--speed 0: standing at its first point)");
   if (!(r.load_tolerance >= 0) || r.load_tolerance > 10) throw InputError("--load-tolerance", "", "must be 0 .. 10");
+  if (r.fill_points < 2 || r.fill_points > kMaxSamples)
+    throw InputError("--fill-points", std::to_string(r.fill_points), "must be 2 .. " + std::to_string(kMaxSamples));
   if (r.memory_limit_mib && !(*r.memory_limit_mib >= 0 && *r.memory_limit_mib <= 1e9))
     throw InputError("--memory-limit", printf_text("%g", *r.memory_limit_mib), "must be 0 (none) .. 1e9 MiB");
   if (r.depth_error && !(*r.depth_error >= 0 && *r.depth_error <= 1))
@@ -884,7 +886,7 @@ Plan make_plan(const PlanRequest& r) {
   std::vector<LadderLoad> candidates;
   const dp::HostEngineConfig& engine = p.config.host;
   const int eyes = p.config.timing.eyes;
-  const FillSamples fill = measure_fill(scene, walk, ms, S, [&](double f) { progress(0.96 + 0.02 * f, "measuring the fill"); });
+  const FillSamples fill = measure_fill(scene, walk, ms, S, r.fill_points, [&](double f) { progress(0.96 + 0.02 * f, "measuring the fill"); });
   p.fill_points = fill.points;
   const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, ipd_m, fill);
   if (n == 0) {
@@ -989,7 +991,7 @@ Plan make_plan(const PlanRequest& r) {
   const FillSamples base_fill =
       r.base.memory.face_size == S || n == 0
           ? fill
-          : measure_fill(scene, walk, ms, r.base.memory.face_size, [&](double f) { progress(0.98 + 0.01 * f, "measuring the fill"); });
+          : measure_fill(scene, walk, ms, r.base.memory.face_size, r.fill_points, [&](double f) { progress(0.98 + 0.01 * f, "measuring the fill"); });
   const std::vector<double> base_engine_s =
       r.base.memory.face_size == S ? engine_s : engine_seconds(scene, walk, ms, engine, eyes, ipd_m, base_fill);
   p.base_ladder = n == 0 ? p.planned

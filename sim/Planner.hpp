@@ -44,6 +44,10 @@ struct PlanRequest {
   std::optional<double> threshold_deg;  // theta_t (0: one texel at the planned face size; unset: base's memory.threshold_deg)
   std::string resolve = "centre";      // the display pixel a texel is held to: at the lens "centre", or the "finest"
   double load_tolerance = 0.10;        // a memory more must save more than this share of the host's load
+  // Points of the motion where each object's fill is measured by rendering the whole scene (--fill-points); the
+  // samples between interpolate the two around them. More follow the fill's peaks (a doorway, a wall close by) that
+  // the engine's replay needs, at a render each.
+  int fill_points = 16;
   // The most hardware display memory a ladder may take, MiB (whole faces present, both buffers, every eye;
   // unset: what the starting configuration takes; 0: no limit).
   std::optional<double> memory_limit_mib;

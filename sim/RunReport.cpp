@@ -15,8 +15,8 @@ namespace arp::sim {
 namespace {
 
 // A frame's fingerprint: four Fingerprint lanes over its words in turn (word i to lane i mod 4), then the
-// count and the lanes folded into one. One lane is one chain of dependent multiplies -- about a
-// millisecond a stereo VGA frame -- and four run side by side in the core at the cost of one.
+// count and the lanes folded into one. One lane is one chain of dependent multiplies, shifts and xors, and four
+// run side by side in the core at the cost of one.
 template <class V>
 std::string hash_of(const V& values) {
   Fingerprint lane[4];

@@ -305,21 +305,6 @@ void Session::warn_if_planned_for_another_motion() const {
                  head.given() ? (", the head turning with " + head.describe()).c_str() : "", static_cast<long long>(h));
 }
 
-// A configuration planned for eyes one distance apart (plan.ipd_m) run with another (--ipd): the plan bounded its
-// faces and tiles for an object's sphere grown by half that distance, and counted the engine's load for those eyes.
-// Said once, before the run; only where a scene is drawn for two eyes (one eye, or a cube map, has no distance).
-void Session::warn_if_planned_for_other_eyes() const {
-  const dp::PlanRecord& plan = spec_.config.plan;
-  if (plan.scene_hash == 0 || spec_.memories.scene.empty() || spec_.config.timing.eyes < 2) return;
-  const double ipd_m = spec_.memories.checked_ipd_m();
-  if (ipd_m == plan.ipd_m) return;
-  std::fprintf(stderr, "arpsim: warning: %s was planned for eyes %g mm apart (plan.ipd_m %g); this run's --ipd is %g mm: "
-                       "its faces and tiles were bounded for the planned eyes%s (run `arpsim plan` with --ipd %g)\n",
-               spec_.config_source.c_str(), 1000 * plan.ipd_m, plan.ipd_m, 1000 * ipd_m,
-               ipd_m > plan.ipd_m && !spec_.config.memory.tiles.empty() ? ": wider ones can draw outside them, and those texels are lost" : "",
-               ipd_m);
-}
-
 // memory.assignment against the scene: a name no object has is an error in a configuration written for this
 // scene (or for none), and a warning where the plan was made for another (said once, as the scene is); by
 // regions or the baseline the assignment is not used, which is said once too.
@@ -357,7 +342,6 @@ void Session::build_motion() {
     walk_ = std::make_unique<host::WalkPath>(h.make_walk());
   }
   warn_if_planned_for_another_motion();
-  warn_if_planned_for_other_eyes();
   if (!spec_.trace.empty()) {
     // Only what the run can latch: a second of margin before the first frame covers every lead.
     std::vector<tracker::PoseSample> poses =
@@ -860,7 +844,7 @@ RunSummary Session::run() {
     char b[400];
     std::snprintf(b, sizeof b,
                   "  warning: %" PRId64 " texels the host drew fell on cube faces memory.faces leaves out (%s) and were lost: the "
-                  "configuration was planned for another scene or motion (arpsim plan; footprint.texels_lost_on_absent_faces)",
+                  "configuration was planned for another scene or motion, or for eyes closer together (arpsim plan; footprint.texels_lost_on_absent_faces)",
                   lost, spec_.config.memory.absent_face_names().c_str());
     s.notes.push_back(b);
   }

@@ -67,7 +67,6 @@ class Session {
   void face_walk(std::vector<tracker::PoseSample>& poses) const;
   std::vector<double> frame_speeds_dps() const;
   void warn_if_planned_for_another_motion() const;
-  void warn_if_planned_for_other_eyes() const;
   void check_assignment() const;
   void extend_motion(int64_t through_ps);
   void advance_motion(int64_t frame);

@@ -977,27 +977,37 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     EXPECT_EQ(o.output.find(warn, at + 1), std::string::npos) << "warned more than once: " << o.output;
     EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another motion"), std::string::npos) << o.output;
   }
-  // And the eyes it planned for (plan.ipd_m): another --ipd is said once; a plan made for that --ipd runs quietly with it.
-  EXPECT_EQ(config::load_file(d.file("plan.json")).plan.ipd_m, 0.064);
+  // And the eyes it planned for (plan.ipd_m): another --ipd is said once, by a run and by a still frame of the scene;
+  // a plan made for that --ipd runs quietly with it. Not said without a plan, for one eye, or without the scene.
+  EXPECT_DOUBLE_EQ(config::load_file(d.file("plan.json")).plan.ipd_m, dp::kDefaultIpdM);
   const std::string eyes = d.file("plan.json") + " was planned for eyes 64 mm apart (plan.ipd_m 0.064); this run's --ipd is 70 mm";
-  const auto wider = run_command(run + " --walk " + d.file("walk.json") + " --ipd 0.07");
-  ASSERT_EQ(wider.status, 0) << wider.output;
-  const size_t at = wider.output.find(eyes);
-  ASSERT_NE(at, std::string::npos) << wider.output;
-  EXPECT_EQ(wider.output.find(" was planned for eyes", at + eyes.size()), std::string::npos) << "warned more than once: " << wider.output;
+  const std::string frame = kArpsim + " frame --config " + d.file("plan.json") + " -o " + d.file("f.png") + " --ipd 0.07";
+  for (const std::string& wider : {run + " --walk " + d.file("walk.json") + " --ipd 0.07", frame + " --scene " + d.file("far.json")}) {
+    const auto o = run_command(wider);
+    ASSERT_EQ(o.status, 0) << wider << "\n" << o.output;
+    const size_t at = o.output.find(eyes);
+    ASSERT_NE(at, std::string::npos) << wider << "\n" << o.output;
+    EXPECT_EQ(o.output.find(" was planned for eyes", at + eyes.size()), std::string::npos) << "warned more than once: " << o.output;
+  }
+  for (const std::string& quiet : {kArpsim + " run -q --frames 1 --every 0 --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + " --ipd 0.07",
+                                   run + " --walk " + d.file("walk.json") + " --ipd 0.07 --set display.eyes=1", frame}) {
+    const auto o = run_command(quiet);
+    ASSERT_EQ(o.status, 0) << quiet << "\n" << o.output;
+    EXPECT_EQ(o.output.find(" was planned for eyes"), std::string::npos) << quiet << "\n" << o.output;
+  }
   const auto planned = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
                                    " --ipd 0.07 -o " + d.file("wide.json"));
   ASSERT_EQ(planned.status, 0) << planned.output;
-  EXPECT_EQ(config::load_file(d.file("wide.json")).plan.ipd_m, 0.07);
-  const auto quiet = run_command(kArpsim + " run -q --frames 1 --every 0 --config " + d.file("wide.json") + " --scene " + d.file("far.json") +
-                                 " --walk " + d.file("walk.json") + " --ipd 0.07");
-  ASSERT_EQ(quiet.status, 0) << quiet.output;
-  EXPECT_EQ(quiet.output.find(" was planned for "), std::string::npos) << quiet.output;
+  EXPECT_DOUBLE_EQ(config::load_file(d.file("wide.json")).plan.ipd_m, 0.07);
+  const auto same_eyes = run_command(kArpsim + " run -q --frames 1 --every 0 --config " + d.file("wide.json") + " --scene " + d.file("far.json") +
+                                     " --walk " + d.file("walk.json") + " --ipd 0.07");
+  ASSERT_EQ(same_eyes.status, 0) << same_eyes.output;
+  EXPECT_EQ(same_eyes.output.find(" was planned for "), std::string::npos) << same_eyes.output;
 }
 
 // And the head's own motion on the walk (--motion, --trace): the same motion runs quietly, and so does the same
 // rotation about an axis written longer, or reversed with its rate; no head motion, another rate, or a trace edited after the plan is said once.
-// A plan for the walk alone keeps the walk's hash (plans made before head motions were planned for still match).
+// A plan for the walk alone records the walk's hash.
 TEST(PlanCli, ThePlanKnowsItsHeadMotion) {
   TempDir d;
   write(d.file("far.json"), R"({"name": "far", "objects": [{"name": "ball", "sphere": 0.5, "position": [0, 1.6, -20]}]})");
@@ -1267,6 +1277,41 @@ TEST(PlanCli, ThePlansEngineBusyIsWhatARunsEngineIs) {
   }
 }
 
+// --fill-points: the fill measured at more points of the motion follows it more closely. Walking a metre toward the
+// ball its fill grows about fourfold along a curve (as the inverse square of the distance), which a line between
+// two points (the walk's ends) overstates in between; 64 points come within 1 % of a run's engine.
+TEST(PlanCli, MoreFillPointsFollowTheFill) {
+  TempDir d;
+  write_near_ball(d);
+  write(d.file("toward.json"), R"({"speed": 1, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
+  double busy[2] = {0, 0};
+  int i = 0;
+  for (const int points : {2, 64}) {
+    PlanRequest r = request(d.file("near.json"), d.file("toward.json"));
+    r.size_widths = false;
+    r.base.host.object_setup_s = 0;
+    r.base.host.triangles_per_s = 1e15;
+    r.base.host.texels_per_s = 1e7;
+    r.fill_points = points;
+    const Plan p = make_plan(r);
+    EXPECT_EQ(p.fill_points, points);
+    busy[i++] = p.planned.engine_busy;
+    if (points == 2) continue;
+    write(d.file("plan.json"), plan_config_text(p));
+    const int frames = static_cast<int>(std::lround(p.motion_s * dp::VideoTiming(r.base.timing).refresh_hz()));
+    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
+                               d.file("plan.json") + " --scene " + d.file("near.json") + " --walk " + d.file("toward.json") +
+                               " --report " + d.file("r.json"));
+    ASSERT_EQ(o.status, 0) << o.output;
+    double run_busy = 0;
+    const nlohmann::json rep = test::load_json(d.file("r.json"));
+    for (const auto& m : rep["host"]["memories"]) run_busy += m["engine_busy_s"].get<double>();
+    run_busy /= frames / dp::VideoTiming(r.base.timing).refresh_hz();
+    EXPECT_NEAR(busy[1], run_busy, 0.01 * run_busy);
+    EXPECT_GT(busy[0] - run_busy, 3 * std::abs(busy[1] - run_busy)) << busy[0] << " " << busy[1] << " " << run_busy;
+  }
+}
+
 // The engine a plan says it needs is what a run's engine needs: the host simulation (its own queue of renders,
 // from the triangles its renderer sent) skips no update with an engine 2 % faster than the plan's least, and skips
 // some with one 3 % slower. A ball two metres ahead of a walk toward it, inside the -Z face of both eyes all along,
@@ -1331,12 +1376,22 @@ TEST(PlanCli, MemoriesExchangingAnObjectSwapTogetherAsInARun) {
   ASSERT_EQ(std::make_tuple(p.base_ladder.count, p.base_ladder.update_frames, p.base_ladder.update_ratio), std::make_tuple(2, 1, 4));
   std::ofstream(d.file("base.json")) << config::to_json(r.base).dump(2);
   const int frames = static_cast<int>(std::floor(p.motion_s * dp::VideoTiming(r.base.timing).refresh_hz())) + 1;  // the replay's
-  const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
-                             d.file("base.json") + " --scene " + d.file("pass.json") + " --walk " + d.file("walk.json") +
-                             " --report " + d.file("r.json"));
-  ASSERT_EQ(o.status, 0) << o.output;
-  const nlohmann::json rep = test::load_json(d.file("r.json"));
-  ASSERT_EQ(rep["host"]["memories"].size(), 2u);
+  const auto run = [&](int n) {
+    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(n) + " --config " +
+                               d.file("base.json") + " --scene " + d.file("pass.json") + " --walk " + d.file("walk.json") +
+                               " --report " + d.file("r.json"));
+    EXPECT_EQ(o.status, 0) << o.output;
+    const nlohmann::json rep = test::load_json(d.file("r.json"));
+    EXPECT_EQ(rep["host"]["memories"].size(), 2u);
+    return rep;
+  };
+  // The ball starts in memory 1 with the far sphere and ends in memory 0 (objects_now: both eyes' memories hold the same).
+  const nlohmann::json first = run(1);
+  EXPECT_EQ(first["host"]["memories"][0]["objects_now"], 0);
+  EXPECT_EQ(first["host"]["memories"][1]["objects_now"], 2);
+  const nlohmann::json rep = run(frames);
+  EXPECT_EQ(rep["host"]["memories"][0]["objects_now"], 1);
+  EXPECT_EQ(rep["host"]["memories"][1]["objects_now"], 1);
   const int64_t skipped = rep["host"]["memories"][0]["skipped_overload"].get<int64_t>();
   EXPECT_EQ(rep["host"]["memories"][1]["skipped_overload"], 0);  // memory 1's own render fits in its period
   EXPECT_GT(skipped, 0);

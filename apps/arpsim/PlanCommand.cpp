@@ -76,6 +76,10 @@ Runner add_plan_command(CLI::App& app) {
   cmd->add_option("--load-tolerance", a->req.load_tolerance,
                   "A display memory more must cut the host's load by more than this share of the least load")
       ->capture_default_str();
+  cmd->add_option("--fill-points", a->req.fill_points,
+                  "Points of the motion where each object's fill is measured by rendering the scene, 2 .. 4000 (the samples "
+                  "between interpolate; more follow the fill's peaks the engine replay needs, at a render each)")
+      ->capture_default_str();
   cmd->add_option_function<double>(
       "--memory-limit", [a](double v) { a->req.memory_limit_mib = v; },
       "The most hardware display memory a ladder of memories may take, MiB, as whole faces or, where those are over it, "

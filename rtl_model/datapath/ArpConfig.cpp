@@ -202,7 +202,8 @@ ParameterTable<ArpConfig> make_parameters() {
            "warns once");
   t.number("plan.ipd_m", [](auto& c) -> auto& { return c.plan.ipd_m; }, 0.0, 1.0, "m",
            "the distance between the eyes this configuration was planned for (--ipd): its tiles and faces were bounded "
-           "for eyes that far apart; a planned run (plan.scene_hash not 0) with another --ipd warns once");
+           "for eyes that far apart; a planned run, or still frame, of the scene with another --ipd warns once "
+           "(plan.scene_hash not 0, two eyes)");
   return t;
 }
 
