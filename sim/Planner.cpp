@@ -388,7 +388,8 @@ std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig&
   return ". Replayed at every frame as a run's engine renders (memories due rendered one after another, fastest first, a "
          "new image shown at the first vertical blank after it is done, a memory due again before then skipped), the least "
          "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is about " + printf_text("%.3g", need.scale) +
-         " times this one (an estimate: the fill is interpolated between rendered points): " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
+         " times this one (an estimate: the fill is interpolated between rendered points, a peak between two missed; "
+         "more points, --fill-points, follow it closer): " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
          printf_text("%.4g", need.fill_texels_per_s) + " texels/s, " + printf_text("%.3g", engine.object_setup_s / need.scale) +
          " s set-up an object" +
          (need.skipped == 0 ? "; this one skips none of its " + std::to_string(need.renders) + " renders, the longest " +
@@ -1228,8 +1229,8 @@ Plan make_plan(const PlanRequest& r) {
   p.not_decided.push_back("a face size per memory (one face size for every memory: the composition unit composes each bilinear "
                           "tap across the memories at the same texel position)");
   p.not_decided.push_back("a bound on the fill between the " + std::to_string(fill.points) +
-                          " points of the motion rendered for it: each other point interpolates the two around it, so an "
-                          "object that comes close between two of them and leaves again is under-counted");
+                          " points of the motion rendered for it (--fill-points): each other point interpolates the two around "
+                          "it, so an object that comes close between two of them and leaves again is under-counted");
   if (p.planned.count > 1)
     p.not_decided.push_back("a bound on the depth code's composition: it is measured from the walk's point at the " +
                             std::to_string(p.composition.points) + " points rendered, each memory as if rendered there and "
