@@ -35,7 +35,6 @@ namespace arp::sim {
 
 namespace {
 
-constexpr int kMaxSamples = 4000;  // points of the motion evaluated (evenly spread over it)
 // The longest motion a plan covers: region priority rendering is weighed by stepping the region rule at every
 // display frame, and frame times are whole picoseconds (a walk at a vanishing speed would last for ever).
 constexpr double kMaxPlanSpanS = 3600.0;
@@ -459,8 +458,9 @@ int min_depth_bits() { return static_cast<int>(dp::arp_parameters().find("memory
 int depth_bits_for(int count, const dp::ArpConfig& base) { return count == 1 ? min_depth_bits() : base.memory.depth_bits; }
 
 // The planned ladder's composition at every depth-code width (CompositionDepth): at kCompositionPoints points of
-// the motion evenly spread (rendered_sample; the fill's, at its default --fill-points), each object in the memory the run's priority rule puts it in there (the scheduler replayed over
-// every sample, as ladder_load does), from the walk's point, at face size S.
+// the motion evenly spread (rendered_sample; the fill's, at its default --fill-points), each object in the memory
+// the run's priority rule puts it in there (the scheduler replayed over every sample, as ladder_load does), from
+// the walk's point, at face size S.
 CompositionDepth measure_composition(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms,
                                      double hz, double threshold_rad, const LadderLoad& L, int S,
                                      const std::function<void(double)>& progress) {

@@ -31,6 +31,9 @@
 
 namespace arp::sim {
 
+// The most points of the motion a plan evaluates (evenly spread over it): also the most --fill-points.
+inline constexpr int kMaxSamples = 4000;
+
 struct PlanRequest {
   dp::ArpConfig base;                  // what the plan starts from: the defaults, --config, --set
   std::string base_source = "the embedded default";

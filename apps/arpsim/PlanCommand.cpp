@@ -77,8 +77,9 @@ Runner add_plan_command(CLI::App& app) {
                   "A display memory more must cut the host's load by more than this share of the least load")
       ->capture_default_str();
   cmd->add_option("--fill-points", a->req.fill_points,
-                  "Points of the motion where each object's fill is measured by rendering the scene, 2 .. 4000 (the samples "
-                  "between interpolate; more follow the fill's peaks the engine replay needs, at a render each)")
+                  "Points of the motion where each object's fill is measured by rendering the scene, 2 .. " +
+                      std::to_string(arp::sim::kMaxSamples) +
+                      " (the samples between interpolate; more follow the fill's peaks the engine replay needs, at a render each)")
       ->capture_default_str();
   cmd->add_option_function<double>(
       "--memory-limit", [a](double v) { a->req.memory_limit_mib = v; },
