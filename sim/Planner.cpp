@@ -35,6 +35,22 @@ namespace arp::sim {
 
 namespace {
 
+// The plan's steps in the order make_plan takes them, for its progress (PlanRequest::progress).
+enum PlanStep : int {
+  kStepScene = 1,
+  kStepPixelAngles,
+  kStepWidths,
+  kStepFill,
+  kStepLadders,
+  kStepLimitTiles,
+  kStepBaseFill,
+  kStepEngine,
+  kStepPlannedTiles,
+  kStepDepthCode,
+  kStepRegions,
+  kPlanSteps = kStepRegions
+};
+
 // The longest motion a plan covers: region priority rendering is weighed by stepping the region rule at every
 // display frame, and frame times are whole picoseconds (a walk at a vanishing speed would last for ever).
 constexpr double kMaxPlanSpanS = 3600.0;
@@ -95,14 +111,19 @@ class WidthSearch {
   double error(const dp::ArpConfig& c) {
     if (!dp::validate(c).empty()) return std::numeric_limits<double>::infinity();
     ++plan_.harness_runs;
-    if (req_.progress) req_.progress(std::min(0.95, 0.1 + 0.02 * plan_.harness_runs), "sizing the datapath widths");
+    if (req_.progress)
+      req_.progress(kStepWidths, kPlanSteps, std::min(0.99, static_cast<double>(plan_.harness_runs) / static_cast<double>(expected_)),
+                    "datapath widths");
     return accuracy::run(c, opt_).overall.max_error;
   }
+  // The harness runs the search is expected to take, for its progress.
+  void expect(int runs) { expected_ = std::max(1, runs); }
 
  private:
   const PlanRequest& req_;
   Plan& plan_;
   accuracy::Options opt_;
+  int expected_ = 40;
 };
 
 std::string face_list(const std::array<int, 6>& faces) {
@@ -737,12 +758,12 @@ Plan make_plan(const PlanRequest& r) {
   base_whole.memory.tiles.clear();
   base_whole.memory.tile_pool.clear();
   base_whole.memory.assignment.clear();
-  auto progress = [&](double f, const std::string& w) {
-    if (r.progress) r.progress(f, w);
+  auto progress = [&](int step, double f, const std::string& w) {
+    if (r.progress) r.progress(step, kPlanSteps, f, w);
   };
 
   // The scene and its motion.
-  progress(0.0, "loading the scene");
+  progress(kStepScene, 0.0, "the scene");
   const host::Scene scene = r.memories.load_scene();
   p.scene_name = scene.name;
   p.scene_hash = host::scene_hash(scene);
@@ -772,7 +793,7 @@ Plan make_plan(const PlanRequest& r) {
   p.config.plan.ipd_m = ipd_given;
 
   // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
-  progress(0.02, "measuring the display's pixel angles");
+  progress(kStepPixelAngles, 0.0, "pixel angles");
   const auto [amin, acentre] = pixel_angles(r.base);
   p.pixel_angle_min_rad = amin;
   p.pixel_angle_centre_rad = acentre;
@@ -798,6 +819,7 @@ Plan make_plan(const PlanRequest& r) {
   if (!r.size_widths) {
     p.choices.push_back({"datapath.*", widths_text(p.config.widths), "kept from " + r.base_source + " (--keep-widths): not measured"});
   } else {
+    progress(kStepWidths, 0.0, "datapath widths");
     p.texel_error_base = search.error(r.base);
     p.texel_error_bound = r.texel_error > 0 ? r.texel_error : p.texel_error_base;
     dp::ArpConfig c = p.config;
@@ -818,6 +840,11 @@ Plan make_plan(const PlanRequest& r) {
                              "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
                              printf_text("%.4f", err) + " texels (every width at its widest)");
     }
+    // Each width's binary search, twice over, then the planned widths' own run (a second pass that changes
+    // nothing ends at once).
+    int expected = p.harness_runs + 1;
+    for (const WidthKey& k : kWidths) expected += 2 * static_cast<int>(std::ceil(std::log2(c.widths.*k.field - k.lo() + 1.0)));
+    search.expect(expected);
     for (int pass = 0; pass < 2; ++pass) {
       bool changed = false;
       for (const WidthKey& k : kWidths) {
@@ -866,7 +893,6 @@ Plan make_plan(const PlanRequest& r) {
 
   // 3. Display memories: the ladder of update periods with the least host load, in as few memories as
   // come within the tolerance of the least.
-  progress(0.96, "choosing the display memories");
   p.threshold_rad = theta_deg > 0 ? deg_to_rad(theta_deg) : dp::texel_angle_rad(S);
   const size_t n = scene.objects.size();
   std::vector<double> validity_s(ms.t.size() * n, host::kForever);
@@ -887,7 +913,9 @@ Plan make_plan(const PlanRequest& r) {
   std::vector<LadderLoad> candidates;
   const dp::HostEngineConfig& engine = p.config.host;
   const int eyes = p.config.timing.eyes;
-  const FillSamples fill = measure_fill(scene, walk, ms, S, r.fill_points, [&](double f) { progress(0.96 + 0.02 * f, "measuring the fill"); });
+  const std::string fill_what = "fill (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + " renders)";
+  progress(kStepFill, 0.0, fill_what);
+  const FillSamples fill = measure_fill(scene, walk, ms, S, r.fill_points, [&](double f) { progress(kStepFill, f, fill_what); });
   p.fill_points = fill.points;
   const std::vector<double> engine_s = engine_seconds(scene, walk, ms, engine, eyes, ipd_m, fill);
   if (n == 0) {
@@ -895,6 +923,7 @@ Plan make_plan(const PlanRequest& r) {
   } else {
     for (int count = 1; count <= dp::kCompositionInputs; ++count)
       for (const int ratio : {2, 3, 4}) {
+        progress(kStepLadders, static_cast<double>(count - 1) / dp::kCompositionInputs, "ladders");
         dp::ArpConfig t = p.config;
         t.memory.count = count;
         t.memory.update_frames = first;
@@ -939,8 +968,10 @@ Plan make_plan(const PlanRequest& r) {
   std::map<std::array<int, 3>, TileBound> bounds;  // by ladder: the tile bounds worked out (the planned one's reused)
   if (limit_mib > 0) {
     p.memory_limit_bytes = static_cast<int64_t>(std::floor(limit_mib * 1048576.0));
-    progress(0.98, "bounding the tiles drawn on");
-    for (LadderLoad& L : candidates) {
+    for (size_t j = 0; j < candidates.size(); ++j) {
+      LadderLoad& L = candidates[j];
+      progress(kStepLimitTiles, static_cast<double>(j) / static_cast<double>(candidates.size()),
+               "ladders' tiles");
       L.memory_bytes_whole = ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base));
       if (!r.tile_sparse || L.memory_bytes_whole <= p.memory_limit_bytes) continue;
       const TileBound& b = bounds[ladder_key(L)] = bound_tiles(scene, walk, ms, hz, p.threshold_rad, L, p.config.memory, margin, near_m);
@@ -968,17 +999,6 @@ Plan make_plan(const PlanRequest& r) {
   }
   for (LadderLoad& L : candidates)
     if (L.memory_bytes_whole == 0) L.memory_bytes_whole = ladder_memory_bytes(p.config, L, depth_bits_for(L.count, r.base));
-  // What the configured engine skips with each, replayed at every frame (EngineNeed): plan.md's ladder table. The
-  // choice below stays on the mean load.
-  for (LadderLoad& L : candidates)
-    L.skipped = engine_need(scene, walk, ms, timing, p.threshold_rad, L, engine_s, engine, false).skipped;
-  p.best = *std::min_element(candidates.begin(), candidates.end(),
-                             [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
-  p.planned = p.best;
-  for (const LadderLoad& L : candidates)  // the fewest memories within the tolerance, then the least load
-    if (L.triangles_per_s <= p.best.triangles_per_s * (1 + r.load_tolerance) &&
-        (L.count < p.planned.count || (L.count == p.planned.count && L.triangles_per_s < p.planned.triangles_per_s)))
-      p.planned = L;
   // The starting configuration at its own theta_t (one texel at its own face size unless given).
   const double base_threshold = theta_deg > 0 ? p.threshold_rad : dp::texel_angle_rad(r.base.memory.face_size);
   std::vector<double> base_validity = validity_s;
@@ -989,16 +1009,36 @@ Plan make_plan(const PlanRequest& r) {
             host::object_validity(scene.objects[i], walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k], base_threshold)
                 .period_s();
   // Its fill at its own face size.
+  const bool base_fill_own = r.base.memory.face_size != S && n > 0;
+  const std::string base_fill_what = "fill at face " + std::to_string(r.base.memory.face_size) + " (" +
+                                     std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + " renders)";
+  if (base_fill_own) progress(kStepBaseFill, 0.0, base_fill_what);
   const FillSamples base_fill =
-      r.base.memory.face_size == S || n == 0
-          ? fill
-          : measure_fill(scene, walk, ms, r.base.memory.face_size, r.fill_points, [&](double f) { progress(0.98 + 0.01 * f, "measuring the fill"); });
+      base_fill_own ? measure_fill(scene, walk, ms, r.base.memory.face_size, r.fill_points, [&](double f) { progress(kStepBaseFill, f, base_fill_what); })
+                    : fill;
   const std::vector<double> base_engine_s =
       r.base.memory.face_size == S ? engine_s : engine_seconds(scene, walk, ms, engine, eyes, ipd_m, base_fill);
+  // What the configured engine skips with each, replayed at every frame (EngineNeed): plan.md's ladder table. The
+  // choice below stays on the mean load. Then the least engine for the planned ladder and the starting
+  // configuration's, each a bisection of some 30 replays (the progress's weights).
+  const double replays = static_cast<double>(candidates.size()) + 60.0;
+  for (size_t j = 0; j < candidates.size(); ++j) {
+    progress(kStepEngine, static_cast<double>(j) / replays, "engine replay");
+    candidates[j].skipped = engine_need(scene, walk, ms, timing, p.threshold_rad, candidates[j], engine_s, engine, false).skipped;
+  }
+  p.best = *std::min_element(candidates.begin(), candidates.end(),
+                             [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
+  p.planned = p.best;
+  for (const LadderLoad& L : candidates)  // the fewest memories within the tolerance, then the least load
+    if (L.triangles_per_s <= p.best.triangles_per_s * (1 + r.load_tolerance) &&
+        (L.count < p.planned.count || (L.count == p.planned.count && L.triangles_per_s < p.planned.triangles_per_s)))
+      p.planned = L;
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
                                        r.base.memory.update_ratio, base_validity, base_engine_s, base_fill, eyes);
+  progress(kStepEngine, static_cast<double>(candidates.size()) / replays, "least engine");
   p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, engine_s, engine);
+  progress(kStepEngine, (static_cast<double>(candidates.size()) + 30.0) / replays, "least engine");
   p.base_need = n == 0 ? p.planned_need
                        : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_engine_s, engine);
   p.ladders = candidates;
@@ -1008,10 +1048,12 @@ Plan make_plan(const PlanRequest& r) {
   p.config.memory.threshold_deg = theta_deg;  // what the ladder was sized for: a run with the plan renders by it
   // The tiles of each planned memory any of its objects can be drawn on over the motion (step 5 below; bounded
   // here, as the depth code's width is held to the memory limit with them).
-  if (const auto b = bounds.find(ladder_key(p.planned)); b != bounds.end())
+  if (const auto b = bounds.find(ladder_key(p.planned)); b != bounds.end()) {
     p.tiles = b->second;
-  else
+  } else {
+    progress(kStepPlannedTiles, 0.0, "planned tiles");
     p.tiles = bound_tiles(scene, walk, ms, hz, p.threshold_rad, p.planned, p.config.memory, margin, near_m);
+  }
   // The depth code: with one memory only a written flag; with several, the narrowest that composes them
   // within the bound, measured.
   const auto texel_bits = [&] {
@@ -1024,8 +1066,11 @@ Plan make_plan(const PlanRequest& r) {
                          "one memory: the composition unit has nothing to compare, and the depth code only marks a texel "
                          "written (its reserved value \"empty\", at any width), so the narrowest allowed; " + texel_bits()});
   } else {
+    const std::string depth_what = "depth code (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(kCompositionPoints))) +
+                                   " x " + std::to_string(p.planned.count) + " renders)";
+    progress(kStepDepthCode, 0.0, depth_what);
     p.composition = measure_composition(scene, walk, ms, hz, p.threshold_rad, p.planned, S,
-                                        [&](double f) { progress(0.99 + 0.01 * f, "measuring the depth code"); });
+                                        [&](double f) { progress(kStepDepthCode, f, depth_what); });
     const int base_bits = r.base.memory.depth_bits;
     // The default bound is the starting width's own share: never wider than it. A bound given may call for
     // any width; none meeting it is refused, naming the best.
@@ -1278,9 +1323,12 @@ Plan make_plan(const PlanRequest& r) {
   if (r.weigh_regions && n > 0 && walk.speed() == 0)
     region_why = "regions not weighed: standing, the region rule never updates a memory (nothing to compare)";
   if (r.weigh_regions && n > 0 && walk.speed() > 0) {
-    progress(1.0, "weighing region priority rendering");
-    for (const double size : {2.0, 4.0, 8.0})
+    const std::array<double, 3> sizes = {2.0, 4.0, 8.0};
+    for (const double size : sizes) {
+      progress(kStepRegions, static_cast<double>(p.regions.size()) / static_cast<double>(sizes.size()),
+               "regions (" + printf_text("%g", size) + " m)");
       p.regions.push_back(region_load(scene, walk, head_motion, ms, timing, p.threshold_rad, p.planned.count, S, size, engine, eyes, ipd_m, fill));
+    }
     const RegionLoad* best = nullptr;
     for (const RegionLoad& R : p.regions)
       if (R.refused.empty() && R.engine_busy <= 1 && R.late_share <= p.planned.late_share &&
@@ -1369,7 +1417,7 @@ Plan make_plan(const PlanRequest& r) {
   p.memory_bytes_planned = display_memory_bytes(p.config);
   p.memory_bytes_base = display_memory_bytes(base_whole);
   config::check(p.config, "the plan");
-  progress(1.0, "planned");
+
   return p;
 }
 

@@ -73,7 +73,9 @@ struct PlanRequest {
   // as well and renders less; by default it is weighed and reported only (its tearing between regions is not
   // bounded by the plan: docs/planning.md).
   bool take_regions = false;
-  std::function<void(double, const std::string&)> progress;
+  // Progress: step `step` (1 .. steps) of the plan's, `fraction` of it done, what it does (ProgressLine::update_step).
+  // A step the plan does not need is not reported (the number jumps).
+  std::function<void(int step, int steps, double fraction, const std::string& what)> progress;
 };
 
 struct PlanChoice {

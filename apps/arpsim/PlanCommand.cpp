@@ -34,9 +34,9 @@ int run_plan(PlanArgs& a) {
                      {{"--config", a.cfg.file}, {"--walk", r.walk == "gallery" ? "" : r.walk},
                       {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}, {"--trace", r.head.trace}});
   ProgressLine progress("plan", !a.quiet);
-  r.progress = [&](double f, const std::string& w) { progress.update(f, w); };
+  r.progress = [&](int step, int steps, double f, const std::string& w) { progress.update_step(step, steps, f, w); };
   const sim::Plan p = sim::make_plan(r);
-  progress.finish();
+  progress.update(1.0, "planned");
   const std::string text = sim::plan_markdown(p, r);
   // The three together or none: a failure leaves no new plan beside an old picture, nor a picture of no plan.
   OutputGroup outputs;
