@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -15,14 +16,31 @@ int64_t peak_resident_bytes() {
 }
 
 int64_t available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string key, unit;
-  int64_t kb = 0;
-  while (in >> key >> kb) {
-    std::getline(in, unit);
-    if (key == "MemAvailable:") return kb * 1024;
+  int64_t machine = 0;
+  {
+    std::ifstream in("/proc/meminfo");
+    std::string key, unit;
+    int64_t kb = 0;
+    while (in >> key >> kb) {
+      std::getline(in, unit);
+      if (key == "MemAvailable:") {
+        machine = kb * 1024;
+        break;
+      }
+    }
   }
-  return 0;
+  // A process limit on the address space (ulimit -v) ends an allocation before the machine runs out: what is left of
+  // it, beyond what the process has mapped already.
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    std::ifstream statm("/proc/self/statm");
+    int64_t pages = 0;
+    statm >> pages;
+    const int64_t left = static_cast<int64_t>(as.rlim_cur) - pages * static_cast<int64_t>(sysconf(_SC_PAGESIZE));
+    const int64_t limit = left > 0 ? left : 1;  // (1, not 0: 0 reads as "not known")
+    return machine > 0 ? std::min(machine, limit) : limit;
+  }
+  return machine;
 }
 
 int64_t current_resident_bytes() {

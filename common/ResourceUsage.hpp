@@ -8,8 +8,8 @@ namespace arp {
 int64_t peak_resident_bytes();
 // The resident set now (/proc/self/statm), in bytes; 0 where it cannot be read.
 int64_t current_resident_bytes();
-// The memory the machine can give without swapping (/proc/meminfo's MemAvailable), in bytes; 0 where it
-// cannot be read.
+// The memory the machine can give without swapping (/proc/meminfo's MemAvailable), or less where the process's
+// address-space limit (RLIMIT_AS) leaves less, in bytes; 0 where neither can be read.
 int64_t available_memory_bytes();
 
 }  // namespace arp

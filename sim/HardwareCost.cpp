@@ -203,6 +203,32 @@ std::string hardware_cost_source() {
   return s + ")";
 }
 
+namespace {
+
+// The cube-face renderer's faces at face size S (host::CubeFaceRenderer), bytes.
+int64_t renderer_bytes(int64_t S) { return 6 * S * S * (36 + 8) + 2 * S * S * 8; }
+
+std::string gb_text(int64_t b) {
+  char t[32];
+  std::snprintf(t, sizeof t, "%.1f GB", static_cast<double>(b) / 1e9);
+  return t;
+}
+
+}  // namespace
+
+void check_plan_fits_memory(int face_size, int eyes, const std::string& place, const std::string& key, const std::string& why) {
+  const int64_t available = available_memory_bytes();
+  if (available <= 0) return;
+  const int64_t S = face_size, tiles = dp::DisplayMemoryBank::tiles_per_row_of(face_size);
+  const int64_t bank = int64_t{eyes} * 2 * (6 * tiles * tiles + 1) * dp::DisplayMemoryBank::kTileWords * 8;
+  const int64_t need = renderer_bytes(S) + bank;
+  if (need <= available) return;
+  throw InputError(place, key,
+                   "a plan renders the scene at face size " + std::to_string(face_size) + " (" + why + "): that may need up to " +
+                       gb_text(need) + " (the renderer's faces " + gb_text(renderer_bytes(S)) + ", a display memory " + gb_text(bank) +
+                       "), more than the " + gb_text(available) + " this process has available");
+}
+
 void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_source, bool draws_scene, int truth_face_size) {
   const int64_t available = available_memory_bytes();
   if (available <= 0) return;  // not known: nothing to compare with
@@ -210,22 +236,18 @@ void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_s
     const int64_t tiles = dp::DisplayMemoryBank::tiles_per_row_of(static_cast<int>(S));
     return int64_t{c.timing.eyes} * count * 2 * (faces * tiles * tiles + 1) * dp::DisplayMemoryBank::kTileWords * 8;
   };
-  auto renderer = [](int64_t S) { return 6 * S * S * (36 + 8) + 2 * S * S * 8; };
+  const auto renderer = renderer_bytes;
   const int64_t S = c.memory.face_size, T = truth_face_size > 0 ? truth_face_size : S;
   const int64_t own = memories(S, c.memory.count, c.memory.faces_present()), faces = draws_scene ? renderer(S) : 0;
   const int64_t truth = truth_face_size >= 0 ? memories(T, 1, 6) + renderer(T) + int64_t{c.timing.eyes} * 6 * T * T * 4 : 0;
   if (own + faces + truth <= available) return;
-  auto gb = [](int64_t b) {
-    char t[32];
-    std::snprintf(t, sizeof t, "%.1f GB", static_cast<double>(b) / 1e9);
-    return std::string(t);
-  };
+  const auto gb = gb_text;
   const bool truths = truth_face_size > 0 && truth > own + faces;
   throw InputError(truths ? "--truth-face-size" : config_source, truths ? std::to_string(T) : "memory.face_size",
                    "a run at face size " + std::to_string(truths ? T : S) + " may need up to " + gb(own + faces + truth) +
                        " (display memories with every tile written " + gb(own) + (draws_scene ? ", the renderer's faces " + gb(faces) : "") +
                        (truth_face_size >= 0 ? ", the truth's memory and faces " + gb(truth) : "") + "), more than the " + gb(available) +
-                       " this machine has available: a smaller face size or fewer memories");
+                       " this process has available: a smaller face size or fewer memories");
 }
 
 namespace {

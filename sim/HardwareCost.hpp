@@ -78,9 +78,13 @@ int64_t display_memory_bytes_pooled(const dp::ArpConfig& c, const dp::DisplayMem
 // and words when a scene is drawn (six faces x S^2 x 44 bytes and two S^2 tables of doubles), and with
 // truth_face_size >= 0 the truth's memory and render (0: at the run's face size). InputError naming
 // memory.face_size (in config_source) or --truth-face-size when that is more than the machine has
-// available (MemAvailable): a face size within the key's range can ask for hundreds of GB, and the
+// available (available_memory_bytes: MemAvailable, or a smaller address-space limit): a face size within the key's range can ask for hundreds of GB, and the
 // allocations fail inside parallel regions, where nothing can catch them. Nothing when MemAvailable is unknown.
 void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_source, bool draws_scene, int truth_face_size = -1);
+// Throws InputError(place, key, ...) when the planner's renders at `face_size` (the renderer's faces and one
+// display memory's banks for `eyes`, as its depth-code measurement holds) would take more than is available.
+// `why`: where the face size comes from.
+void check_plan_fits_memory(int face_size, int eyes, const std::string& place, const std::string& key, const std::string& why);
 
 // For tests: the RTL modules the cost CSV must cover, and the parsed rows.
 std::vector<std::string> rtl_module_keys();

@@ -10,6 +10,7 @@
 
 #include "CompositionDepth.hpp"
 #include "ConfigFile.hpp"
+#include "HardwareCost.hpp"
 #include "HeadMotion.hpp"
 #include "MemoryContents.hpp"
 #include "TradeMeasure.hpp"
@@ -746,6 +747,9 @@ Plan make_plan(const PlanRequest& r) {
   if (r.depth_error && !(*r.depth_error >= 0 && *r.depth_error <= 1))
     throw InputError("--depth-error", "", "must be a share of the composed texels, 0 .. 1");
   config::check(r.base, r.base_source);
+  // The starting configuration's fill is measured at its own face size (its figures beside the plan's).
+  check_plan_fits_memory(r.base.memory.face_size, r.base.timing.eyes, r.base_source, "memory.face_size",
+                         "the starting configuration's, where its own load is measured");
   Plan p;
   p.config = r.base;
   // The tiles and the assignment are planned anew (a plan started from a plan's configuration: its lists name
@@ -804,6 +808,8 @@ Plan make_plan(const PlanRequest& r) {
   const bool finest = r.resolve == "finest";
   if (!finest && r.resolve != "centre") throw InputError("--resolve", r.resolve, "must be centre or finest");
   const int S = face_for(finest ? amin : acentre);
+  check_plan_fits_memory(S, r.base.timing.eyes, r.base_source, "lens.fov_deg",
+                         "planned from the angle a display pixel subtends after the lens (--resolve " + r.resolve + ")");
   p.config.memory.face_size = S;
   p.choices.push_back({"memory.face_size", std::to_string(S),
                        "a display pixel after the lens subtends " + printf_text("%.4f", rad_to_deg(acentre) * 60.0) +
@@ -834,11 +840,18 @@ Plan make_plan(const PlanRequest& r) {
       for (const WidthKey& k : kWidths) same = same && c.widths.*k.field == before.*k.field;
       if (!same) err = search.error(c);  // (every width already at its top: measured)
       if ((wider == 16 || same) && !(err <= p.texel_error_bound))
-        throw InputError("--texel-error", r.texel_error > 0 ? printf_text("%g", p.texel_error_bound) : "",
-                         std::string(r.texel_error > 0 ? "" : "the bound measured from " + r.base_source + ", " +
-                                                                  printf_text("%.4f", p.texel_error_bound) + " texels: ") +
-                             "no datapath widths meet it at face size " + std::to_string(S) + ": the best achievable is " +
-                             printf_text("%.4f", err) + " texels (every width at its widest)");
+      {
+        // (%.3g: a bound measured at the widest widths is a few hundred-thousandths, "0.0000" in fixed point)
+        const std::string best = "the best achievable is " + printf_text("%.3g", err) + " texels (every width at its widest)";
+        if (r.texel_error > 0)
+          throw InputError("--texel-error", printf_text("%g", p.texel_error_bound),
+                           "no datapath widths meet it at face size " + std::to_string(S) + ": " + best);
+        throw InputError(r.base_source, "datapath.*",
+                         "no --texel-error was given, so the bound is what this configuration measures at its face size " +
+                             std::to_string(r.base.memory.face_size) + ", " + printf_text("%.3g", p.texel_error_bound) +
+                             " texels; no datapath widths meet it at the planned face size " + std::to_string(S) + ": " + best +
+                             "; give --texel-error at least that");
+      }
     }
     // Each width's binary search, twice over, then the planned widths' own run (a second pass that changes
     // nothing ends at once).

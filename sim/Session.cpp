@@ -26,7 +26,9 @@
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
 #include "common/ParameterJson.hpp"
+#include "common/PrintfText.hpp"
 #include "common/Units.hpp"
+#include "common/WholeNumber.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "host/scene/Gallery.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
@@ -81,6 +83,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const auto& h = s.host;
   if (s.frames < 1 || s.frames > 1'000'000) throw InputError("--frames", "", "must be 1 .. 1000000");
   if (o.every < 0) throw InputError("--every", "", "must be >= 0 (0: no images)");
+  if (o.error_every < 0) throw InputError("--error-every", std::to_string(o.error_every), "must be >= 0 (0: never)");
   HeadMotion{s.motion, s.trace, nullptr}.check();
   if (!s.live.empty()) {
     if (s.live != "usb") throw InputError("--live", s.live, "the live source is usb (an Oculus Rift DK1/DK2)");
@@ -199,20 +202,15 @@ void Session::build_detail_windows() {
       auto_detail_ = true;
       continue;
     }
-    int64_t a = 0, b = 0;
-    try {
-      size_t n1 = 0, n2 = 0;
-      const auto colon = d.find(':');
-      a = std::stoll(d.substr(0, colon), &n1);
-      b = colon == std::string::npos ? a + 1 : std::stoll(d.substr(colon + 1), &n2);
-      if (n1 != (colon == std::string::npos ? d.size() : colon) || (colon != std::string::npos && n2 != d.size() - colon - 1))
-        throw std::invalid_argument("");
-    } catch (const std::exception&) {
+    const auto colon = d.find(':');
+    const std::optional<int64_t> a = whole_number(std::string_view(d).substr(0, colon));
+    const std::optional<int64_t> b = colon == std::string::npos ? a : whole_number(std::string_view(d).substr(colon + 1));
+    if (!a || !b)
       throw InputError("--detail", d, "expected START:END (frames counted from the first frame, END exclusive), one frame, or auto");
-    }
-    if (a < 0 || b <= a || b > spec_.frames)
+    // (one frame: its end is the next, compared without adding one -- a frame at the top of int64 wrapped)
+    if (*a < 0 || *a >= spec_.frames || (colon != std::string::npos && (*b <= *a || *b > spec_.frames)))
       throw InputError("--detail", d, "frames must satisfy 0 <= START < END <= --frames (" + std::to_string(spec_.frames) + ")");
-    detail_windows_.push_back({a, b});
+    detail_windows_.push_back({*a, colon == std::string::npos ? *a + 1 : *b});
   }
   fidelity_ = scm::Fidelity::Detailed;
 }
@@ -609,11 +607,24 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
   if (!o.vcd_lines.empty()) {
     const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);
     if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", o.vcd_lines, "lines must be whole numbers >= 0");
-    const int64_t base = timing_.frame_start_cycle(spec_.first_frame);
-    opt.vcd.from_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * spec_.config.timing.h_total());
-    opt.vcd.to_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * spec_.config.timing.h_total());
+    // Within the run's scan lines, compared before any product is formed (a line beyond them traced nothing, or
+    // wrapped the cycle count).
+    const int64_t base = timing_.frame_start_cycle(spec_.first_frame), h = spec_.config.timing.h_total();
+    const int64_t lines = (timing_.frame_start_cycle(spec_.first_frame + spec_.frames) - base) / h;
+    if (l1 > static_cast<double>(lines))
+      throw InputError("--vcd-lines", o.vcd_lines, "the run has " + std::to_string(lines) + " scan lines (--frames " +
+                                                       std::to_string(spec_.frames) + "): END must be at most that");
+    opt.vcd.from_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * h);
+    opt.vcd.to_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * h);
   } else if (!o.vcd_time_us.empty()) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
+    // Within the run's simulated time, compared before rounding to picoseconds (a window past int64's
+    // picoseconds wrapped, and was called shorter than one).
+    const int64_t end_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
+    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps))
+      throw InputError("--vcd-time-us", o.vcd_time_us,
+                       "the window must lie within the run's simulated time, 0 .. " + printf_text("%.3f", static_cast<double>(end_ps) * 1e-6) +
+                           " us (--first-frame + --frames)");
     opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
     opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
     if (opt.vcd.to_ps <= opt.vcd.from_ps)
@@ -642,20 +653,23 @@ std::vector<stage::StallWindow> Session::stall_windows() const {
           w.stage = static_cast<dp::Stage>(k);
           ok = true;
         }
-      try {
-        size_t n1 = 0, n2 = 0;
-        const std::string a1 = spec.substr(c1 + 1, c2 - c1 - 1), a2 = spec.substr(c2 + 1);
-        w.first_cycle = timing_.frame_start_cycle(spec_.first_frame) + std::stoll(a1, &n1);
-        w.cycles = std::stoll(a2, &n2);
-        ok = ok && n1 == a1.size() && n2 == a2.size() && w.cycles > 0 && w.cycles <= 1'000'000'000;
-      } catch (const std::exception&) {
-        ok = false;
+      const std::optional<int64_t> clock = whole_number(std::string_view(spec).substr(c1 + 1, c2 - c1 - 1));
+      const std::optional<int64_t> cycles = whole_number(std::string_view(spec).substr(c2 + 1));
+      ok = ok && clock && cycles && *cycles > 0 && *cycles <= 1'000'000'000;
+      if (ok) {
+        // Within the run (a stall past its end stalled nothing, silently; one before its start is no clock of it).
+        const int64_t run_clocks = timing_.frame_start_cycle(spec_.first_frame + spec_.frames) - timing_.frame_start_cycle(spec_.first_frame);
+        if (*clock < 0 || *clock >= run_clocks)
+          throw InputError("--stall", spec, "CLOCK must be a pixel clock of the run, 0 .. " + std::to_string(run_clocks - 1) +
+                                                " (counted from the first frame's start; --frames " + std::to_string(spec_.frames) + ")");
+        w.first_cycle = timing_.frame_start_cycle(spec_.first_frame) + *clock;
+        w.cycles = *cycles;
       }
     }
     if (!ok)
       throw InputError("--stall", spec,
-                       "expected STAGE:CLOCK:CYCLES with STAGE one of lens, rotate, address, fetch, compose, filter "
-                       "and CYCLES >= 1");
+                       "expected STAGE:CLOCK:CYCLES with STAGE one of lens, rotate, address, fetch, compose, filter, "
+                       "CLOCK a whole number and CYCLES 1 .. 1000000000");
     if (fidelity_ != scm::Fidelity::Detailed && fidelity_ != scm::Fidelity::Cycle)
       throw InputError("--stall", spec, "stalls exist only at the cycle-accurate levels (cycle, detailed)");
     out.push_back(w);

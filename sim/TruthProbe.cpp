@@ -4,7 +4,10 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numeric>
+#include <optional>
+#include <string_view>
 
 #include "sim/FrameImage.hpp"
 #include "common/InputError.hpp"
@@ -14,6 +17,7 @@
 #include "host/error/SeamMetrics.hpp"
 #include "rtl_model/datapath/PipelineSchedule.hpp"
 #include "common/Units.hpp"
+#include "common/WholeNumber.hpp"
 
 namespace arp::sim {
 
@@ -76,17 +80,27 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       truth_ids_(static_cast<size_t>(s.config->timing.eyes)) {
   const dp::ArpConfig& c = *s.config;
   if (!s.tear_at.empty()) {
-    char tail = 0;
-    long long f = 0;
-    if (std::sscanf(s.tear_at.c_str(), "%lld:%d:%d:%d%c", &f, &tear_at_.eye, &tear_at_.x, &tear_at_.y, &tail) != 4 || f < 0 ||
-        tear_at_.eye < 0 || tear_at_.x < 0 || tear_at_.y < 0)
-      throw InputError("--tear-at", s.tear_at, "expected FRAME:EYE:X:Y, non-negative integers");
-    tear_at_.frame = f;
-    if (tear_at_.frame < s.first_frame || tear_at_.frame >= s.first_frame + s.frames || (tear_at_.frame - s.first_frame) % s.every != 0)
+    // Four whole numbers, each read whole and compared as int64 (a coordinate near INT_MAX wrapped past the
+    // bounds check below, and the window was drawn outside the image).
+    std::optional<int64_t> v[4];
+    size_t from = 0;
+    for (int i = 0; i < 4; ++i) {
+      const size_t colon = i < 3 ? s.tear_at.find(':', from) : s.tear_at.size();
+      if (colon == std::string::npos) break;
+      v[i] = whole_number(std::string_view(s.tear_at).substr(from, colon - from));
+      from = colon + 1;
+    }
+    if (std::any_of(std::begin(v), std::end(v), [](const std::optional<int64_t>& x) { return !x || *x < 0; }))
+      throw InputError("--tear-at", s.tear_at, "expected FRAME:EYE:X:Y, non-negative whole numbers");
+    if (*v[0] < s.first_frame || *v[0] >= s.first_frame + s.frames || (*v[0] - s.first_frame) % s.every != 0)
       throw InputError("--tear-at", s.tear_at, "the frame must be one this run measures (--first-frame + k * --error-every)");
-    if (tear_at_.eye >= c.timing.eyes || tear_at_.x + kTearWindowW > c.timing.h_active || tear_at_.y + kTearWindowH > c.timing.v_active)
+    if (*v[1] >= c.timing.eyes || *v[2] + kTearWindowW > c.timing.h_active || *v[3] + kTearWindowH > c.timing.v_active)
       throw InputError("--tear-at", s.tear_at,
                        "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
+    tear_at_.frame = *v[0];
+    tear_at_.eye = static_cast<int>(*v[1]);
+    tear_at_.x = static_cast<int>(*v[2]);
+    tear_at_.y = static_cast<int>(*v[3]);
   }
   if (!own_truth_) truth_lens_.emplace(truth_cfg_.lens, truth_cfg_.timing, truth_cfg_.widths.vec_frac);
   truth_mem_ = std::make_unique<dp::DisplayMemorySet>(truth_cfg_.memory, c.timing.eyes);
