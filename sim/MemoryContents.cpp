@@ -64,6 +64,14 @@ host::CubeMapImages MemoryContents::load(int S, std::string& source) const {
   return host::make_calibration_pattern(S);
 }
 
+std::vector<NamedPath> MemoryContents::input_files() const {
+  std::vector<NamedPath> in = {{"--cross", cross}, {"--equirect", equirect}};
+  if (scene.empty() || scene == "gallery") return in;
+  in.push_back({"--scene", scene});
+  for (const std::string& f : host::scene_file_references(scene)) in.push_back({"model or texture of --scene " + scene, f});
+  return in;
+}
+
 host::Scene MemoryContents::load_scene() const {
   host::Scene sc = scene == "gallery" ? host::make_gallery() : host::load_scene_file(scene);
   for (const auto& n : sc.notes) std::fprintf(stderr, "arpsim: note: %s\n", n.c_str());

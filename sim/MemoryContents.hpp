@@ -3,6 +3,9 @@
 // scene rendered once from the head's position, or the calibration pattern.
 #pragma once
 #include <string>
+#include <vector>
+
+#include "common/OutputPaths.hpp"
 
 #include "host/cubemap/CubeMapImages.hpp"
 #include "host/scene/Scene.hpp"
@@ -46,6 +49,9 @@ struct MemoryContents {
   // ipd_m, checked: InputError naming --ipd unless 0 .. 1 m. Every user of the eyes' distance (the memories filled
   // here, a walk's host, a plan) takes it through this.
   double checked_ipd_m() const;
+  // The files these contents read, named by their options (a scene's models and textures too): the inputs no
+  // output may overwrite (check_output_paths).
+  std::vector<NamedPath> input_files() const;
 };
 
 }  // namespace arp::sim

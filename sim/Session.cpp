@@ -138,9 +138,12 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
                       {"--record-live", s.record_live},
                       {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
                       {"--vcd's save file", o.vcd.empty() ? "" : fs::path(vcd_path(o.vcd)).replace_extension(".gtkw").string(), true}},
-                     {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk},
-                      {"--scene", s.memories.scene == "gallery" ? "" : s.memories.scene}, {"--cross", s.memories.cross},
-                      {"--equirect", s.memories.equirect}});
+                     [&] {
+                       std::vector<NamedPath> in = {{"--config", s.config_source}, {"--trace", s.trace},
+                                                    {"--walk", h.walk == "gallery" ? "" : h.walk}};
+                       for (NamedPath& f : s.memories.input_files()) in.push_back(std::move(f));
+                       return in;
+                     }());
   const bool untimed = fid == scm::Fidelity::Functional || fid == scm::Fidelity::Verilated;
   const auto issues = untimed ? dp::validate(s.config) : dp::validate_timed(s.config);
   if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);

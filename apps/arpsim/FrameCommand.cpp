@@ -51,9 +51,9 @@ int run_frame(FrameArgs& a) {
     if (!std::isfinite(v)) throw InputError("--yaw/--pitch/--roll", "", "angles must be finite");
   spec.orientation = a.quat.empty() ? dp::normalised(dp::from_yaw_pitch_roll_deg(a.yaw, a.pitch, a.roll), "orientation")
                                     : parse_quat(a.quat);
-  check_output_paths({{"--out", a.out}, {"--report", a.report}},
-                     {{"--config", a.cfg.file}, {"--cross", spec.memories.cross}, {"--equirect", spec.memories.equirect},
-                      {"--scene", spec.memories.scene}});
+  std::vector<NamedPath> inputs = spec.memories.input_files();
+  inputs.push_back({"--config", a.cfg.file});
+  check_output_paths({{"--out", a.out}, {"--report", a.report}}, inputs);
   const sim::StillFrame s = sim::render_still(spec);
   const HmdFrame& f = s.frame;
   const dp::Quat& q = spec.orientation;

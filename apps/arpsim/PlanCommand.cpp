@@ -31,8 +31,13 @@ int run_plan(PlanArgs& a) {
   const std::string md = std::filesystem::path(a.out).replace_extension(".md").string();
   const std::string tiles = std::filesystem::path(a.out).replace_extension(".tiles.png").string();
   check_output_paths({{"--out", a.out}, {"--out's account", md}, {"--out's tile picture", tiles}},
-                     {{"--config", a.cfg.file}, {"--walk", r.walk == "gallery" ? "" : r.walk},
-                      {"--scene", r.memories.scene == "gallery" ? "" : r.memories.scene}, {"--trace", r.head.trace}});
+                     [&] {
+                       std::vector<NamedPath> in = r.memories.input_files();
+                       in.push_back({"--config", a.cfg.file});
+                       in.push_back({"--walk", r.walk == "gallery" ? "" : r.walk});
+                       in.push_back({"--trace", r.head.trace});
+                       return in;
+                     }());
   ProgressLine progress("plan", !a.quiet);
   r.progress = [&](int step, int steps, double f, const std::string& w) { progress.update_step(step, steps, f, w); };
   const sim::Plan p = sim::make_plan(r);

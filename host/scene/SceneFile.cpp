@@ -199,6 +199,25 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
   return s;
 }
 
+std::vector<std::string> scene_file_references(const std::string& path) {
+  std::vector<std::string> out;
+  try {
+    const json j = parse_strict_json(read_input_file(path, 64 << 20, "scene file"), path);
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    const auto objs = j.find("objects");
+    if (objs == j.end() || !objs->is_array()) return out;
+    for (const json& o : *objs)
+      for (const char* key : {"model", "texture"})
+        if (o.is_object() && o.contains(key) && o[key].is_string()) {
+          const std::filesystem::path f = o[key].get<std::string>();
+          out.push_back((f.is_relative() ? dir / f : f).string());
+        }
+  } catch (const std::exception&) {
+    out.clear();  // (the load reports it, naming the place)
+  }
+  return out;
+}
+
 Scene load_scene_file(const std::string& path) {
   const json j = parse_strict_json(read_input_file(path, 64 << 20, "scene file"), path);
   return scene_from_json(j, path, std::filesystem::path(path).parent_path().string());

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 #include "Scene.hpp"
 
@@ -15,5 +16,8 @@ namespace arp::host {
 Scene load_scene_file(const std::string& path);
 // `base_dir` resolves relative model paths; `source` names the text in errors.
 Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
+// The files a scene file names (its objects' "model" and "texture", resolved as the loader resolves them), for the
+// check that no output overwrites one; nothing where the file cannot be read or parsed (loading it says why).
+std::vector<std::string> scene_file_references(const std::string& path);
 
 }  // namespace arp::host
