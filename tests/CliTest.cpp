@@ -39,6 +39,17 @@ TEST(Cli, FrameWritesTheStereoImageAndReport) {
   EXPECT_EQ(d.entries(), 2u);
 }
 
+// --aa is pipeline.aa before the configuration is checked: no sub-texel bits are valid without bilinear filtering
+// (applied after the check, this was refused for wanting one).
+TEST(Cli, FrameAaOffAllowsNoSubTexelBits) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " frame --set datapath.texel_frac=0 --aa off --out " + d.file("f.png"));
+  EXPECT_EQ(r.status, 0) << r.output;
+  const auto bilinear = run_command(kArpsim + " frame --set datapath.texel_frac=0 --aa bilinear --out " + d.file("g.png"));
+  EXPECT_EQ(bilinear.status, 2) << bilinear.output;
+  EXPECT_NE(bilinear.output.find("needs at least 1 sub-texel bit"), std::string::npos) << bilinear.output;
+}
+
 // The calibration pattern fills memory 0's six faces of each eye, every texel: with a pool of 10 tiles there, the
 // first 10 tiles (face +X, row-major) are stored and every other texel is lost -- 6 x 512^2 - 10 x 32^2 an eye --
 // counted in the report and warned about once.

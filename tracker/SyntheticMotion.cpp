@@ -151,6 +151,10 @@ MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
     return MotionGenerator(ax, shake_angle(peak, frequency), s);
   }
   if (!(period > 0.0) || !std::isfinite(period)) throw InputError("--period", "", "must be positive");
+  if (period < 2.0 / hz)  // (the shake's rule: a swing faster than half the sample rate aliases)
+    throw InputError("--period", printf_text("%g", period),
+                     "is shorter than two samples (--hz " + printf_text("%g", hz) +
+                         "): the samples would alias the swing; raise --hz or lengthen --period");
   if (!(std::abs(amplitude) <= 360.0)) throw InputError("--amplitude", printf_text("%g", amplitude), "must be -360 .. 360 degrees");
   return MotionGenerator(ax, pendulum_angle(amplitude, period), s);
 }

@@ -44,9 +44,13 @@ dp::Quat parse_quat(const std::string& s) {
 
 int run_frame(FrameArgs& a) {
   sim::StillSpec& spec = a.spec;
+  // --aa is pipeline.aa, applied with the configuration before it is checked (texel_frac 0 is valid without
+  // bilinear filtering: applied after, the check refused it).
+  dp::AaMode aa{};
+  if (!a.aa.empty() && !dp::parse(a.aa, aa)) throw InputError("--aa", a.aa, "must be off or bilinear");
+  if (!a.aa.empty()) a.cfg.sets.push_back("pipeline.aa=" + a.aa);
   spec.config = a.cfg.resolve();
   spec.config_source = a.cfg.source();
-  if (!a.aa.empty() && !dp::parse(a.aa, spec.config.pipeline.aa)) throw InputError("--aa", "", "must be off or bilinear");
   for (double v : {a.yaw, a.pitch, a.roll})
     if (!std::isfinite(v)) throw InputError("--yaw/--pitch/--roll", "", "angles must be finite");
   spec.orientation = a.quat.empty() ? dp::normalised(dp::from_yaw_pitch_roll_deg(a.yaw, a.pitch, a.roll), "orientation")
