@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include "AtomicFile.hpp"
 #include "InputError.hpp"
@@ -27,6 +28,14 @@ void check_writable(const NamedPath& o) {
   std::error_code ec;
   if (fs::is_directory(o.path, ec)) throw InputError(o.option, o.path, "is a folder, not a file");
   const fs::path tmp = temp_path_beside(o.path);  // InputError if the folder does not exist
+  // The name itself, which the temporary file's (shortened where it must be) does not test: a name the file
+  // system cannot hold failed only at the end, when the finished file was moved into place.
+  const fs::path dir = fs::path(o.path).has_parent_path() ? fs::path(o.path).parent_path() : fs::path(".");
+  const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  const size_t name = fs::path(o.path).filename().string().size();
+  if (name_max > 0 && name > static_cast<size_t>(name_max))
+    throw InputError(o.option, o.path, "cannot write there: the name is " + std::to_string(name) + " bytes, longer than the " +
+                                           std::to_string(name_max) + " the file system holds");
   std::FILE* probe = std::fopen(tmp.c_str(), "wb");
   if (!probe) {
     const int err = errno;
