@@ -45,6 +45,7 @@ enum PlanStep : int {
   kStepLadders,
   kStepLimitTiles,
   kStepBaseFill,
+  kStepMemoryFill,
   kStepEngine,
   kStepPlannedTiles,
   kStepDepthCode,
@@ -201,8 +202,12 @@ struct FillSamples {
   std::vector<double> texels;  // k * objects + i
   int points = 0;              // samples rendered
 };
+// With `belongs` (k * objects + i: the memory the rule puts object i in at sample k, as engine_need replays it), each
+// rendered point draws each memory's objects on their own, as that memory's render in a run draws them: an object's
+// fill is then what it fills among its own memory's objects (no more hidden behind a nearer object of another
+// memory), not the lower bound the whole scene gives.
 FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, int S, int fill_points,
-                         const std::function<void(double)>& progress) {
+                         const std::function<void(double)>& progress, const std::vector<int>* belongs = nullptr) {
   const size_t n = scene.objects.size(), samples = ms.t.size();
   FillSamples out;
   out.texels.assign(samples * n, 0.0);
@@ -215,7 +220,17 @@ FillSamples measure_fill(const host::Scene& scene, const host::WalkPath& walk, c
   std::vector<size_t> sample_of(points);
   for (size_t j = 0; j < points; ++j) {
     const size_t k = sample_of[j] = rendered_sample(j, points, samples);
-    at[j] = renderer.render_faces(scene, {}, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
+    if (!belongs) {
+      at[j] = renderer.render_faces(scene, {}, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
+    } else {
+      std::map<int, std::vector<size_t>> memories;  // memory -> its objects at this sample
+      for (size_t i = 0; i < n; ++i) memories[(*belongs)[k * n + i]].push_back(i);
+      at[j].assign(n, 0);
+      for (const auto& [m, objects] : memories) {
+        const std::vector<int64_t> f = renderer.render_faces(scene, objects, ms.t[k], walk.position(ms.t[k]), S, faces).filled_by_object;
+        for (const size_t i : objects) at[j][i] = f[i];
+      }
+    }
     progress(static_cast<double>(j + 1) / static_cast<double>(points));
   }
   // Between two rendered points, each object's fill interpolated linearly in the sample index.
@@ -309,6 +324,19 @@ LadderLoad ladder_load(const host::Scene& scene, const host::WalkPath& walk, con
   return L;
 }
 
+// Where the run's priority rule puts each object at every sample of the motion (k * objects + i), for ladder L.
+std::vector<int> rule_memories(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, double hz,
+                               double threshold_rad, const LadderLoad& L) {
+  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
+  const size_t n = scene.objects.size();
+  std::vector<int> belongs(ms.t.size() * n);
+  for (size_t k = 0; k < ms.t.size(); ++k) {
+    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
+    for (size_t i = 0; i < n; ++i) belongs[k * n + i] = sched.belongs_in(i);
+  }
+  return belongs;
+}
+
 // The engine a ladder needs (EngineNeed): where the rule puts each object at every sample of the motion, then the
 // run's engine and its moves replayed at every display frame at a multiple of the configured engine's speed.
 // (bisect false: only what the configured engine does, scale left 0)
@@ -316,13 +344,9 @@ EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, con
                        double threshold_rad, const LadderLoad& L, const std::vector<double>& engine_s,
                        const dp::HostEngineConfig& engine, bool bisect = true) {
   const double hz = vt.refresh_hz();
-  host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
+  const host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size(), N = static_cast<size_t>(L.count);
-  std::vector<int> belongs(ms.t.size() * n);  // where the rule puts object i at sample k (k * n + i)
-  for (size_t k = 0; k < ms.t.size(); ++k) {
-    sched.assign(walk.position(ms.t[k]), walk.speed(), ms.turn[k], ms.t[k]);
-    for (size_t i = 0; i < n; ++i) belongs[k * n + i] = sched.belongs_in(i);
-  }
+  const std::vector<int> belongs = rule_memories(scene, walk, ms, hz, threshold_rad, L);  // object i at sample k: k * n + i
   std::vector<int64_t> period(N);
   for (size_t m = 0; m < N; ++m) period[m] = sched.frames_per_update(static_cast<int>(m));
   const int64_t frames = static_cast<int64_t>(std::floor(ms.span_s * hz)) + 1;
@@ -409,7 +433,8 @@ std::string engine_need_text(const EngineNeed& need, const dp::HostEngineConfig&
   return ". Replayed at every frame as a run's engine renders (memories due rendered one after another, fastest first, a "
          "new image shown at the first vertical blank after it is done, a memory due again before then skipped), the least "
          "engine that skips no render over the " + printf_text("%.1f", motion_s) + " s is about " + printf_text("%.3g", need.scale) +
-         " times this one (an estimate: the fill is interpolated between rendered points, a peak between two missed; "
+         " times this one (an estimate: each memory's objects rendered on their own at the fill's points, as its render "
+         "draws them, and the fill interpolated between those points, a peak between two missed; "
          "more points, --fill-points, follow it closer): " + printf_text("%.4g", need.scale * engine.triangles_per_s) + " triangles/s, " +
          printf_text("%.4g", need.fill_texels_per_s) + " texels/s, " + printf_text("%.3g", engine.object_setup_s / need.scale) +
          " s set-up an object" +
@@ -1034,11 +1059,6 @@ Plan make_plan(const PlanRequest& r) {
   // What the configured engine skips with each, replayed at every frame (EngineNeed): plan.md's ladder table. The
   // choice below stays on the mean load. Then the least engine for the planned ladder and the starting
   // configuration's, each a bisection of some 30 replays (the progress's weights).
-  const double replays = static_cast<double>(candidates.size()) + 60.0;
-  for (size_t j = 0; j < candidates.size(); ++j) {
-    progress(kStepEngine, static_cast<double>(j) / replays, "engine replay");
-    candidates[j].skipped = engine_need(scene, walk, ms, timing, p.threshold_rad, candidates[j], engine_s, engine, false).skipped;
-  }
   p.best = *std::min_element(candidates.begin(), candidates.end(),
                              [](const LadderLoad& a, const LadderLoad& b) { return a.triangles_per_s < b.triangles_per_s; });
   p.planned = p.best;
@@ -1049,11 +1069,43 @@ Plan make_plan(const PlanRequest& r) {
   p.base_ladder = n == 0 ? p.planned
                          : ladder_load(scene, walk, ms, hz, base_threshold, r.base.memory.count, r.base.memory.update_frames,
                                        r.base.memory.update_ratio, base_validity, base_engine_s, base_fill, eyes);
+  // For the least engines of the planned ladder and the starting configuration: each memory's objects rendered on
+  // their own at the fill's points, as the memory's render in a run draws them (an object of a slow memory is no
+  // longer hidden behind a nearer one of a fast memory). One memory: the scene's fill is that already.
+  const std::vector<int> planned_belongs = rule_memories(scene, walk, ms, hz, p.threshold_rad, p.planned);
+  const std::vector<int> base_belongs = rule_memories(scene, walk, ms, hz, base_threshold, p.base_ladder);
+  const bool planned_own = n > 0 && p.planned.count > 1, base_own = n > 0 && p.base_ladder.count > 1;
+  const std::string memory_fill_what =
+      "each memory's fill (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + " points)";
+  if (planned_own || base_own) progress(kStepMemoryFill, 0.0, memory_fill_what);
+  const FillSamples planned_fill =
+      planned_own ? measure_fill(scene, walk, ms, S, r.fill_points, [&](double f) { progress(kStepMemoryFill, 0.5 * f, memory_fill_what); },
+                                 &planned_belongs)
+                  : fill;
+  const FillSamples base_memory_fill =
+      base_own ? measure_fill(scene, walk, ms, r.base.memory.face_size, r.fill_points,
+                              [&](double f) { progress(kStepMemoryFill, 0.5 + 0.5 * f, memory_fill_what); }, &base_belongs)
+               : base_fill;
+  const std::vector<double> planned_engine_s =
+      planned_own ? engine_seconds(scene, walk, ms, engine, eyes, ipd_m, planned_fill) : engine_s;
+  const std::vector<double> base_memory_engine_s =
+      base_own ? engine_seconds(scene, walk, ms, engine, eyes, ipd_m, base_memory_fill) : base_engine_s;
+  // What the configured engine skips with each ladder, replayed at every frame (EngineNeed): plan.md's ladder table
+  // (the planned ladder's with its memories' own fill, the others' with the scene's, lower). The choice above is on
+  // the mean load. Then the least engine for the planned ladder and the starting configuration, each a bisection of
+  // some 30 replays (the progress's weights).
+  const double replays = static_cast<double>(candidates.size()) + 60.0;
+  for (size_t j = 0; j < candidates.size(); ++j) {
+    progress(kStepEngine, static_cast<double>(j) / replays, "engine replay");
+    const bool planned = ladder_key(candidates[j]) == ladder_key(p.planned);
+    candidates[j].skipped =
+        engine_need(scene, walk, ms, timing, p.threshold_rad, candidates[j], planned ? planned_engine_s : engine_s, engine, false).skipped;
+  }
   progress(kStepEngine, static_cast<double>(candidates.size()) / replays, "least engine");
-  p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, engine_s, engine);
+  p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, planned_engine_s, engine);
   progress(kStepEngine, (static_cast<double>(candidates.size()) + 30.0) / replays, "least engine");
   p.base_need = n == 0 ? p.planned_need
-                       : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_engine_s, engine);
+                       : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_memory_engine_s, engine);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;
@@ -1518,7 +1570,9 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        "(host::PriorityScheduler), hardware display memory at the planned face size: as whole faces, and as weighed against "
        "the limit -- where whole faces are over it, each memory holding only the tiles its objects can be drawn on over the "
        "motion where that takes less" + std::string(r.tile_pool && r.weigh_pools ? ", or a tile pool where that takes less still (--weigh-pools)" : "") +
-       "; the planned ladder as planned, at its depth code. Ladders the engine cannot "
+       "; the planned ladder as planned, at its depth code. Renders skipped: the configured engine replayed at every "
+       "frame, the planned ladder's with each memory's objects rendered on their own, the others' with the whole scene's "
+       "fill (each object's at most what its memory's render fills: those counts are low). Ladders the engine cannot "
        "carry, or over the limit either way, are not listed.\n\n"
        "| memories | update periods, frames | triangles/s | texels filled/s | engine busy, s a second | renders skipped (replayed) | "
        "updated slower than needed | display memory, whole faces, MiB | display memory as weighed, MiB |\n"

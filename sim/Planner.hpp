@@ -113,11 +113,13 @@ struct LadderLoad {
 // swapped in at the first vertical blank after it is done, a memory due again before then skipped), each object
 // moving as a run moves it (only between memories rendering in the same frame, as far toward where the rule puts it
 // as those allow, and memories exchanging objects swapping together at the last of them to finish), each render
-// costing what ladder_load charges (set-up, triangles, interpolated fill, for each eye). `scale` is the least multiple of the configured engine's rates (its
+// costing what ladder_load charges (set-up, triangles, interpolated fill, for each eye), the fill measured with each
+// memory's objects rendered on their own, as its render draws them. `scale` is the least multiple of the configured engine's rates (its
 // triangle and fill rates times it, its set-up time over it) at which no render is skipped, found by
 // bisection to 1e-6 (no skip is monotone in it: a faster engine finishes every render no later); 0 where no
 // render can be skipped (no memory due twice within the motion; any engine carries it).
-// An estimate, for what it leaves out of a run: the fill between rendered points (interpolated), the tile and pool
+// An estimate, for what it leaves out of a run: the fill between rendered points (interpolated) and from each eye's
+// own point (measured from the walk's), the tile and pool
 // guards that send an object to a faster memory, a plan's memory.assignment, and, over a motion sampled every few
 // frames, the frames between samples (each takes the sample before it).
 struct EngineNeed {
