@@ -58,6 +58,7 @@ int run_frame(FrameArgs& a) {
   std::vector<NamedPath> inputs = spec.memories.input_files();
   inputs.push_back({"--config", a.cfg.file});
   check_output_paths({{"--out", a.out}, {"--report", a.report}}, inputs);
+  host::check_image_output("--out", a.out);
   const sim::StillFrame s = sim::render_still(spec);
   const HmdFrame& f = s.frame;
   const dp::Quat& q = spec.orientation;

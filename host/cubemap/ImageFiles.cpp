@@ -56,6 +56,7 @@ struct Oiio {
   decltype(&arp_oiio_read) read = nullptr;
   decltype(&arp_oiio_close) close = nullptr;
   decltype(&arp_oiio_write) write = nullptr;
+  decltype(&arp_oiio_can_write) can_write = nullptr;
   std::string problem;  // why it is not loaded, if it is not
 };
 
@@ -81,7 +82,8 @@ const Oiio& oiio(const std::string& path) {
     a.read = reinterpret_cast<decltype(a.read)>(::dlsym(h, "arp_oiio_read"));
     a.close = reinterpret_cast<decltype(a.close)>(::dlsym(h, "arp_oiio_close"));
     a.write = reinterpret_cast<decltype(a.write)>(::dlsym(h, "arp_oiio_write"));
-    if (!a.open || !a.read || !a.close || !a.write) a.problem = where + " is not arpsim's image module (a function is missing)";
+    a.can_write = reinterpret_cast<decltype(a.can_write)>(::dlsym(h, "arp_oiio_can_write"));
+    if (!a.open || !a.read || !a.close || !a.write || !a.can_write) a.problem = where + " is not arpsim's image module (a function is missing)";
     return a;
   }();
   if (!api.problem.empty()) throw InputError(path, "", "cannot read or write images: " + api.problem);
@@ -154,11 +156,25 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int, int)>&
   return img;
 }
 
+namespace {
+
+std::string no_format(const std::string& path) {
+  return "no image format for extension '" + fs::path(path).extension().string() +
+         "' (OpenImageIO has no writer for it: .png, .exr, .tif, .jpg ...)";
+}
+
+}  // namespace
+
+void check_image_output(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  if (!oiio(path).can_write(path.c_str())) throw InputError(option, path, no_format(path));
+}
+
 void write_rgb8_file(const fs::path& file, const RgbImage& img, const std::string& shown) {
   const Oiio& api = oiio(shown);
   char err[kErrorLength] = "";
   const int rc = api.write(file.string().c_str(), img.width, img.height, img.rgb.data(), err, sizeof err);
-  if (rc == 1) throw InputError(shown, "", "no image format for extension '" + fs::path(shown).extension().string() + "': " + err);
+  if (rc == 1) throw InputError(shown, "", no_format(shown));  // (err names the temporary file, not the user's)
   if (rc != 0) throw InputError(shown, "", "cannot write image: " + std::string(err));
 }
 

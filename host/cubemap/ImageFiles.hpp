@@ -29,6 +29,9 @@ RgbImage read_rgb8(const std::string& path, const std::function<void(int width, 
 // InputError naming the file on failure, with the reason (a full disk, a file-size limit: never a
 // truncated image left behind a success).
 void write_rgb8(const std::string& path, const RgbImage& img);
+// InputError naming the option when no image format is known for path's extension, before any work (writing
+// found it only at the end); nothing for an empty path.
+void check_image_output(const std::string& option, const std::string& path);
 // The same written to `file` as it is (a temporary path an arp::OutputGroup staged), errors naming `shown`.
 void write_rgb8_file(const std::filesystem::path& file, const RgbImage& img, const std::string& shown);
 

@@ -72,6 +72,12 @@ void arp_oiio_close(void* image) {
   in->close();
 }
 
+int arp_oiio_can_write(const char* path) {
+  const bool ok = OIIO::ImageOutput::create(path) != nullptr;
+  if (!ok) (void)OIIO::geterror();  // (cleared: the next write's reason is its own)
+  return ok ? 1 : 0;
+}
+
 int arp_oiio_write(const char* path, int width, int height, const unsigned char* rgb, char* err, size_t err_len) {
   // Encoded into memory where the writer can, and stored here: OpenImageIO's writers do not report a short
   // write (a full disk, a file-size limit) and would leave a truncated image behind a success. (Declared

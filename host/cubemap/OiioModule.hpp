@@ -42,4 +42,6 @@ void arp_oiio_close(void* image);
 // Writes width x height RGB8 pixels to path in the format its extension names. 0 on success; 1: no
 // format for that extension; 2: writing failed. The reason in err.
 int arp_oiio_write(const char* path, int width, int height, const unsigned char* rgb, char* err, size_t err_len);
+// 1 when OpenImageIO has a writer for the format path's extension names, else 0 (nothing is opened or written).
+int arp_oiio_can_write(const char* path);
 }
