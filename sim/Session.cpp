@@ -256,7 +256,8 @@ void Session::add_auto_detail() {
         throw InputError("--stall", spec_.stalls[i],
                          "reaches frames " + std::to_string(k0) + ".." + std::to_string(k1 - 1) + ", and --detail leaves frame " +
                              std::to_string(k) + " at the functional level, where nothing stalls: add --detail " +
-                             std::to_string(k0) + ":" + std::to_string(k1) + " or use --detail auto");
+                             std::to_string(k0) + ":" + std::to_string(std::min(k1, spec_.frames)) +
+                             (auto_detail_ ? std::string() : std::string(" or use --detail auto")));
   }
 }
 
@@ -333,6 +334,8 @@ void Session::check_assignment() const {
 
 double HostSpec::threshold_rad(double deg) {
   if (!(deg >= 0) || deg > 90) throw InputError("--threshold-deg", "", "must be 0 .. 90 degrees (0: one texel)");
+  // (a positive angle that rounds to no radian would read as 0, one texel, silently)
+  if (deg > 0 && deg < 1e-9) throw InputError("--threshold-deg", printf_text("%g", deg), "must be 0 (one texel) or at least 1e-9 degrees");
   return deg_to_rad(deg);
 }
 
