@@ -53,7 +53,7 @@ void ProgressLine::update_step(int step, int steps, double fraction, const std::
   char eta[32] = "     ? s";  // nothing done yet: no rate to go by
   if (fraction > 0) std::snprintf(eta, sizeof eta, "%6.1f s", in_step * (1.0 - fraction) / fraction);
   char b[512];
-  std::snprintf(b, sizeof b, "[%d/%d] %s %5.1f%%  elapsed %6.1f s  step ETA %s ", step, steps, detail.c_str(),
+  std::snprintf(b, sizeof b, "[%d/%d] %s %3.0f%%  elapsed %6.1f s  step ETA %s ", step, steps, detail.c_str(),
                 100.0 * fraction, s, eta);
   draw(b, false);
 }

@@ -9,7 +9,10 @@
 namespace arp {
 
 inline std::optional<int64_t> whole_number(std::string_view s) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
+  if (!s.empty() && s[0] == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && s[0] == '-') return std::nullopt;  // ("+-5")
+  }
   const size_t digits = !s.empty() && s[0] == '-' ? 1 : 0;
   if (s.size() == digits || s.find_first_not_of("0123456789", digits) != std::string_view::npos) return std::nullopt;
   int64_t v = 0;

@@ -850,6 +850,11 @@ Plan make_plan(const PlanRequest& r) {
   if (!r.size_widths) {
     p.choices.push_back({"datapath.*", widths_text(p.config.widths), "kept from " + r.base_source + " (--keep-widths): not measured"});
   } else {
+    // The runs expected, for the progress (set once, so its share never goes back): the starting widths' two, each
+    // width's binary search twice over (a second pass that changes nothing ends at once), the planned widths' own.
+    int expected = 3;
+    for (const WidthKey& k : kWidths) expected += 2 * static_cast<int>(std::ceil(std::log2(p.config.widths.*k.field - k.lo() + 1.0)));
+    search.expect(expected);
     progress(kStepWidths, 0.0, "datapath widths");
     p.texel_error_base = search.error(r.base);
     p.texel_error_bound = r.texel_error > 0 ? r.texel_error : p.texel_error_base;
@@ -878,11 +883,6 @@ Plan make_plan(const PlanRequest& r) {
                              "; give --texel-error at least that");
       }
     }
-    // Each width's binary search, twice over, then the planned widths' own run (a second pass that changes
-    // nothing ends at once).
-    int expected = p.harness_runs + 1;
-    for (const WidthKey& k : kWidths) expected += 2 * static_cast<int>(std::ceil(std::log2(c.widths.*k.field - k.lo() + 1.0)));
-    search.expect(expected);
     for (int pass = 0; pass < 2; ++pass) {
       bool changed = false;
       for (const WidthKey& k : kWidths) {
@@ -1049,7 +1049,7 @@ Plan make_plan(const PlanRequest& r) {
   // Its fill at its own face size.
   const bool base_fill_own = r.base.memory.face_size != S && n > 0;
   const std::string base_fill_what = "fill at face " + std::to_string(r.base.memory.face_size) + " (" +
-                                     std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + " renders)";
+                                     std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + ")";
   if (base_fill_own) progress(kStepBaseFill, 0.0, base_fill_what);
   const FillSamples base_fill =
       base_fill_own ? measure_fill(scene, walk, ms, r.base.memory.face_size, r.fill_points, [&](double f) { progress(kStepBaseFill, f, base_fill_what); })
@@ -1076,7 +1076,7 @@ Plan make_plan(const PlanRequest& r) {
   const std::vector<int> base_belongs = rule_memories(scene, walk, ms, hz, base_threshold, p.base_ladder);
   const bool planned_own = n > 0 && p.planned.count > 1, base_own = n > 0 && p.base_ladder.count > 1;
   const std::string memory_fill_what =
-      "each memory's fill (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + " points)";
+      "fill by memory (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(r.fill_points))) + ")";
   if (planned_own || base_own) progress(kStepMemoryFill, 0.0, memory_fill_what);
   const FillSamples planned_fill =
       planned_own ? measure_fill(scene, walk, ms, S, r.fill_points, [&](double f) { progress(kStepMemoryFill, 0.5 * f, memory_fill_what); },
@@ -1132,7 +1132,7 @@ Plan make_plan(const PlanRequest& r) {
                          "written (its reserved value \"empty\", at any width), so the narrowest allowed; " + texel_bits()});
   } else {
     const std::string depth_what = "depth code (" + std::to_string(std::min<size_t>(ms.t.size(), static_cast<size_t>(kCompositionPoints))) +
-                                   " x " + std::to_string(p.planned.count) + " renders)";
+                                   " x " + std::to_string(p.planned.count) + ")";
     progress(kStepDepthCode, 0.0, depth_what);
     p.composition = measure_composition(scene, walk, ms, hz, p.threshold_rad, p.planned, S,
                                         [&](double f) { progress(kStepDepthCode, f, depth_what); });
@@ -1538,8 +1538,8 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
          ") | " + printf_text("%.4f", p.texel_error_planned) + " (bound " + printf_text("%.4f", p.texel_error_bound) + ") |\n";
   s += "| display memories | " + ladder_text(p.base_ladder) + " | " + ladder_text(p.planned) + " |\n";
   s += "| host load, triangles/s | " + printf_text("%.4g", p.base_ladder.triangles_per_s) + " | " + printf_text("%.4g", p.planned.triangles_per_s) + " |\n";
-  s += "| host fill, texels/s | " + printf_text("%.4g", p.base_ladder.texels_per_s) + " | " + printf_text("%.4g", p.planned.texels_per_s) + " |\n";
-  s += "| rendering engine busy, s a second | " + printf_text("%.3g", p.base_ladder.engine_busy) + " | " + printf_text("%.3g", p.planned.engine_busy) + " |\n";
+  s += "| host fill, texels/s (the scene rendered whole: a lower bound; the least engine's replay renders each memory's own) | " + printf_text("%.4g", p.base_ladder.texels_per_s) + " | " + printf_text("%.4g", p.planned.texels_per_s) + " |\n";
+  s += "| rendering engine busy, s a second (with that fill) | " + printf_text("%.3g", p.base_ladder.engine_busy) + " | " + printf_text("%.3g", p.planned.engine_busy) + " |\n";
   const auto need = [](const EngineNeed& e) { return e.scale == 0 ? std::string("any") : printf_text("%.3g", e.scale); };
   s += "| least engine that skips no render, times host.* (replayed every frame) | " + need(p.base_need) + " | " + need(p.planned_need) + " |\n";
   s += "| renders skipped by host.*, of those due (replayed) | " + std::to_string(p.base_need.skipped) + " of " +

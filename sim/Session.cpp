@@ -627,11 +627,12 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     // Within the run's simulated time, compared before rounding to picoseconds (a window past int64's
     // picoseconds wrapped, and was called shorter than one).
+    const int64_t start_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
     const int64_t end_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
-    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps))
+    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps) || t1 * 1e6 <= static_cast<double>(start_ps))
       throw InputError("--vcd-time-us", o.vcd_time_us,
-                       "the window must lie within the run's simulated time, 0 .. " + printf_text("%.3f", static_cast<double>(end_ps) * 1e-6) +
-                           " us (--first-frame + --frames)");
+                       "the window must lie within the run's simulated time, " + printf_text("%.3f", static_cast<double>(start_ps) * 1e-6) +
+                           " .. " + printf_text("%.3f", static_cast<double>(end_ps) * 1e-6) + " us (--first-frame, --frames)");
     opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
     opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
     if (opt.vcd.to_ps <= opt.vcd.from_ps)

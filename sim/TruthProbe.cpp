@@ -94,7 +94,7 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       throw InputError("--tear-at", s.tear_at, "expected FRAME:EYE:X:Y, non-negative whole numbers");
     if (*v[0] < s.first_frame || *v[0] >= s.first_frame + s.frames || (*v[0] - s.first_frame) % s.every != 0)
       throw InputError("--tear-at", s.tear_at, "the frame must be one this run measures (--first-frame + k * --error-every)");
-    if (*v[1] >= c.timing.eyes || *v[2] + kTearWindowW > c.timing.h_active || *v[3] + kTearWindowH > c.timing.v_active)
+    if (*v[1] >= c.timing.eyes || *v[2] > c.timing.h_active - kTearWindowW || *v[3] > c.timing.v_active - kTearWindowH)
       throw InputError("--tear-at", s.tear_at,
                        "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
     tear_at_.frame = *v[0];

@@ -54,7 +54,10 @@ int run_live(LiveArgs& a) {
   a.spec.config = a.cfg.resolve();
   a.spec.config_source = a.cfg.source();
   if (a.scale < 1 || a.scale > 8) throw InputError("--scale", "", "must be 1 .. 8");
-  check_output_paths({{"--screenshot", a.screenshot}}, {{"--config", a.cfg.file}, {"--trace", a.spec.trace}});
+  std::vector<NamedPath> inputs = a.spec.memories.input_files();
+  inputs.push_back({"--config", a.cfg.file});
+  inputs.push_back({"--trace", a.spec.trace});
+  check_output_paths({{"--screenshot", a.screenshot}}, inputs);
   host::check_image_output("--screenshot", a.screenshot);
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER")) {
     std::fprintf(stderr, "arpsim live: no display to open a window on; run it on a desktop, or headless: xvfb-run -a arpsim live ...\n");
