@@ -1,5 +1,6 @@
 #include "ConfigFile.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "common/InputError.hpp"
@@ -9,9 +10,6 @@
 namespace arp::config {
 
 using nlohmann::json;
-
-namespace {
-}
 
 json to_json(const dp::ArpConfig& c) { return parameters_to_json(dp::arp_parameters(), c); }
 
@@ -37,12 +35,26 @@ dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::
   return c;
 }
 
+// The file and the overrides are one configuration: each key is checked as it is read, the rules between keys
+// once, on the whole (a file may hold a value only its --set makes valid: texel_frac 0 with --set pipeline.aa=off).
+// A rule broken is blamed on --set when an override named its key, on the file alone when none was given, and on
+// both otherwise (the file was fine until an override changed another key the rule reads).
 dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& sets) {
   dp::ArpConfig c;
-  if (!file.empty()) c = load_file(file, c);
-  if (!sets.empty()) c = apply_overrides(c, sets);
-  check(c, file.empty() ? "configuration" : file);
-  return c;
+  if (!file.empty())
+    apply_parameters_json(dp::arp_parameters(), parse_strict_json(read_input_file(file, kMaxConfigBytes, "configuration file"), file),
+                          file, c);
+  apply_parameter_overrides(dp::arp_parameters(), sets, c);
+  const auto issues = dp::validate(c);
+  if (issues.empty()) return c;
+  const dp::ConfigIssue& first = issues.front();
+  const bool set_named_it = std::any_of(sets.begin(), sets.end(), [&](const std::string& s) {
+    return s.compare(0, first.key.size() + 1, first.key + "=") == 0;
+  });
+  std::string source = file.empty() ? std::string("--set") : file;
+  if (!file.empty() && !sets.empty()) source = set_named_it ? "--set" : file + " with --set";
+  if (file.empty() && sets.empty()) source = "configuration";
+  throw InputError(source, first.key, first.reason);
 }
 
 std::string update_reference_doc(const std::string& doc, const std::string& source) {

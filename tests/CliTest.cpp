@@ -40,7 +40,8 @@ TEST(Cli, FrameWritesTheStereoImageAndReport) {
 }
 
 // --aa is pipeline.aa before the configuration is checked: no sub-texel bits are valid without bilinear filtering
-// (applied after the check, this was refused for wanting one).
+// (applied after the check, this was refused for wanting one; from a file, until the file was checked with its
+// options rather than alone).
 TEST(Cli, FrameAaOffAllowsNoSubTexelBits) {
   TempDir d;
   const auto r = run_command(kArpsim + " frame --set datapath.texel_frac=0 --aa off --out " + d.file("f.png"));
@@ -48,6 +49,10 @@ TEST(Cli, FrameAaOffAllowsNoSubTexelBits) {
   const auto bilinear = run_command(kArpsim + " frame --set datapath.texel_frac=0 --aa bilinear --out " + d.file("g.png"));
   EXPECT_EQ(bilinear.status, 2) << bilinear.output;
   EXPECT_NE(bilinear.output.find("needs at least 1 sub-texel bit"), std::string::npos) << bilinear.output;
+  // The same from a file: it is checked with the options that go with it, not alone.
+  std::ofstream(d.file("frac0.json")) << R"({"datapath": {"texel_frac": 0}})";
+  const auto file = run_command(kArpsim + " frame --config " + d.file("frac0.json") + " --aa off --out " + d.file("h.png"));
+  EXPECT_EQ(file.status, 0) << file.output;
 }
 
 // The calibration pattern fills memory 0's six faces of each eye, every texel: with a pool of 10 tiles there, the

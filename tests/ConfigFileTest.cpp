@@ -252,6 +252,29 @@ TEST(ConfigFile, SyntaxErrorsGiveLineAndColumn) {
   EXPECT_NE(missing.reason().find("cannot open"), std::string::npos);
 }
 
+// The file and the --set overrides are one configuration, its rules between keys checked on the whole: a file
+// valid only with its overrides is accepted, and a rule broken is blamed on what broke it.
+TEST(ConfigFile, AFileAndItsOverridesAreCheckedAsOne) {
+  test::TempDir d;
+  // No sub-texel bit is valid without bilinear filtering only; the default filter is bilinear.
+  std::ofstream(d.file("nearest.json")) << R"({"pipeline": {"aa": "off"}, "datapath": {"texel_frac": 0}})";
+  std::ofstream(d.file("frac0.json")) << R"({"datapath": {"texel_frac": 0}})";
+  EXPECT_EQ(config::resolve(d.file("frac0.json"), {"pipeline.aa=off"}).widths.texel_frac, 0);
+  // The file alone breaks the rule: the file is named.
+  const InputError alone = error_of([&] { config::resolve(d.file("frac0.json"), {}); });
+  EXPECT_EQ(alone.source(), d.file("frac0.json"));
+  EXPECT_EQ(alone.place(), "datapath.texel_frac");
+  EXPECT_NE(alone.reason().find("sub-texel bit"), std::string::npos) << alone.what();
+  // An override of another key breaks it: both are named, the key the rule reads too.
+  const InputError both = error_of([&] { config::resolve(d.file("nearest.json"), {"pipeline.aa=bilinear"}); });
+  EXPECT_EQ(both.source(), d.file("nearest.json") + " with --set");
+  EXPECT_EQ(both.place(), "datapath.texel_frac");
+  // An override of the key itself: --set is named.
+  const InputError set = error_of([&] { config::resolve(d.file("frac0.json"), {"pipeline.aa=bilinear", "datapath.texel_frac=0"}); });
+  EXPECT_EQ(set.source(), "--set");
+  EXPECT_EQ(error_of([] { config::resolve("", {"datapath.texel_frac=0"}); }).source(), "--set");
+}
+
 TEST(ConfigFile, OverridesSetOneKeyEach) {
   const dp::ArpConfig c = config::apply_overrides(dp::ArpConfig{}, {"datapath.rot_rounding=half_even", "memory.count=2"});
   EXPECT_EQ(c.widths.rot_rounding, dp::Rounding::HalfEven);
