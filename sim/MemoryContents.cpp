@@ -13,6 +13,7 @@
 #include "host/cubemap/CubeMapLoader.hpp"
 #include "host/cubemap/DisplayMemoryFill.hpp"
 #include "host/motion/WalkPath.hpp"
+#include "host/priority/PriorityScheduler.hpp"
 #include "BankRenderer.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
@@ -34,6 +35,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
   if (!std::isfinite(time_s) || std::abs(time_s) > 1e7) throw InputError("--time", "", "must be finite, within 1e7 s");
   const double ipd = checked_ipd_m();
   const host::Scene sc = load_scene();
+  check_assignment_names(host::unknown_assignment_names(sc, plan_assignment), sc, plan_scene_hash, plan_source);
   glm::dvec3 p = host::gallery_walk().front();
   if (!position.empty()) {
     std::stringstream ss(position);
@@ -91,6 +93,18 @@ host::Scene MemoryContents::load_scene() const {
                    ipd > plan_ipd_m && plan_bounds_drawing ? ": wider ones can draw outside them, and those texels are lost" : "", ipd);
   }
   return sc;
+}
+
+void check_assignment_names(const std::vector<std::string>& unknown, const host::Scene& scene, int64_t plan_scene_hash,
+                            const std::string& source) {
+  if (unknown.empty()) return;
+  std::string names;
+  for (size_t i = 0; i < unknown.size() && i < 5; ++i) names += (i ? ", \"" : "\"") + quoted(unknown[i]) + "\"";  // (a name can be megabytes long)
+  if (unknown.size() > 5) names += " and " + std::to_string(unknown.size() - 5) + " more";
+  const std::string what = std::to_string(unknown.size()) + " of its names are no object of scene " + quoted(scene.name) + ": " + names;
+  if (plan_scene_hash == 0 || plan_scene_hash == host::scene_hash(scene)) throw InputError(source, "memory.assignment", what);
+  std::fprintf(stderr, "arpsim: warning: %s: memory.assignment: %s (the plan was made for another scene; those strings are not used)\n",
+               source.c_str(), what.c_str());
 }
 
 }  // namespace arp::sim

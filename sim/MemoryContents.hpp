@@ -30,9 +30,13 @@ struct MemoryContents {
   double plan_ipd_m = dp::kDefaultIpdM;
   int plan_eyes = 2;
   bool plan_bounds_drawing = false;  // faces or tiles left out (memory.faces, memory.tiles): wider eyes lose texels there
+  std::vector<dp::ObjectAssignment> plan_assignment;  // memory.assignment: unused here, but its names are checked
   std::string plan_source;
   void expect_plan(const dp::ArpConfig& c, const std::string& source) {
     plan_scene_hash = c.plan.scene_hash;
+    std::string why;  // (a configuration resolved is valid: its assignment parses)
+    plan_assignment.clear();
+    dp::object_assignments(c.memory, plan_assignment, why);
     plan_ipd_m = c.plan.ipd_m;
     plan_eyes = c.timing.eyes;
     plan_bounds_drawing = !c.memory.tiles.empty() || c.memory.faces_present() < 6;
@@ -53,5 +57,11 @@ struct MemoryContents {
   // output may overwrite (check_output_paths).
   std::vector<NamedPath> input_files() const;
 };
+
+// memory.assignment's names no object of `scene` has (`unknown`): an error naming `source` in a configuration
+// planned for this scene or for none (plan.scene_hash `plan_scene_hash`, 0: none), a warning where it was planned
+// for another (said once, as the scene is).
+void check_assignment_names(const std::vector<std::string>& unknown, const host::Scene& scene, int64_t plan_scene_hash,
+                            const std::string& source);
 
 }  // namespace arp::sim

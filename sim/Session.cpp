@@ -320,16 +320,7 @@ void Session::check_assignment() const {
                  spec_.host.baseline ? "the baseline" : "region priority rendering");
     return;
   }
-  const auto& unknown = host_->scheduler().unknown_names();
-  if (unknown.empty()) return;
-  std::string names;
-  for (size_t i = 0; i < unknown.size() && i < 5; ++i) names += (i ? ", \"" : "\"") + quoted(unknown[i]) + "\"";  // (a name can be megabytes long)
-  if (unknown.size() > 5) names += " and " + std::to_string(unknown.size() - 5) + " more";
-  const std::string what = std::to_string(unknown.size()) + " of its names are no object of scene " + quoted(scene_->name) + ": " + names;
-  const int64_t planned = spec_.config.plan.scene_hash;
-  if (planned == 0 || planned == host::scene_hash(*scene_)) throw InputError(spec_.config_source, "memory.assignment", what);
-  std::fprintf(stderr, "arpsim: warning: %s: %s (the plan was made for another scene; those strings are not used)\n",
-               where.c_str(), what.c_str());
+  check_assignment_names(host_->scheduler().unknown_names(), *scene_, spec_.config.plan.scene_hash, spec_.config_source);
 }
 
 double HostSpec::threshold_rad(double deg) {
@@ -346,7 +337,6 @@ void Session::build_motion() {
     if (spec_.memories.scene.empty()) throw InputError("--walk", "", "needs --scene (what to walk through)");
     walk_ = std::make_unique<host::WalkPath>(h.make_walk());
   }
-  warn_if_planned_for_another_motion();
   if (!spec_.trace.empty()) {
     // Only what the run can latch: a second of margin before the first frame covers every lead.
     std::vector<tracker::PoseSample> poses =
@@ -368,6 +358,7 @@ void Session::build_motion() {
                            ": use a trace or a still head");
     motion_source_ = "synthetic " + spec_.motion.motion;
   }
+  warn_if_planned_for_another_motion();  // (after the trace is read: a trace that does not parse is said alone)
   add_auto_detail();  // from the motion afresh: before extend_motion hands a trace's poses to the run
   more_poses_ = pose_source(true);
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;

@@ -131,6 +131,23 @@ TEST(HostileInput, TimesOutsideThe64BitPicosecondRangeAreRefusedWithTheLimit) {
   EXPECT_NEAR(first_ps, 552853309.0 * 420000.0 / 25.175e6 * 1e12, 1e7);  // frame x frame time, closed form
 }
 
+// A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
+// hashes the trace's text) came first, and the real error read as its consequence.
+TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {
+  TempDir d;
+  const std::string run = "cd " + d.path() + " && " + kArpsim +
+                          " run -q --frames 1 --scene gallery --walk gallery --set plan.motion_hash=5 --report r.json --trace ";
+  const auto r = run_command(run + kData + "trace-nul.csv");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("a NUL byte"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("planned for another motion"), std::string::npos) << r.output;
+  // A trace that parses still gets the warning.
+  std::ofstream(d.file("t.csv")) << "time_s,qw,qx,qy,qz\n-1,1,0,0,0\n1,1,0,0,0\n";
+  const auto ok = run_command(run + d.file("t.csv"));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_NE(ok.output.find("planned for another motion"), std::string::npos) << ok.output;
+}
+
 TEST(HostileInput, NumericOptionsAreStrict) {
   TempDir d;
   expect_refused("numbers", d);

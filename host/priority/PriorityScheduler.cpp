@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include "common/Units.hpp"
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 
@@ -17,6 +18,15 @@ Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double use
                   threshold_rad, turn);
 }
 
+std::vector<std::string> unknown_assignment_names(const Scene& scene, const std::vector<dp::ObjectAssignment>& assignment) {
+  std::set<std::string> names;
+  for (const SceneObject& o : scene.objects) names.insert(o.name);
+  std::vector<std::string> unknown;
+  for (const dp::ObjectAssignment& a : assignment)
+    if (!names.count(a.name)) unknown.push_back(a.name);
+  return unknown;
+}
+
 PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size)
     : scene_(scene),
       cfg_(cfg),
@@ -25,16 +35,14 @@ PriorityScheduler::PriorityScheduler(const Scene& scene, const PriorityConfig& c
       desired_(scene.objects.size(), 0),
       rule_(scene.objects.size(), 0),
       fastest_(scene.objects.size(), 0),
-      slowest_(scene.objects.size(), std::max(0, cfg.memories - 1)) {
+      slowest_(scene.objects.size(), std::max(0, cfg.memories - 1)),
+      unknown_(unknown_assignment_names(scene, cfg.assignment)) {
   std::map<std::string, std::vector<size_t>> named;  // name -> its objects
   if (!cfg_.assignment.empty())
     for (size_t i = 0; i < scene.objects.size(); ++i) named[scene.objects[i].name].push_back(i);
   for (const dp::ObjectAssignment& a : cfg_.assignment) {
     const auto objects = named.find(a.name);
-    if (objects == named.end()) {
-      unknown_.push_back(a.name);
-      continue;
-    }
+    if (objects == named.end()) continue;  // (unknown_)
     for (const size_t i : objects->second) {
       fastest_[i] = std::min(a.fastest, cfg_.memories - 1);
       slowest_[i] = std::min(a.slowest, cfg_.memories - 1);

@@ -52,6 +52,9 @@ struct PriorityConfig {
 Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double user_speed_m_s, const EyeTurn& turn, double t_s,
                          double threshold_rad);
 
+// The names of `assignment` (memory.assignment's entries) no object of `scene` has, in the order given.
+std::vector<std::string> unknown_assignment_names(const Scene& scene, const std::vector<dp::ObjectAssignment>& assignment);
+
 class PriorityScheduler {
  public:
   PriorityScheduler(const Scene& scene, const PriorityConfig& cfg, int face_size);
@@ -75,7 +78,7 @@ class PriorityScheduler {
   // The memories memory.assignment keeps an object in (every memory where it names none of that name).
   int fastest_allowed(size_t object) const { return fastest_[object]; }
   int slowest_allowed(size_t object) const { return slowest_[object]; }
-  // memory.assignment's names no object of the scene has, in the order given.
+  // memory.assignment's names no object of the scene has, in the order given (unknown_assignment_names).
   const std::vector<std::string>& unknown_names() const { return unknown_; }
   // Object placements (assign() calls times objects) the assignment kept slower than the validity rule put
   // them (their images may move further than theta_t before the next update), and faster.
