@@ -339,14 +339,15 @@ std::vector<int> rule_memories(const host::Scene& scene, const host::WalkPath& w
 
 // The engine a ladder needs (EngineNeed): where the rule puts each object at every sample of the motion, then the
 // run's engine and its moves replayed at every display frame at a multiple of the configured engine's speed.
-// (bisect false: only what the configured engine does, scale left 0)
+// (bisect false: only what the configured engine does, scale left 0; `known`: rule_memories for L, if computed already)
 EngineNeed engine_need(const host::Scene& scene, const host::WalkPath& walk, const MotionSamples& ms, const dp::VideoTiming& vt,
                        double threshold_rad, const LadderLoad& L, const std::vector<double>& engine_s,
-                       const dp::HostEngineConfig& engine, bool bisect = true) {
+                       const dp::HostEngineConfig& engine, bool bisect = true, const std::vector<int>* known = nullptr) {
   const double hz = vt.refresh_hz();
   const host::PriorityScheduler sched(scene, ladder_priority(L.count, L.update_frames, L.update_ratio, hz, threshold_rad), 1);
   const size_t n = scene.objects.size(), N = static_cast<size_t>(L.count);
-  const std::vector<int> belongs = rule_memories(scene, walk, ms, hz, threshold_rad, L);  // object i at sample k: k * n + i
+  const std::vector<int> computed = known ? std::vector<int>{} : rule_memories(scene, walk, ms, hz, threshold_rad, L);
+  const std::vector<int>& belongs = known ? *known : computed;  // object i at sample k: k * n + i
   std::vector<int64_t> period(N);
   for (size_t m = 0; m < N; ++m) period[m] = sched.frames_per_update(static_cast<int>(m));
   const int64_t frames = static_cast<int64_t>(std::floor(ms.span_s * hz)) + 1;
@@ -1098,14 +1099,16 @@ Plan make_plan(const PlanRequest& r) {
   for (size_t j = 0; j < candidates.size(); ++j) {
     progress(kStepEngine, static_cast<double>(j) / replays, "engine replay");
     const bool planned = ladder_key(candidates[j]) == ladder_key(p.planned);
-    candidates[j].skipped =
-        engine_need(scene, walk, ms, timing, p.threshold_rad, candidates[j], planned ? planned_engine_s : engine_s, engine, false).skipped;
+    candidates[j].skipped = engine_need(scene, walk, ms, timing, p.threshold_rad, candidates[j], planned ? planned_engine_s : engine_s,
+                                        engine, false, planned ? &planned_belongs : nullptr)
+                                .skipped;
   }
   progress(kStepEngine, static_cast<double>(candidates.size()) / replays, "least engine");
-  p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, planned_engine_s, engine);
+  p.planned_need = engine_need(scene, walk, ms, timing, p.threshold_rad, p.planned, planned_engine_s, engine, true, &planned_belongs);
   progress(kStepEngine, (static_cast<double>(candidates.size()) + 30.0) / replays, "least engine");
   p.base_need = n == 0 ? p.planned_need
-                       : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_memory_engine_s, engine);
+                       : engine_need(scene, walk, ms, timing, base_threshold, p.base_ladder, base_memory_engine_s, engine, true,
+                                     &base_belongs);
   p.ladders = candidates;
   p.config.memory.count = p.planned.count;
   p.config.memory.update_frames = p.planned.update_frames;

@@ -1357,6 +1357,30 @@ TEST(PlanCli, ARunSkipsNoUpdateWithTheEngineThePlanNeedsAndSomeWithLess) {
   }
 }
 
+// The starting configuration of the engine-replay tests against runs: 60 Hz, two memories every 1 and 4 frames,
+// theta_t 5 degrees, no set-up per object, the engine's fill and triangle rates as given.
+dp::ArpConfig two_memories_every_1_and_4(const std::string& texels_per_s, const std::string& triangles_per_s) {
+  return config::apply_overrides(small_display_60hz(), {"memory.count=2", "memory.update_ratio=4", "memory.threshold_deg=5",
+                                                        "host.object_setup_s=0", "host.texels_per_s=" + texels_per_s,
+                                                        "host.triangles_per_s=" + triangles_per_s});
+}
+
+// The display frames the plan's engine replay covers (the walk's motion at the configuration's rate).
+int replay_frames(const Plan& p, const dp::ArpConfig& c) {
+  return static_cast<int>(std::floor(p.motion_s * dp::VideoTiming(c.timing).refresh_hz())) + 1;
+}
+
+// `arpsim run` of configuration `c` over `frames` frames of a walk through a scene: its report (two memories checked).
+nlohmann::json run_two_memories(const TempDir& d, const dp::ArpConfig& c, const std::string& scene, const std::string& walk, int frames) {
+  std::ofstream(d.file("base.json")) << config::to_json(c).dump(2);
+  const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
+                             d.file("base.json") + " --scene " + scene + " --walk " + walk + " --report " + d.file("r.json"));
+  EXPECT_EQ(o.status, 0) << o.output;
+  const nlohmann::json rep = test::load_json(d.file("r.json"));
+  EXPECT_EQ(rep["host"]["memories"].size(), 2u);
+  return rep;
+}
+
 // Memories exchanging an object swap together, at the last of them to finish, in the plan's replay as in a run: a
 // ball walked past moves from memory 1 (every 4th frame) to memory 0 (every frame) in a frame both render, while
 // memory 1 holds a far sphere whose render takes about 2.5 frames (20 000 triangles for each eye at 4.8e5 a second).
@@ -1369,27 +1393,16 @@ TEST(PlanCli, MemoriesExchangingAnObjectSwapTogetherAsInARun) {
     {"name": "far", "sphere": 2, "segments": 100, "position": [0, 1.6, -40]}]})");
   write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1.5]]})");
   PlanRequest r = request(d.file("pass.json"), d.file("walk.json"));
-  r.base = config::apply_overrides(small_display_60hz(), {"memory.count=2", "memory.update_ratio=4", "memory.threshold_deg=5",
-                                                          "host.object_setup_s=0", "host.texels_per_s=1e15", "host.triangles_per_s=4.8e5"});
+  r.base = two_memories_every_1_and_4("1e15", "4.8e5");
   r.size_widths = false;
   const Plan p = make_plan(r);
   ASSERT_EQ(std::make_tuple(p.base_ladder.count, p.base_ladder.update_frames, p.base_ladder.update_ratio), std::make_tuple(2, 1, 4));
-  std::ofstream(d.file("base.json")) << config::to_json(r.base).dump(2);
-  const int frames = static_cast<int>(std::floor(p.motion_s * dp::VideoTiming(r.base.timing).refresh_hz())) + 1;  // the replay's
-  const auto run = [&](int n) {
-    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(n) + " --config " +
-                               d.file("base.json") + " --scene " + d.file("pass.json") + " --walk " + d.file("walk.json") +
-                               " --report " + d.file("r.json"));
-    EXPECT_EQ(o.status, 0) << o.output;
-    const nlohmann::json rep = test::load_json(d.file("r.json"));
-    EXPECT_EQ(rep["host"]["memories"].size(), 2u);
-    return rep;
-  };
+  const auto run = [&](int n) { return run_two_memories(d, r.base, d.file("pass.json"), d.file("walk.json"), n); };
   // The ball starts in memory 1 with the far sphere and ends in memory 0 (objects_now: both eyes' memories hold the same).
   const nlohmann::json first = run(1);
   EXPECT_EQ(first["host"]["memories"][0]["objects_now"], 0);
   EXPECT_EQ(first["host"]["memories"][1]["objects_now"], 2);
-  const nlohmann::json rep = run(frames);
+  const nlohmann::json rep = run(replay_frames(p, r.base));
   EXPECT_EQ(rep["host"]["memories"][0]["objects_now"], 1);
   EXPECT_EQ(rep["host"]["memories"][1]["objects_now"], 1);
   const int64_t skipped = rep["host"]["memories"][0]["skipped_overload"].get<int64_t>();
@@ -1410,25 +1423,18 @@ TEST(PlanCli, TheLeastEngineCountsWhatAMemoryFillsOnItsOwn) {
     {"name": "far", "sphere": 30, "segments": 24, "position": [0, 1.6, -45]}]})");
   write(d.file("walk.json"), R"({"speed": 1.0, "points": [[0, 1.6, 0], [0, 1.6, -1]]})");
   PlanRequest r = request(d.file("hidden.json"), d.file("walk.json"));
-  r.base = config::apply_overrides(small_display_60hz(), {"memory.count=2", "memory.update_ratio=4", "memory.threshold_deg=5",
-                                                          "host.object_setup_s=0", "host.texels_per_s=2e7", "host.triangles_per_s=1e15"});
+  r.base = two_memories_every_1_and_4("2e7", "1e15");
   r.size_widths = false;
   r.fill_points = 64;
   const Plan p = make_plan(r);
   ASSERT_EQ(std::make_tuple(p.base_ladder.count, p.base_ladder.update_frames, p.base_ladder.update_ratio), std::make_tuple(2, 1, 4));
   const double need = p.base_need.scale;
   ASSERT_GT(need, 0);
-  const int frames = static_cast<int>(std::floor(p.motion_s * dp::VideoTiming(r.base.timing).refresh_hz())) + 1;  // the replay's
   for (const double factor : {1.02, 0.97}) {
     dp::ArpConfig c = r.base;
     c.host.texels_per_s = factor * need * r.base.host.texels_per_s;
-    std::ofstream(d.file("base.json")) << config::to_json(c).dump(2);
-    const auto o = run_command(kArpsim + " run -q --every 0 --error-every 0 --frames " + std::to_string(frames) + " --config " +
-                               d.file("base.json") + " --scene " + d.file("hidden.json") + " --walk " + d.file("walk.json") +
-                               " --report " + d.file("r.json"));
-    ASSERT_EQ(o.status, 0) << o.output;
-    const nlohmann::json rep = test::load_json(d.file("r.json"));
-    ASSERT_EQ(rep["host"]["memories"].size(), 2u);
+    const nlohmann::json rep = run_two_memories(d, c, d.file("hidden.json"), d.file("walk.json"), replay_frames(p, r.base));
+    if (rep["host"]["memories"].size() != 2u) return;
     EXPECT_EQ(rep["host"]["memories"][0]["objects_now"], 1) << "the wall in memory 0";
     EXPECT_EQ(rep["host"]["memories"][1]["objects_now"], 1) << "the sphere in memory 1";
     int64_t skipped = 0;
