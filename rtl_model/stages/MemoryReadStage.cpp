@@ -45,7 +45,8 @@ MemoryReadStage::MemoryReadStage(const StageContext& ctx)
       memories_(ctx.config().memory.count),
       texel_frac_(ctx.config().widths.texel_frac),
       face_size_(ctx.config().memory.face_size),
-      bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear) {}
+      bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear),
+      empty_word_(dp::MemoryFormat(ctx.config().memory).empty_word()) {}
 
 // Reads through the banks' published front-buffer tables (the same words
 // DisplayMemoryBank::read returns), each memory's face table looked up once.
@@ -74,6 +75,10 @@ void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
     }
     for (int m = 0; m < memories_; ++m) {
       const Bank& bank = mem_.bank(eye, m);
+      if (!bank.front_face_written(a.face)) {  // its table is all tile 0, the empty tile: the same words, no loads
+        for (int i = 0; i < taps; ++i) t.words[k][i][m] = empty_word_;
+        continue;
+      }
       const int32_t* index = bank.front_tile_index(a.face);
       const uint64_t* pool = bank.front_pool();
       const int tpr = bank.tiles_per_row();

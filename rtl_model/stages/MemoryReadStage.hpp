@@ -74,6 +74,7 @@ class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, Fe
   BufferSwapper swapper_;
   int memories_, texel_frac_, face_size_;
   bool bilinear_;
+  uint64_t empty_word_;  // what every address of a face never written reads
 };
 
 }  // namespace arp::stage
