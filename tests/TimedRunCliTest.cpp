@@ -582,7 +582,7 @@ TEST(TimedRunCli, GalleryWalkIsTheSameAtEveryLevel) {
 // settings are refused before anything runs.
 TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   TempDir d;
-  const auto j = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --regions 4 --warp --set memory.face_size=128");
+  const auto j = gallery_walk(d, " --frames 4 --every 0 --error-every 3 --regions 4 --warp --set memory.face_size=128");
   EXPECT_EQ(j["host"]["mode"], "regions");
   EXPECT_GT(j["host"]["regions"]["segments"].get<int>(), j["host"]["regions"]["objects_cut"].get<int>());
   EXPECT_TRUE(j["host"]["regions"]["warping"].get<bool>());
@@ -594,7 +594,7 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_GT(j["host"]["error"]["mean_tear_pixels"].get<double>(), 0.0);
   EXPECT_GT(j["host"]["error"]["mean_crack_pixels"].get<double>(), 0.0);
   EXPECT_EQ(j["config"]["memory"]["region_size_m"], 4.0);  // what ran: --regions sets the key
-  // Each memory's pieces now are its regions': no region changed memory in these 6 frames, so each memory that
+  // Each memory's pieces now are its regions': no region changed memory in these 4 frames, so each memory that
   // rendered drew them at every update, for each eye; every piece is in one. (Seen failing with the object rule's
   // placement reported instead.)
   ASSERT_EQ(j["host"]["regions"]["reassignments"], 0);
@@ -607,7 +607,7 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   }
   EXPECT_EQ(pieces, j["host"]["regions"]["objects_after_segmentation"].get<int64_t>());
   // The same from the configuration's keys (a plan's, or --set): the same run.
-  const auto jk = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --set memory.region_size_m=4 --warp --set memory.face_size=128",
+  const auto jk = gallery_walk(d, " --frames 4 --every 0 --error-every 3 --set memory.region_size_m=4 --warp --set memory.face_size=128",
                                "k.json");
   EXPECT_EQ(jk["host"]["mode"], "regions");
   EXPECT_EQ(jk["config"], j["config"]);
@@ -615,7 +615,7 @@ TEST(TimedRunCli, RegionWalkReportsSegmentsAndTearing) {
   EXPECT_EQ(jk["host"]["regions"], j["host"]["regions"]);
   EXPECT_EQ(jk["host"]["triangles_per_s"], j["host"]["triangles_per_s"]);
   // Cubes for tall worlds, and the magnified tear at a place given by --tear-at.
-  const auto jc = gallery_walk(d, " --frames 6 --every 0 --error-every 3 --regions 2 --region-cubes --set memory.face_size=128"
+  const auto jc = gallery_walk(d, " --frames 4 --every 0 --error-every 3 --regions 2 --region-cubes --set memory.face_size=128"
                                  " --tear-image " + d.file("tear.png") + " --tear-at 3:1:100:200", "c.json");
   EXPECT_EQ(jc["host"]["regions"]["shape"], "cubes");
   EXPECT_EQ(jc["host"]["error"]["tear_image"]["frame"], 3);
