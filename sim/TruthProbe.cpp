@@ -64,6 +64,27 @@ dp::ArpConfig truth_image_config(const dp::ArpConfig& truth, int n) {
   return c;
 }
 
+TearAt parse_tear_at(const std::string& text, int64_t first_frame, int64_t frames, int64_t every, const dp::VideoTimingConfig& t) {
+  // Four whole numbers, each read whole and compared as int64 (a coordinate near INT_MAX wrapped past the
+  // bounds check below, and the window was drawn outside the image).
+  std::optional<int64_t> v[4];
+  size_t from = 0;
+  for (int i = 0; i < 4; ++i) {
+    const size_t colon = i < 3 ? text.find(':', from) : text.size();
+    if (colon == std::string::npos) break;
+    v[i] = whole_number(std::string_view(text).substr(from, colon - from));
+    from = colon + 1;
+  }
+  if (std::any_of(std::begin(v), std::end(v), [](const std::optional<int64_t>& x) { return !x || *x < 0; }))
+    throw InputError("--tear-at", text, "expected FRAME:EYE:X:Y, non-negative whole numbers");
+  if (every <= 0 || *v[0] < first_frame || *v[0] - first_frame >= frames || (*v[0] - first_frame) % every != 0)
+    throw InputError("--tear-at", text, "the frame must be one this run measures (--first-frame + k * --error-every)");
+  if (*v[1] >= t.eyes || *v[2] > t.h_active - TruthProbe::kTearWindowW || *v[3] > t.v_active - TruthProbe::kTearWindowH)
+    throw InputError("--tear-at", text,
+                     "the " + std::to_string(TruthProbe::kTearWindowW) + "x" + std::to_string(TruthProbe::kTearWindowH) + " window must lie inside one eye's image");
+  return {*v[0], static_cast<int>(*v[1]), static_cast<int>(*v[2]), static_cast<int>(*v[3])};
+}
+
 TruthProbe::TruthProbe(const TruthProbeSetup& s)
     : s_(s),
       truth_cfg_(truth_config(*s.config, s.truth_face_size)),
@@ -79,29 +100,7 @@ TruthProbe::TruthProbe(const TruthProbeSetup& s)
       px_rad_(s.config->lens.fov_deg * kPi / 180.0 / s.config->timing.h_active),
       truth_ids_(static_cast<size_t>(s.config->timing.eyes)) {
   const dp::ArpConfig& c = *s.config;
-  if (!s.tear_at.empty()) {
-    // Four whole numbers, each read whole and compared as int64 (a coordinate near INT_MAX wrapped past the
-    // bounds check below, and the window was drawn outside the image).
-    std::optional<int64_t> v[4];
-    size_t from = 0;
-    for (int i = 0; i < 4; ++i) {
-      const size_t colon = i < 3 ? s.tear_at.find(':', from) : s.tear_at.size();
-      if (colon == std::string::npos) break;
-      v[i] = whole_number(std::string_view(s.tear_at).substr(from, colon - from));
-      from = colon + 1;
-    }
-    if (std::any_of(std::begin(v), std::end(v), [](const std::optional<int64_t>& x) { return !x || *x < 0; }))
-      throw InputError("--tear-at", s.tear_at, "expected FRAME:EYE:X:Y, non-negative whole numbers");
-    if (*v[0] < s.first_frame || *v[0] >= s.first_frame + s.frames || (*v[0] - s.first_frame) % s.every != 0)
-      throw InputError("--tear-at", s.tear_at, "the frame must be one this run measures (--first-frame + k * --error-every)");
-    if (*v[1] >= c.timing.eyes || *v[2] > c.timing.h_active - kTearWindowW || *v[3] > c.timing.v_active - kTearWindowH)
-      throw InputError("--tear-at", s.tear_at,
-                       "the " + std::to_string(kTearWindowW) + "x" + std::to_string(kTearWindowH) + " window must lie inside one eye's image");
-    tear_at_.frame = *v[0];
-    tear_at_.eye = static_cast<int>(*v[1]);
-    tear_at_.x = static_cast<int>(*v[2]);
-    tear_at_.y = static_cast<int>(*v[3]);
-  }
+  if (!s.tear_at.empty()) tear_at_ = parse_tear_at(s.tear_at, s.first_frame, s.frames, s.every, c.timing);
   if (!own_truth_) truth_lens_.emplace(truth_cfg_.lens, truth_cfg_.timing, truth_cfg_.widths.vec_frac);
   truth_mem_ = std::make_unique<dp::DisplayMemorySet>(truth_cfg_.memory, c.timing.eyes);
   truth_model_ = std::make_unique<FunctionalModel>(truth_image_cfg_);

@@ -51,6 +51,16 @@ struct TruthProbeSetup {
 // offset n times. At n = 1, `truth` itself.
 dp::ArpConfig truth_image_config(const dp::ArpConfig& truth, int n);
 
+// Where --tear-at FRAME:EYE:X:Y puts the magnified tear window (frame -1: none given).
+struct TearAt {
+  int64_t frame = -1;
+  int eye = 0, x = 0, y = 0;
+};
+// --tear-at read and checked against the run: four non-negative whole numbers, a frame the run measures
+// (first_frame + k x every, before first_frame + frames), a window inside one eye's image of `t`; else an InputError
+// naming --tear-at. The run checks it before any work, the probe reads it again.
+TearAt parse_tear_at(const std::string& text, int64_t first_frame, int64_t frames, int64_t every, const dp::VideoTimingConfig& t);
+
 class TruthProbe {
  public:
   // InputError for a --tear-at that this run will not measure or that falls outside the image.
@@ -67,10 +77,6 @@ class TruthProbe {
   static constexpr int kTearWindowW = 48, kTearWindowH = 32, kTearScale = 8;
 
  private:
-  struct TearAt {
-    int64_t frame = -1;
-    int eye = 0, x = 0, y = 0;
-  };
   TruthProbeSetup s_;
   TearAt tear_at_;
   dp::ArpConfig truth_cfg_;        // the truth's memory and arithmetic, at the run's display (what each pixel addresses)
