@@ -792,13 +792,7 @@ Plan make_plan(const PlanRequest& r) {
     if (r.progress) r.progress(step, kPlanSteps, f, w);
   };
 
-  // The scene and its motion.
-  progress(kStepScene, 0.0, "the scene");
-  const host::Scene scene = r.memories.load_scene();
-  p.scene_name = scene.name;
-  p.scene_hash = host::scene_hash(scene);
-  p.objects = scene.objects.size();
-  p.triangles = scene.triangles();
+  // The motion, then the scene: a bad option or trace is refused before the scene is loaded (the gallery: about 1 s).
   HostSpec hs;
   hs.walk = r.walk;
   hs.walk_speed = r.walk_speed;
@@ -815,6 +809,12 @@ Plan make_plan(const PlanRequest& r) {
   if (!head_motion.trace.empty())
     head_motion.trace_poses =
         std::make_shared<const std::vector<tracker::PoseSample>>(read_planned_trace(head_motion.trace, walk_span_s(walk)));
+  progress(kStepScene, 0.0, "the scene");
+  const host::Scene scene = r.memories.load_scene();
+  p.scene_name = scene.name;
+  p.scene_hash = host::scene_hash(scene);
+  p.objects = scene.objects.size();
+  p.triangles = scene.triangles();
   const MotionSamples ms = sample_motion(walk, head_motion, timing, ipd_m);
   p.motion_s = ms.span_s;
   p.samples = static_cast<int>(ms.t.size());
