@@ -37,13 +37,14 @@ dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::
 
 // The file and the overrides are one configuration: each key is checked as it is read, the rules between keys
 // once, on the whole (a file may hold a value only its --set makes valid: texel_frac 0 with --set pipeline.aa=off).
-// A rule broken is blamed on --set when an override named its key, on the file alone when none was given, and on
-// both otherwise (the file was fine until an override changed another key the rule reads).
+// A rule broken is blamed on --set when an override named its key; else on the file when the file alone breaks a
+// rule; else on both (the file was fine until an override changed another key the rule reads).
 dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& sets) {
   dp::ArpConfig c;
   if (!file.empty())
     apply_parameters_json(dp::arp_parameters(), parse_strict_json(read_input_file(file, kMaxConfigBytes, "configuration file"), file),
                           file, c);
+  const dp::ArpConfig from_file = c;
   apply_parameter_overrides(dp::arp_parameters(), sets, c);
   const auto issues = dp::validate(c);
   if (issues.empty()) return c;
@@ -51,10 +52,9 @@ dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& s
   const bool set_named_it = std::any_of(sets.begin(), sets.end(), [&](const std::string& s) {
     return s.compare(0, first.key.size() + 1, first.key + "=") == 0;
   });
-  std::string source = file.empty() ? std::string("--set") : file;
-  if (!file.empty() && !sets.empty()) source = set_named_it ? "--set" : file + " with --set";
-  if (file.empty() && sets.empty()) source = "configuration";
-  throw InputError(source, first.key, first.reason);
+  if (sets.empty() || (!file.empty() && !set_named_it && !dp::validate(from_file).empty()))
+    throw InputError(file.empty() ? std::string("configuration") : file, first.key, first.reason);
+  throw InputError(file.empty() || set_named_it ? std::string("--set") : file + " with --set", first.key, first.reason);
 }
 
 std::string update_reference_doc(const std::string& doc, const std::string& source) {

@@ -25,7 +25,8 @@ dp::ArpConfig load_file(const std::string& path, dp::ArpConfig base = {});
 // Applies "section.key=value" overrides (value as JSON, or a bare word as a string).
 dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::string>& sets);
 
-// The embedded defaults, then the file (if any), then the overrides (later wins); checked.
+// The embedded defaults, then the file (if any), then the overrides (later wins); each key checked as read, the rules
+// between keys once on the whole, an error blaming --set, the file, or "FILE with --set" (ConfigFile.cpp).
 dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& sets);
 
 // Throws InputError(source, key, reason) on the first constraint violated.

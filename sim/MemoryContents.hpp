@@ -30,13 +30,15 @@ struct MemoryContents {
   double plan_ipd_m = dp::kDefaultIpdM;
   int plan_eyes = 2;
   bool plan_bounds_drawing = false;  // faces or tiles left out (memory.faces, memory.tiles): wider eyes lose texels there
-  std::vector<dp::ObjectAssignment> plan_assignment;  // memory.assignment: unused here, but its names are checked
+  // memory.assignment: unused here (a scene is drawn whole into memory 0), but its names are checked against the scene
+  // as a run checks them -- not by regions (memory.region_size_m), which place every object themselves.
+  std::vector<dp::ObjectAssignment> plan_assignment;
   std::string plan_source;
   void expect_plan(const dp::ArpConfig& c, const std::string& source) {
     plan_scene_hash = c.plan.scene_hash;
     std::string why;  // (a configuration resolved is valid: its assignment parses)
     plan_assignment.clear();
-    dp::object_assignments(c.memory, plan_assignment, why);
+    if (c.memory.region_size_m == 0) dp::object_assignments(c.memory, plan_assignment, why);
     plan_ipd_m = c.plan.ipd_m;
     plan_eyes = c.timing.eyes;
     plan_bounds_drawing = !c.memory.tiles.empty() || c.memory.faces_present() < 6;

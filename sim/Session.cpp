@@ -127,7 +127,6 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && regions == 0) throw InputError("--region-cubes", "", "needs --regions SIZE (or memory.region_size_m)");
   if (!o.tear_at.empty() && o.tear_image.empty()) throw InputError("--tear-at", "", "needs --tear-image");
-  if (!o.tear_at.empty()) parse_tear_at(o.tear_at, s.first_frame, s.frames, o.error_every, s.config.timing);  // before any work
   host::check_image_output("--tear-image", o.tear_image);
   if (h.warp && regions == 0) throw InputError("--warp", "", "region warping needs --regions (or memory.region_size_m)");
   check_renderer(s.memories, s.config.memory.depth_bits);
@@ -152,6 +151,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   // After the configuration's check: the limit depends on its clock.
   if (const std::string why = dp::VideoTiming(s.config.timing).frames_out_of_range(s.first_frame, s.frames); !why.empty())
     throw InputError("--first-frame", "", why);
+  if (!o.tear_at.empty()) parse_tear_at(o.tear_at, s.first_frame, s.frames, o.error_every, s.config.timing);  // before any work
 }
 
 }  // namespace

@@ -77,7 +77,8 @@ TearAt parse_tear_at(const std::string& text, int64_t first_frame, int64_t frame
   }
   if (std::any_of(std::begin(v), std::end(v), [](const std::optional<int64_t>& x) { return !x || *x < 0; }))
     throw InputError("--tear-at", text, "expected FRAME:EYE:X:Y, non-negative whole numbers");
-  if (every <= 0 || *v[0] < first_frame || *v[0] - first_frame >= frames || (*v[0] - first_frame) % every != 0)
+  // (first_frame >= 0, so the difference cannot overflow)
+  if (every <= 0 || first_frame < 0 || *v[0] < first_frame || *v[0] - first_frame >= frames || (*v[0] - first_frame) % every != 0)
     throw InputError("--tear-at", text, "the frame must be one this run measures (--first-frame + k * --error-every)");
   if (*v[1] >= t.eyes || *v[2] > t.h_active - TruthProbe::kTearWindowW || *v[3] > t.v_active - TruthProbe::kTearWindowH)
     throw InputError("--tear-at", text,

@@ -265,6 +265,8 @@ TEST(ConfigFile, AFileAndItsOverridesAreCheckedAsOne) {
   EXPECT_EQ(alone.source(), d.file("frac0.json"));
   EXPECT_EQ(alone.place(), "datapath.texel_frac");
   EXPECT_NE(alone.reason().find("sub-texel bit"), std::string::npos) << alone.what();
+  // The file alone breaks it, and an override of another key does not mend it: the file is named.
+  EXPECT_EQ(error_of([&] { config::resolve(d.file("frac0.json"), {"memory.count=2"}); }).source(), d.file("frac0.json"));
   // An override of another key breaks it: both are named, the key the rule reads too.
   const InputError both = error_of([&] { config::resolve(d.file("nearest.json"), {"pipeline.aa=bilinear"}); });
   EXPECT_EQ(both.source(), d.file("nearest.json") + " with --set");

@@ -19,9 +19,10 @@ Validity object_validity(const SceneObject& o, const glm::dvec3& eye, double use
 }
 
 std::vector<std::string> unknown_assignment_names(const Scene& scene, const std::vector<dp::ObjectAssignment>& assignment) {
+  std::vector<std::string> unknown;
+  if (assignment.empty()) return unknown;
   std::set<std::string> names;
   for (const SceneObject& o : scene.objects) names.insert(o.name);
-  std::vector<std::string> unknown;
   for (const dp::ObjectAssignment& a : assignment)
     if (!names.count(a.name)) unknown.push_back(a.name);
   return unknown;

@@ -46,7 +46,7 @@ MemoryReadStage::MemoryReadStage(const StageContext& ctx)
       texel_frac_(ctx.config().widths.texel_frac),
       face_size_(ctx.config().memory.face_size),
       bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear),
-      empty_word_(dp::MemoryFormat(ctx.config().memory).empty_word()) {}
+      empty_word_(mem_.format().empty_word()) {}
 
 // Reads through the banks' published front-buffer tables (the same words
 // DisplayMemoryBank::read returns), each memory's face table looked up once.
