@@ -11,6 +11,13 @@ namespace arp::config {
 
 using nlohmann::json;
 
+namespace {
+// A configuration file's JSON, read strictly (syntax errors name line and column).
+json read_file_json(const std::string& path) {
+  return parse_strict_json(read_input_file(path, kMaxConfigBytes, "configuration file"), path);
+}
+}  // namespace
+
 json to_json(const dp::ArpConfig& c) { return parameters_to_json(dp::arp_parameters(), c); }
 
 void check(const dp::ArpConfig& c, const std::string& source) {
@@ -25,7 +32,7 @@ dp::ArpConfig from_json(const json& j, const std::string& source, dp::ArpConfig 
 }
 
 dp::ArpConfig load_file(const std::string& path, dp::ArpConfig base) {
-  return from_json(parse_strict_json(read_input_file(path, kMaxConfigBytes, "configuration file"), path), path, base);
+  return from_json(read_file_json(path), path, base);
 }
 
 dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::string>& sets) {
@@ -41,9 +48,7 @@ dp::ArpConfig apply_overrides(const dp::ArpConfig& base, const std::vector<std::
 // rule; else on both (the file was fine until an override changed another key the rule reads).
 dp::ArpConfig resolve(const std::string& file, const std::vector<std::string>& sets) {
   dp::ArpConfig c;
-  if (!file.empty())
-    apply_parameters_json(dp::arp_parameters(), parse_strict_json(read_input_file(file, kMaxConfigBytes, "configuration file"), file),
-                          file, c);
+  if (!file.empty()) apply_parameters_json(dp::arp_parameters(), read_file_json(file), file, c);
   const dp::ArpConfig from_file = c;
   apply_parameter_overrides(dp::arp_parameters(), sets, c);
   const auto issues = dp::validate(c);
