@@ -60,7 +60,10 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
   contents.expect_plan(spec_.config, spec_.config_source);
   contents.fill(mem_, dp::Quat{}, memory_source_, spec_.threads);
   wall0_ = Clock::now();
-  usb_offset_ = usb_ ? -usb_->now_ps() : 0;
+  if (usb_) {
+    std::vector<tracker::PoseSample> before;  // sent while the loop was being set up
+    usb_offset_ = live_start_offset(*usb_, 0, before);
+  }
 }
 
 LiveLoop::~LiveLoop() = default;

@@ -28,4 +28,10 @@ int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<track
   return static_cast<int64_t>(more.size());
 }
 
+int64_t live_start_offset(tracker::PoseSource& live, int64_t start_ps, std::vector<tracker::PoseSample>& before) {
+  const size_t had = before.size();
+  live.poll(before, 0);
+  return start_ps - (before.size() > had ? before.back().time_ps : live.now_ps());
+}
+
 }  // namespace arp::sim

@@ -8,6 +8,7 @@
 
 #include "rtl_model/datapath/OrientationMatrixUnit.hpp"
 #include "tracker/PoseSample.hpp"
+#include "tracker/PoseSource.hpp"
 
 namespace arp::sim {
 
@@ -19,5 +20,13 @@ std::vector<dp::OrientationSample> to_orientation_samples(const std::vector<trac
 // the run started. Returns how many were appended; with `appended`, also adds them there (times moved).
 int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& poses, int64_t offset_ps,
                           const std::string& source, std::vector<tracker::PoseSample>* appended = nullptr);
+
+// The offset from a live source's time to the run's, fixed as the run starts at `start_ps`: what has
+// arrived by then was sent while the run was being set up (taken out into `before`, in order); the last
+// of it is the pose at the start, and what arrives later is placed after it by the source's time. Judged
+// by arrival, not by the source's time against the host's clock: a transport delivering slower than the
+// device samples (a starved host) falls ever further behind that clock, and would have put everything
+// the run received before its start. Nothing arrived yet: the source's present is the start.
+int64_t live_start_offset(tracker::PoseSource& live, int64_t start_ps, std::vector<tracker::PoseSample>& before);
 
 }  // namespace arp::sim

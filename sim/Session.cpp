@@ -547,7 +547,9 @@ void Session::build_memories() {
 // unplug holds the last pose and the run goes on.
 void Session::build_live_input(stage::TimedInputs& in) {
   const auto wall0 = Clock::now();
-  const int64_t offset_ps = start_ps_ - live_->now_ps();  // a pose arriving as the first frame starts is placed at its start
+  std::vector<tracker::PoseSample> before;
+  const int64_t offset_ps = live_start_offset(*live_, start_ps_, before);
+  live_before_start_ += static_cast<int64_t>(before.size());
   auto got = std::make_shared<std::vector<tracker::PoseSample>>();
   in.before_frame = [this, wall0, offset_ps, got](int64_t frame, double) {
     const int64_t until_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1)) - start_ps_;
@@ -570,7 +572,7 @@ void Session::build_live_input(stage::TimedInputs& in) {
     const int64_t appended = append_live_poses(stream_, *got, offset_ps, motion_source_, live_record_ ? &taken : nullptr);
     for (const auto& p : taken) live_record_->append(p);
     live_samples_ += appended;
-    live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // sent while the run was being set up
+    live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // (earlier than the stream holds: counted with those)
     got->clear();
   };
 }

@@ -83,6 +83,10 @@ class RiftEmulator {
   // The host is busy: reports owed during the next `ms` of the device's clock are handed over together
   // when it has passed (a burst, as queued transfers complete).
   void delay_delivery(int64_t ms);
+  // A transport slower than the device (what an emulator starved of CPU is): at most `reports_per_s`
+  // reports a second are handed over, the others wait in order, so the device's time falls ever further
+  // behind the host's. 0: none held back.
+  void slow_transport(double reports_per_s);
   // A hung host controller: the interrupt transfers in flight now, and those submitted until replug(), are
   // never completed -- not by a report, not when discarded, not when unplugged -- until give_back()
   // completes them as cancelled.
