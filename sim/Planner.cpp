@@ -809,25 +809,9 @@ Plan make_plan(const PlanRequest& r) {
   if (!head_motion.trace.empty())
     head_motion.trace_poses =
         std::make_shared<const std::vector<tracker::PoseSample>>(read_planned_trace(head_motion.trace, walk_span_s(walk)));
-  progress(kStepScene, 0.0, "the scene");
-  const host::Scene scene = r.memories.load_scene();
-  p.scene_name = scene.name;
-  p.scene_hash = host::scene_hash(scene);
-  p.objects = scene.objects.size();
-  p.triangles = scene.triangles();
   const MotionSamples ms = sample_motion(walk, head_motion, timing, ipd_m);
-  p.motion_s = ms.span_s;
-  p.samples = static_cast<int>(ms.t.size());
-  p.config.plan.scene_hash = p.scene_hash;
-  p.config.plan.motion_hash = motion_hash(walk, r.head);
-  p.config.plan.ipd_m = ipd_given;
-
-  // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
-  progress(kStepPixelAngles, 0.0, "pixel angles");
+  // The face size's limits are the options' too (the display, the lens): checked before the scene as well.
   const auto [amin, acentre] = pixel_angles(r.base);
-  p.pixel_angle_min_rad = amin;
-  p.pixel_angle_centre_rad = acentre;
-  // Any display pixel can look at any texel as the head turns, so the largest texel is held to the pixel.
   auto face_for = [](double pixel_rad) {
     return static_cast<int>(std::clamp(std::ceil(1.0 / std::tan(pixel_rad / 2.0) - 1e-9), 1.0, 16384.0));
   };
@@ -836,6 +820,24 @@ Plan make_plan(const PlanRequest& r) {
   const int S = face_for(finest ? amin : acentre);
   check_plan_fits_memory(S, r.base.timing.eyes, r.base_source, "lens.fov_deg",
                          "planned from the angle a display pixel subtends after the lens (--resolve " + r.resolve + ")");
+  progress(kStepScene, 0.0, "the scene");
+  const host::Scene scene = r.memories.load_scene();
+  p.scene_name = scene.name;
+  p.scene_hash = host::scene_hash(scene);
+  p.objects = scene.objects.size();
+  p.triangles = scene.triangles();
+  p.motion_s = ms.span_s;
+  p.samples = static_cast<int>(ms.t.size());
+  p.config.plan.scene_hash = p.scene_hash;
+  p.config.plan.motion_hash = motion_hash(walk, r.head);
+  p.config.plan.ipd_m = ipd_given;
+
+  // 1. Face size: the largest texel (at a face's centre, 2 atan(1/S)) no coarser than the finest pixel.
+  // (Any display pixel can look at any texel as the head turns, so the largest texel is held to the pixel:
+  // S above, from the pixel angles.)
+  progress(kStepPixelAngles, 0.0, "pixel angles");
+  p.pixel_angle_min_rad = amin;
+  p.pixel_angle_centre_rad = acentre;
   p.config.memory.face_size = S;
   p.choices.push_back({"memory.face_size", std::to_string(S),
                        "a display pixel after the lens subtends " + printf_text("%.4f", rad_to_deg(acentre) * 60.0) +

@@ -130,6 +130,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   host::check_image_output("--tear-image", o.tear_image);
   if (h.warp && regions == 0) throw InputError("--warp", "", "region warping needs --regions (or memory.region_size_m)");
   check_renderer(s.memories, s.config.memory.depth_bits);
+  s.memories.checked_ipd_m();  // (with a walk it was checked once the scene was loaded)
   check_model_fits_memory(s.config, s.config_source, !s.memories.scene.empty(),
                           !s.memories.scene.empty() && !h.walk.empty() && o.error_every > 0 ? std::max(o.truth_face_size, 0) : -1);
   if (h.warp && s.memories.renderer != "software")
@@ -177,6 +178,8 @@ Session::Session(RunSpec spec)
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
   build_detail_windows();
   check_spec(spec_, fidelity_);
+  stalls_ = stall_windows();  // (a bad window was refused only after the memories were filled: 0.7 s)
+  vcd_window_ = vcd_option_window();
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
   build_motion();
@@ -226,7 +229,7 @@ void Session::build_detail_windows() {
 // by hand; with the warm-up frames before each, as absolute frames.
 void Session::add_auto_detail() {
   if (spec_.detail.empty()) return;
-  const std::vector<stage::StallWindow> stalls = stall_windows();
+  const std::vector<stage::StallWindow>& stalls = stalls_;
   std::vector<stage::FrameWindows::Window> w = detail_windows_;
   if (auto_detail_) {
     const std::vector<double> v = frame_speeds_dps();
@@ -605,6 +608,21 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
   opt.vcd.path = vcd_tmp_base_;
   opt.vcd.shown = vcd_final_;
   opt.vcd.data = o.vcd_signals == "all";
+  if (vcd_window_) {
+    std::tie(opt.vcd.from_ps, opt.vcd.to_ps) = *vcd_window_;
+  } else if (!timed_frames_.every_frame()) {
+    // With detailed windows: the first window (its warm-up frames too), from the vertical blank before it to the one after it.
+    const dp::PipelineSchedule sched(spec_.config);
+    const auto [f0, f1] = timed_frames_.windows().front();
+    opt.vcd.from_ps = timing_.cycles_to_ps(sched.swap_cycle(f0 - 1));
+    opt.vcd.to_ps = timing_.cycles_to_ps(sched.swap_cycle(f1 - 1) + 1);
+  }
+}
+
+// --vcd-lines or --vcd-time-us as a span of the run's simulated time, ps (none: neither given, or no --vcd).
+std::optional<std::pair<int64_t, int64_t>> Session::vcd_option_window() const {
+  const OutputSpec& o = spec_.out;
+  if (o.vcd.empty()) return std::nullopt;
   if (!o.vcd_lines.empty()) {
     const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);
     if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", o.vcd_lines, "lines must be whole numbers >= 0");
@@ -615,9 +633,9 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
     if (l1 > static_cast<double>(lines))
       throw InputError("--vcd-lines", o.vcd_lines, "the run has " + std::to_string(lines) + " scan lines (--frames " +
                                                        std::to_string(spec_.frames) + "): END must be at most that");
-    opt.vcd.from_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * h);
-    opt.vcd.to_ps = timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * h);
-  } else if (!o.vcd_time_us.empty()) {
+    return std::pair{timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * h), timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * h)};
+  }
+  if (!o.vcd_time_us.empty()) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     // Within the run's simulated time, compared before rounding to picoseconds (a window past int64's
     // picoseconds wrapped, and was called shorter than one).
@@ -627,17 +645,12 @@ void Session::build_outputs(scm::TimedRunOptions& opt) {
       throw InputError("--vcd-time-us", o.vcd_time_us,
                        "the window must lie within the run's simulated time, " + printf_text("%.3f", static_cast<double>(start_ps) * 1e-6) +
                            " .. " + printf_text("%.3f", static_cast<double>(end_ps) * 1e-6) + " us (--first-frame, --frames)");
-    opt.vcd.from_ps = static_cast<int64_t>(std::llround(t0 * 1e6));
-    opt.vcd.to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
-    if (opt.vcd.to_ps <= opt.vcd.from_ps)
+    const int64_t from_ps = static_cast<int64_t>(std::llround(t0 * 1e6)), to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
+    if (to_ps <= from_ps)
       throw InputError("--vcd-time-us", o.vcd_time_us, "the window is shorter than the simulation's picosecond: nothing to trace");
-  } else if (!timed_frames_.every_frame()) {
-    // With detailed windows: the first window (its warm-up frames too), from the vertical blank before it to the one after it.
-    const dp::PipelineSchedule sched(spec_.config);
-    const auto [f0, f1] = timed_frames_.windows().front();
-    opt.vcd.from_ps = timing_.cycles_to_ps(sched.swap_cycle(f0 - 1));
-    opt.vcd.to_ps = timing_.cycles_to_ps(sched.swap_cycle(f1 - 1) + 1);
+    return std::pair{from_ps, to_ps};
   }
+  return std::nullopt;
 }
 
 // --stall STAGE:CLOCK:CYCLES, CLOCK counted from the first frame's first active pixel.
@@ -737,7 +750,7 @@ RunSummary Session::run() {
   in.first_frame = spec_.first_frame;
   in.frames = spec_.frames;
   in.timed_frames = timed_frames_;
-  in.stalls = stall_windows();
+  in.stalls = stalls_;
   if (live_) build_live_input(in);
   if (host_)
     in.before_frame = [this](int64_t frame, double tt) {

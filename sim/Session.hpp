@@ -74,11 +74,15 @@ class Session {
   void build_live_input(stage::TimedInputs& in);
   void build_outputs(scm::TimedRunOptions& opt);
   std::vector<stage::StallWindow> stall_windows() const;
+  std::optional<std::pair<int64_t, int64_t>> vcd_option_window() const;
   void on_scanned_out(const HmdFrame& f, const stage::FrameReport& r);
 
   RunSpec spec_;
   scm::Fidelity fidelity_ = scm::Fidelity::Functional;
   stage::FrameWindows timed_frames_;
+  // --stall's windows and --vcd-lines' or --vcd-time-us' span (ps), checked with the options, before any work.
+  std::vector<stage::StallWindow> stalls_;
+  std::optional<std::pair<int64_t, int64_t>> vcd_window_;
   std::vector<stage::FrameWindows::Window> detail_windows_;  // --detail's, counted from the first frame
   bool auto_detail_ = false;                                   // --detail auto
   int64_t auto_fast_frames_ = 0, auto_stall_frames_ = 0;
