@@ -61,8 +61,9 @@ LiveLoop::LiveLoop(const LiveSpec& spec)
   contents.fill(mem_, dp::Quat{}, memory_source_, spec_.threads);
   wall0_ = Clock::now();
   if (usb_) {
-    std::vector<tracker::PoseSample> before;  // sent while the loop was being set up
-    usb_offset_ = live_start_offset(*usb_, 0, before);
+    const LiveStart start = live_start(*usb_, 0);
+    usb_offset_ = start.offset_ps;
+    if (start.pose) append_live_poses(stream_, {*start.pose}, usb_offset_, source_name_);  // where the head is at the start
   }
 }
 

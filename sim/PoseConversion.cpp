@@ -28,10 +28,17 @@ int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<track
   return static_cast<int64_t>(more.size());
 }
 
-int64_t live_start_offset(tracker::PoseSource& live, int64_t start_ps, std::vector<tracker::PoseSample>& before) {
-  const size_t had = before.size();
-  live.poll(before, 0);
-  return start_ps - (before.size() > had ? before.back().time_ps : live.now_ps());
+LiveStart live_start(tracker::PoseSource& live, int64_t start_ps) {
+  std::vector<tracker::PoseSample> got;
+  live.poll(got, 0);
+  LiveStart s;
+  s.offset_ps = start_ps - (!got.empty() && live.connected() ? got.back().time_ps : live.now_ps());
+  if (!got.empty()) {
+    s.pose = got.back();
+    s.pose->time_ps = start_ps - s.offset_ps;
+    s.before = static_cast<int64_t>(got.size()) - 1;
+  }
+  return s;
 }
 
 }  // namespace arp::sim

@@ -550,11 +550,21 @@ void Session::build_memories() {
 // unplug holds the last pose and the run goes on.
 void Session::build_live_input(stage::TimedInputs& in) {
   const auto wall0 = Clock::now();
-  std::vector<tracker::PoseSample> before;
-  const int64_t offset_ps = live_start_offset(*live_, start_ps_, before);
-  live_before_start_ += static_cast<int64_t>(before.size());
+  const LiveStart start = live_start(*live_, start_ps_);
+  const int64_t offset_ps = start.offset_ps;
+  // What the run takes, as it takes it: appended in order (--record-live writes it); anything earlier than the
+  // stream holds is counted with what was received before the start.
+  auto take = [this, offset_ps](const std::vector<tracker::PoseSample>& got) {
+    std::vector<tracker::PoseSample> taken;
+    const int64_t appended = append_live_poses(stream_, got, offset_ps, motion_source_, live_record_ ? &taken : nullptr);
+    for (const auto& p : taken) live_record_->append(p);
+    live_samples_ += appended;
+    live_before_start_ += static_cast<int64_t>(got.size()) - appended;
+  };
+  live_before_start_ += start.before;
+  if (start.pose) take({*start.pose});  // the run starts where the head is (not at the identity until the next sample)
   auto got = std::make_shared<std::vector<tracker::PoseSample>>();
-  in.before_frame = [this, wall0, offset_ps, got](int64_t frame, double) {
+  in.before_frame = [this, wall0, got, take](int64_t frame, double) {
     const int64_t until_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1)) - start_ps_;
     for (;;) {
       const auto wall_ps = static_cast<int64_t>(std::chrono::duration<double>(Clock::now() - wall0).count() * 1e12);
@@ -571,11 +581,7 @@ void Session::build_live_input(stage::TimedInputs& in) {
     // (placed by device time, so later frames find it), or the samples would wait in the stream's bound.
     live_->poll(*got, 0);
     for (const auto& e : live_->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
-    std::vector<tracker::PoseSample> taken;
-    const int64_t appended = append_live_poses(stream_, *got, offset_ps, motion_source_, live_record_ ? &taken : nullptr);
-    for (const auto& p : taken) live_record_->append(p);
-    live_samples_ += appended;
-    live_before_start_ += static_cast<int64_t>(got->size()) - appended;  // (earlier than the stream holds: counted with those)
+    take(*got);
     got->clear();
   };
 }

@@ -208,34 +208,33 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
 TEST(RiftCommand, ATransportSlowerThanTheDeviceStillFeedsTheRun) {
   const auto truth = yaw_90(30.0);
   test::RiftEmulator dk1(RiftModel::DK1, truth);
-  constexpr double kPerSecond = 100;  // a tenth of the device's rate
+  constexpr int kPerSecond = 100;  // a tenth of the device's rate
   dk1.slow_transport(kPerSecond);
   arp::test::TempDir d;
   constexpr int kFrames = 30;
+  // (A 64 x 48 display at 60 Hz: 224 x 93 clocks a frame.)
   const auto run = arp::test::run_command(arp::test::kArpsim + " run -q --live usb --frames " + std::to_string(kFrames) +
                                           " --every 0 --set display.h_active=64 --set display.v_active=48 --set display.pixel_clock_hz=1249920 --report " +
-                                          d.file("r.json") +
-                                          " --record-live " + d.file("taken.csv"));
+                                          d.file("r.json") + " --record-live " + d.file("taken.csv"));
   ASSERT_EQ(run.status, 0) << run.output;
   const std::string all = read_text(d.file("r.json"));
   ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
   const std::string rep = all.substr(all.find("\"live\""));
   const int64_t taken = json_int(rep, "samples"), before = json_int(rep, "samples_before_start"), after = json_int(rep, "samples_after_end"),
                 sent = json_int(rep, "device_samples");
-  EXPECT_EQ(taken + before + after, sent) << rep;
-  // (A 64 x 48 display at 60 Hz: 224 x 93 clocks a frame.) A live run goes at the display's pace or slower:
-  // its frames span at least (frames - 1) / 60 s of wall
-  // time, in which the transport hands over kPerSecond a second; all but the last frame's are taken during
-  // the run (the last frame's are the drain's). Less a frame's worth for the edges.
-  const double during = kPerSecond * (kFrames - 2) / 60.0;
-  ASSERT_GE(static_cast<double>(taken), during) << rep << run.output;
+  EXPECT_GE(taken + before + after, sent) << rep;  // (the device's count is read before the last drain)
+  // A live run goes at the display's pace or slower: it takes what arrives for kFrames / 60 s at least, up to
+  // kPerSecond a second -- 50 samples, fewer from an emulator starved further. A fifth of that is the bound:
+  // the old rule took none (measured: 0 here, 0 of 1 300 on the loaded CI machine).
+  ASSERT_GE(taken, kPerSecond * kFrames / 60 / 5) << rep << run.output;
   const auto took = read_trace_csv(d.file("taken.csv"));
   ASSERT_EQ(static_cast<int64_t>(took.size()), taken);
-  // In the device's order from the one after the last received before the start, on its 1 ms steps; the
-  // first 1 ms after the start (less while the clock sheds the first report's latency).
+  // In the device's order from the last received before the start, which is at the start; then on the
+  // device's 1 ms steps (less while the clock sheds the first report's latency).
   ASSERT_NO_FATAL_FAILURE(expect_device_steps(took));
-  EXPECT_GT(took.front().time_ps, 0);
-  EXPECT_LE(took.front().time_ps, 1'000'000'000);
+  EXPECT_EQ(took[0].time_ps, 0);
+  EXPECT_GT(took[1].time_ps, 0);
+  EXPECT_LE(took[1].time_ps, 1'000'000'000);
   for (size_t i = 0; i < took.size(); ++i) {
     const size_t j = static_cast<size_t>(before) + i + 1;
     ASSERT_LT(j, truth.size());

@@ -126,7 +126,7 @@ struct RiftEmulator::State {
   int64_t delivered_at_start = 0;
   int64_t keep_alive_until_ps = 0;
   int64_t deliver_from_ps = 0;  // nothing is handed over before this (delay_delivery)
-  double transport_per_s = 0;   // > 0: at most this many reports a second are handed over (slow_transport)
+  int64_t transport_per_s = 0;  // > 0: at most this many reports a second are handed over (slow_transport)
   bool drained = false;         // a reap found nothing since the last report handed over
   bool withholding_new = false;  // withhold_transfers() until replug(): new submissions are withheld too
 
@@ -143,8 +143,11 @@ struct RiftEmulator::State {
     const int64_t until = std::min(now, keep_alive_until_ps);
     if (until < streaming_since_ps) return sent;
     int64_t owed = delivered_at_start + (until - streaming_since_ps) / 1'000'000'000 + 1;
-    if (transport_per_s > 0)  // the rest wait: the device's time falls ever further behind the host's
-      owed = std::min(owed, delivered_at_start + static_cast<int64_t>(static_cast<double>(until - streaming_since_ps) * 1e-12 * transport_per_s) + 1);
+    if (transport_per_s > 0) {  // the rest wait: the device's time falls ever further behind the host's
+      constexpr int64_t kSecondPs = 1'000'000'000'000;
+      const int64_t t = until - streaming_since_ps;  // (whole seconds, then the rest: no product past int64)
+      owed = std::min(owed, delivered_at_start + t / kSecondPs * transport_per_s + t % kSecondPs * transport_per_s / kSecondPs + 1);
+    }
     return std::max(sent, std::min(owed, static_cast<int64_t>(reports.size())));
   }
   bool report_due(int64_t now) const { return sent < due(now); }
@@ -478,7 +481,8 @@ auto RiftEmulator::locked(F&& fn) const {
 void RiftEmulator::jump_counter(int64_t ticks) {
   locked([&](State& s) { s.counter_shift += static_cast<uint64_t>(ticks); });
 }
-void RiftEmulator::slow_transport(double reports_per_s) {
+void RiftEmulator::slow_transport(int reports_per_s) {
+  if (reports_per_s < 0 || reports_per_s > 1'000'000) throw std::invalid_argument("slow_transport: 0 .. 1000000 reports a second");
   locked([&](State& s) { s.transport_per_s = reports_per_s; });
 }
 

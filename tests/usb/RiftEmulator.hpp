@@ -86,7 +86,7 @@ class RiftEmulator {
   // A transport slower than the device (what an emulator starved of CPU is): at most `reports_per_s`
   // reports a second are handed over, the others wait in order, so the device's time falls ever further
   // behind the host's. 0: none held back.
-  void slow_transport(double reports_per_s);
+  void slow_transport(int reports_per_s);
   // A hung host controller: the interrupt transfers in flight now, and those submitted until replug(), are
   // never completed -- not by a report, not when discarded, not when unplugged -- until give_back()
   // completes them as cancelled.
