@@ -148,6 +148,37 @@ double json_double(const std::string& text, const std::string& key) {
   const size_t at = text.find("\"" + key + "\": ");
   return at == std::string::npos ? -1.0 : std::stod(text.substr(at + key.size() + 4));
 }
+
+// A live run's report: its "live" object (empty if none) and the counts every sample is accounted by.
+struct LiveCounts {
+  std::string rep;
+  int64_t taken = -1, before = -1, after = -1, sent = -1, dropped = -1;
+};
+LiveCounts read_live_report(const std::string& path) {
+  const std::string all = read_text(path);
+  const size_t at = all.find("\"live\"");
+  if (at == std::string::npos) return {};
+  LiveCounts c;
+  c.rep = all.substr(at);
+  c.taken = json_int(c.rep, "samples");
+  c.before = json_int(c.rep, "samples_before_start");
+  c.after = json_int(c.rep, "samples_after_end");
+  c.sent = json_int(c.rep, "device_samples");
+  c.dropped = json_int(c.rep, "device_dropped_unconsumed");
+  return c;
+}
+
+// What the pipeline took (--record-live), each the device's next sample: sample j of the device fused is the
+// motion after j + 1 ms, the first taken being the device's sample `before` (the last received before the start).
+void expect_took_the_device_in_order(const std::vector<tracker::PoseSample>& took, int64_t before,
+                                     const std::vector<tracker::PoseSample>& truth) {
+  for (size_t i = 0; i < took.size(); ++i) {
+    const size_t j = static_cast<size_t>(before) + i + 1;
+    ASSERT_LT(j, truth.size());
+    // (0.01 deg: measured 1.3e-4; one sample off is 0.09 deg at 90 deg/s)
+    ASSERT_LT(angle_between_deg(took[i].orientation, truth[j].orientation), 0.01) << i;
+  }
+}
 }  // namespace
 
 // A run slower than the display (the functional model at its default size renders ~15 frames a second
@@ -160,11 +191,10 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   const auto run = arp::test::run_command(arp::test::kArpsim + " run -q --live usb --frames 20 --every 0 --report " +
                                           d.file("slow.json") + " --record-live " + d.file("taken.csv"));
   ASSERT_EQ(run.status, 0) << run.output;
-  const std::string all = read_text(d.file("slow.json"));
-  ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
-  const std::string rep = all.substr(all.find("\"live\""));
-  const int64_t taken = json_int(rep, "samples"), before = json_int(rep, "samples_before_start"), after = json_int(rep, "samples_after_end"),
-                sent = json_int(rep, "device_samples"), dropped = json_int(rep, "device_dropped_unconsumed");
+  const LiveCounts c = read_live_report(d.file("slow.json"));
+  ASSERT_FALSE(c.rep.empty()) << read_text(d.file("slow.json"));
+  const std::string& rep = c.rep;
+  const int64_t taken = c.taken, before = c.before, after = c.after, sent = c.sent, dropped = c.dropped;
   ASSERT_GT(sent, 100) << rep.substr(0, 800);
   EXPECT_EQ(dropped, 0);
   EXPECT_GE(taken + before + after + dropped, sent);  // every sample accounted for
@@ -177,12 +207,7 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   ASSERT_EQ(static_cast<int64_t>(took.size()), taken);
   EXPECT_EQ(json_int(rep, "samples", "recorded"), taken);
   ASSERT_NO_FATAL_FAILURE(expect_device_steps(took));
-  for (size_t i = 0; i < took.size(); ++i) {
-    const size_t j = static_cast<size_t>(before) + i + 1;
-    ASSERT_LT(j, truth.size());
-    // (0.01 deg: measured 1.3e-4; one sample off is 0.09 deg at 90 deg/s)
-    ASSERT_LT(angle_between_deg(took[i].orientation, truth[j].orientation), 0.01) << i;
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_took_the_device_in_order(took, before, truth));
   // Received during the run, not only by the drain after its end: what is left for the drain is what the
   // stream fused during the last frame and the report (before, a late frame took nothing, and the drain
   // would hold everything fused after the first frame). Holds at any pace: a starved stream fuses late,
@@ -217,12 +242,11 @@ TEST(RiftCommand, ATransportSlowerThanTheDeviceStillFeedsTheRun) {
                                           " --every 0 --set display.h_active=64 --set display.v_active=48 --set display.pixel_clock_hz=1249920 --report " +
                                           d.file("r.json") + " --record-live " + d.file("taken.csv"));
   ASSERT_EQ(run.status, 0) << run.output;
-  const std::string all = read_text(d.file("r.json"));
-  ASSERT_NE(all.find("\"live\""), std::string::npos) << all;
-  const std::string rep = all.substr(all.find("\"live\""));
-  const int64_t taken = json_int(rep, "samples"), before = json_int(rep, "samples_before_start"), after = json_int(rep, "samples_after_end"),
-                sent = json_int(rep, "device_samples");
-  EXPECT_GE(taken + before + after, sent) << rep;  // (the device's count is read before the last drain)
+  const LiveCounts c = read_live_report(d.file("r.json"));
+  ASSERT_FALSE(c.rep.empty()) << read_text(d.file("r.json"));
+  const std::string& rep = c.rep;
+  const int64_t taken = c.taken, before = c.before;
+  EXPECT_GE(c.taken + c.before + c.after + c.dropped, c.sent) << rep;  // (the device's count is read before the last drain)
   // A live run goes at the display's pace or slower: it takes what arrives for kFrames / 60 s at least, up to
   // kPerSecond a second -- 50 samples, fewer from an emulator starved further. A fifth of that is the bound:
   // the old rule took none (measured: 0 here, 0 of 1 300 on the loaded CI machine).
@@ -235,11 +259,7 @@ TEST(RiftCommand, ATransportSlowerThanTheDeviceStillFeedsTheRun) {
   EXPECT_EQ(took[0].time_ps, 0);
   EXPECT_GT(took[1].time_ps, 0);
   EXPECT_LE(took[1].time_ps, 1'000'000'000);
-  for (size_t i = 0; i < took.size(); ++i) {
-    const size_t j = static_cast<size_t>(before) + i + 1;
-    ASSERT_LT(j, truth.size());
-    ASSERT_LT(angle_between_deg(took[i].orientation, truth[j].orientation), 0.01) << i;
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_took_the_device_in_order(took, before, truth));
 }
 
 // Two trackers on the command line: the list tells them apart and says what to
