@@ -178,10 +178,10 @@ Session::Session(RunSpec spec)
     throw InputError("--fidelity", spec_.fidelity, "must be functional, lt, cycle, detailed (rtl) or verilated");
   build_detail_windows();
   check_spec(spec_, fidelity_);
-  stalls_ = stall_windows();  // (a bad window was refused only after the memories were filled: 0.7 s)
-  vcd_window_ = vcd_option_window();
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
+  stalls_ = stall_windows();  // (a bad window was refused only after the memories were filled: 0.7 s)
+  vcd_window_ = vcd_option_window();
   build_motion();
   build_memories();
 }
@@ -229,7 +229,6 @@ void Session::build_detail_windows() {
 // by hand; with the warm-up frames before each, as absolute frames.
 void Session::add_auto_detail() {
   if (spec_.detail.empty()) return;
-  const std::vector<stage::StallWindow>& stalls = stalls_;
   std::vector<stage::FrameWindows::Window> w = detail_windows_;
   if (auto_detail_) {
     const std::vector<double> v = frame_speeds_dps();
@@ -239,7 +238,7 @@ void Session::add_auto_detail() {
         ++auto_fast_frames_;
       }
     std::set<int64_t> stalled;
-    for (const stage::StallWindow& st : stalls)
+    for (const stage::StallWindow& st : stalls_)
       for (auto [k, end] = stall_frames(st); k < end; ++k) stalled.insert(k);
     for (const int64_t k : stalled) w.push_back({k, k + 1});
     auto_stall_frames_ = static_cast<int64_t>(stalled.size());
@@ -253,8 +252,8 @@ void Session::add_auto_detail() {
     throw InputError("--vcd", spec_.out.vcd, "--detail auto found no frame to detail (no head speed over --detail-speed-dps, no --stall): "
                                              "no detailed clock to trace; name a window (--detail START:END) or leave --vcd out");
   // A stall reaching a functional frame would stall nothing there, or lose what it pushed into it: said, not ignored.
-  for (size_t i = 0; i < stalls.size(); ++i) {
-    const auto [k0, k1] = stall_frames(stalls[i]);
+  for (size_t i = 0; i < stalls_.size(); ++i) {
+    const auto [k0, k1] = stall_frames(stalls_[i]);
     for (int64_t k = k0; k < k1; ++k)
       if (!timed_frames_.contains(spec_.first_frame + k))
         throw InputError("--stall", spec_.stalls[i],
@@ -645,12 +644,10 @@ std::optional<std::pair<int64_t, int64_t>> Session::vcd_option_window() const {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     // Within the run's simulated time, compared before rounding to picoseconds (a window past int64's
     // picoseconds wrapped, and was called shorter than one).
-    const int64_t start_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
-    const int64_t end_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
-    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps) || t1 * 1e6 <= static_cast<double>(start_ps))
+    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps_) || t1 * 1e6 <= static_cast<double>(start_ps_))
       throw InputError("--vcd-time-us", o.vcd_time_us,
-                       "the window must lie within the run's simulated time, " + printf_text("%.3f", static_cast<double>(start_ps) * 1e-6) +
-                           " .. " + printf_text("%.3f", static_cast<double>(end_ps) * 1e-6) + " us (--first-frame, --frames)");
+                       "the window must lie within the run's simulated time, " + printf_text("%.3f", static_cast<double>(start_ps_) * 1e-6) +
+                           " .. " + printf_text("%.3f", static_cast<double>(end_ps_) * 1e-6) + " us (--first-frame, --frames)");
     const int64_t from_ps = static_cast<int64_t>(std::llround(t0 * 1e6)), to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
     if (to_ps <= from_ps)
       throw InputError("--vcd-time-us", o.vcd_time_us, "the window is shorter than the simulation's picosecond: nothing to trace");
