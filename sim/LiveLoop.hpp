@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "LiveIntake.hpp"
 #include "MemoryContents.hpp"
 #include "rtl_model/functional/FunctionalModel.hpp"
 #include "tracker/PoseSource.hpp"
@@ -28,6 +29,7 @@ struct LiveSpec {
     return m;
   }();
   std::string trace, live;     // --trace FILE, --live usb
+  std::string record_live;     // --record-live FILE: the live motion the loop took, as a trace (replays with run --trace)
   tracker::TrackerChoice tracker;  // --device, --mag-yaw, --mag-calibrate
   double seconds = 0;          // 0: until stopped
   int threads = 0;
@@ -38,7 +40,7 @@ struct LiveFrame {
   const HmdFrame* frame = nullptr;
   double render_ms = 0;
   int64_t latency_min_ps = 0, latency_median_ps = 0, latency_max_ps = 0;  // over a grid of pixels
-  bool late = false;          // shown more than a period after it was due
+  int64_t dropped = 0;        // frames skipped just before this one to keep up with the display's pace
   bool disconnected = false;  // the tracker is unplugged: its last pose is held
 };
 
@@ -46,21 +48,33 @@ class LiveLoop {
  public:
   // InputError for bad options, a missing trace, or no tracker to open.
   explicit LiveLoop(const LiveSpec& spec);
+  // With a live source of the caller's (spec.live empty): another device, or a test's.
+  LiveLoop(const LiveSpec& spec, std::unique_ptr<tracker::PoseSource> live);
   ~LiveLoop();
 
   const std::string& source_name() const { return source_name_; }
   const std::string& memory_source() const { return memory_source_; }
   double refresh_hz() const { return model_.timing().refresh_hz(); }
   const dp::ArpConfig& config() const { return spec_.config; }
-  // How many frames the loop shows (INT64_MAX: until the caller stops).
+  // How many frames the display shows over the loop (INT64_MAX: until the caller stops).
   int64_t frames() const { return frames_; }
-  // The next frame: waits for its display time (taking tracker samples meanwhile), then renders it.
+  // The next frame: waits for its display time (taking tracker samples meanwhile), then renders it. The
+  // loop's clock starts at the first call (a window opened after the constructor does not put it behind).
+  // More than a frame behind, it skips to the latest frame due (dropped, never samples): the last frame
+  // is always shown.
   LiveFrame next();
+  bool finished() const { return next_ >= frames_; }
   // Tracker events since the last call (unplug, replug, ...).
   std::vector<std::string> take_events();
-  int64_t late_frames() const { return late_; }
+  int64_t dropped_frames() const { return dropped_; }
+  int64_t shown_frames() const { return next_ - dropped_; }
   // Orientation samples held in memory now (the window around the frame, not the whole motion).
   size_t samples_held() const { return stream_.held(); }
+  // Live input: the samples taken so far, and how many were received before the start.
+  int64_t live_samples() const { return intake_ ? intake_->taken() : 0; }
+  int64_t live_samples_before_start() const { return intake_ ? intake_->before_start() : 0; }
+  // Writes --record-live's trace (what was taken up to now); without a call nothing is left behind.
+  void commit_record();
 
  private:
   LiveSpec spec_;
@@ -68,16 +82,19 @@ class LiveLoop {
   int64_t frames_;
   int64_t frame_start_ps(int64_t k) const;
 
-  std::unique_ptr<tracker::PoseSource> source_;    // a trace or USB
+  std::unique_ptr<tracker::PoseSource> source_;    // a trace, or live (USB, or the caller's)
   std::unique_ptr<tracker::MotionGenerator> motion_;  // or synthetic motion, generated as the frames need it
-  tracker::PoseSource* usb_ = nullptr;
+  tracker::PoseSource* live_ = nullptr;  // source_ when it is live (USB)
+  std::unique_ptr<LiveIntake> intake_;  // what is taken from live_
   std::string source_name_, memory_source_;
   dp::OrientationStream stream_;
   dp::DisplayMemorySet mem_;
   std::vector<tracker::PoseSample> got_;
   HmdFrame frame_;
   std::chrono::steady_clock::time_point wall0_;
-  int64_t usb_offset_ = 0, next_ = 0, late_ = 0;
+  void start_clock();
+  bool started_ = false;
+  int64_t next_ = 0, dropped_ = 0;
 };
 
 }  // namespace arp::sim

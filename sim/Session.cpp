@@ -365,11 +365,10 @@ void Session::build_motion() {
   add_auto_detail();  // from the motion afresh: before extend_motion hands a trace's poses to the run
   more_poses_ = pose_source(true);
   if (walk_) motion_source_ = (h.walk == "gallery" ? std::string("gallery walk") : h.walk) + " with " + motion_source_;
-  if (!spec_.record_live.empty() && spec_.live.empty())
-    throw InputError("--record-live", spec_.record_live, "records the motion of live input: use it with --live usb");
+  check_record_live(spec_.record_live, !spec_.live.empty());
   if ((live_ = tracker::live_source(spec_.live, spec_.tracker))) motion_source_ = "live " + live_->describe();
   // Opened before any work: an unwritable path is said now, not after the run.
-  if (live_ && !spec_.record_live.empty()) live_record_ = std::make_unique<tracker::TraceWriter>(spec_.record_live, false);
+  if (live_) live_intake_ = std::make_unique<LiveIntake>(*live_, spec_.record_live);
   // Live input appends to the stream as it arrives: generated motion is then made whole first.
   const int64_t frame_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + 1)) - start_ps_;
   extend_motion(live_ ? INT64_MAX : plus_saturated(start_ps_, 3 * frame_ps + kPsPerSecond));
@@ -549,21 +548,9 @@ void Session::build_memories() {
 // unplug holds the last pose and the run goes on.
 void Session::build_live_input(stage::TimedInputs& in) {
   const auto wall0 = Clock::now();
-  const LiveStart start = live_start(*live_, start_ps_);
-  const int64_t offset_ps = start.offset_ps;
-  // What the run takes, as it takes it: appended in order (--record-live writes it); anything earlier than the
-  // stream holds is counted with what was received before the start.
-  auto take = [this, offset_ps](const std::vector<tracker::PoseSample>& got) {
-    std::vector<tracker::PoseSample> taken;
-    const int64_t appended = append_live_poses(stream_, got, offset_ps, motion_source_, live_record_ ? &taken : nullptr);
-    for (const auto& p : taken) live_record_->append(p);
-    live_samples_ += appended;
-    live_before_start_ += static_cast<int64_t>(got.size()) - appended;
-  };
-  live_before_start_ += start.before;
-  if (start.pose) take({*start.pose});  // the run starts where the head is (not at the identity until the next sample)
+  live_intake_->start(stream_, start_ps_, motion_source_);
   auto got = std::make_shared<std::vector<tracker::PoseSample>>();
-  in.before_frame = [this, wall0, got, take](int64_t frame, double) {
+  in.before_frame = [this, wall0, got](int64_t frame, double) {
     const int64_t until_ps = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1)) - start_ps_;
     for (;;) {
       const auto wall_ps = static_cast<int64_t>(std::chrono::duration<double>(Clock::now() - wall0).count() * 1e12);
@@ -580,7 +567,7 @@ void Session::build_live_input(stage::TimedInputs& in) {
     // (placed by device time, so later frames find it), or the samples would wait in the stream's bound.
     live_->poll(*got, 0);
     for (const auto& e : live_->take_events()) std::fprintf(stderr, "arpsim run: live input %s\n", e.c_str());
-    take(*got);
+    live_intake_->take(stream_, *got, motion_source_);
     got->clear();
   };
 }
@@ -978,17 +965,17 @@ RunSummary Session::run() {
     std::vector<tracker::PoseSample> rest;
     live_->poll(rest, 0);
     r["live"] = {{"source", motion_source_},
-                 {"samples", live_samples_},
-                 {"samples_before_start", live_before_start_},
+                 {"samples", live_intake_->taken()},
+                 {"samples_before_start", live_intake_->before_start()},
                  {"samples_after_end", rest.size()}};
     tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });
     r["live"]["device_gap_s"] = st.gap_s;
     r["live"]["behind_max_s"] = static_cast<double>(live_behind_max_ps_) * 1e-12;
     r["live"]["behind_at_end_s"] = static_cast<double>(live_behind_ps_) * 1e-12;
     r["live"]["connected_at_end"] = live_->connected();
-    if (live_record_) {
-      r["live"]["recorded"] = {{"file", spec_.record_live}, {"samples", live_record_->written()}};
-      live_record_->commit();
+    if (live_intake_->recording()) {
+      r["live"]["recorded"] = {{"file", spec_.record_live}, {"samples", live_intake_->recorded()}};
+      live_intake_->commit_record();
     }
   }
   if (host_) {

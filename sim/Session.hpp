@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "HostReport.hpp"
+#include "LiveIntake.hpp"
 #include "RunReport.hpp"
 #include "RunSpec.hpp"
 #include "host/motion/WalkPath.hpp"
@@ -99,7 +100,7 @@ class Session {
   std::vector<std::string> motion_notes_;
   std::unique_ptr<host::WalkPath> walk_;
   std::unique_ptr<tracker::PoseSource> live_;
-  std::unique_ptr<tracker::TraceWriter> live_record_;  // --record-live: written as the samples are taken
+  std::unique_ptr<LiveIntake> live_intake_;  // what the run takes from live_, recorded (--record-live) and counted
   dp::OrientationStream stream_;
   dp::DisplayMemorySet memories_;
   std::unique_ptr<host::Scene> scene_;
@@ -110,7 +111,7 @@ class Session {
   std::unique_ptr<TruthProbe> probe_;
   std::unique_ptr<FrameLog> log_;
   std::string vcd_final_, vcd_tmp_base_;
-  int64_t images_ = 0, live_samples_ = 0, live_before_start_ = 0, baseline_triangles_ = 0;
+  int64_t images_ = 0, baseline_triangles_ = 0;
   int64_t live_behind_ps_ = 0, live_behind_max_ps_ = 0;  // how far the run's frames lag the tracker's clock
   std::string live_lag_text() const;
   double host_wall_s_ = 0;

@@ -22,7 +22,7 @@ TEST(LiveLoop, SyntheticMotionUntilStoppedIsGeneratedAsNeeded) {
   size_t most_held = 0;
   for (int k = 0; k < 6; ++k) {
     const sim::LiveFrame f = loop.next();
-    EXPECT_EQ(f.index, k);
+    EXPECT_GE(f.index, k);  // (later when it fell behind: frames are dropped to keep up)
     // Every pixel latched a sample of the motion shortly before its photon (the motion covers the frame).
     EXPECT_GE(f.latency_min_ps, 0);
     EXPECT_LT(f.latency_max_ps, 100'000'000'000) << k;  // < 100 ms: a 1 kHz motion, never a stale held pose
@@ -74,4 +74,127 @@ TEST(LiveLoop, ADeviceWithoutLiveInputIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("give --mag-yaw GAIN too"), std::string::npos) << e.what();
   }
+}
+
+#include <chrono>
+#include <glm/gtc/quaternion.hpp>
+#include <thread>
+
+#include "TestSupport.hpp"
+#include "tracker/TraceFile.hpp"
+
+namespace {
+
+// A live source of the test's: a head turning about y at 90 deg/s, sampled at 10 kHz on the wall clock
+// since its creation (ten times a DK1's rate, so the loop's window is reached in a short test).
+class WallClockTurn : public tracker::PoseSource {
+ public:
+  static constexpr int64_t kStepPs = 100'000'000;  // 0.1 ms
+  std::string describe() const override { return "test turn"; }
+  bool live() const override { return true; }
+  int64_t now_ps() const override {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0_).count() * 1000;
+  }
+  void poll(std::vector<tracker::PoseSample>& out, int timeout_ms) override {
+    if (now_ps() < next_ * kStepPs) std::this_thread::sleep_for(std::chrono::milliseconds(timeout_ms));
+    for (const int64_t now = now_ps(); next_ * kStepPs <= now; ++next_) out.push_back(sample(next_));
+  }
+  std::vector<std::string> take_events() override { return {}; }
+  static tracker::PoseSample sample(int64_t j) {
+    tracker::PoseSample p;
+    p.time_ps = j * kStepPs;
+    p.orientation = glm::angleAxis(glm::radians(90.0) * static_cast<double>(p.time_ps) * 1e-12, glm::dvec3(0, 1, 0));
+    return p;
+  }
+  int64_t sent() const { return next_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point t0_ = Clock::now();
+  int64_t next_ = 0;
+};
+
+}  // namespace
+
+// A live source is taken as it arrives, in order from the last sample received before the start, recorded
+// as taken (--record-live), and held only a second behind the frame: a tracker's samples held whole would
+// grow without bound (144 MB an hour at 1 kHz), as the loop held them until 2026-11-28.
+TEST(LiveLoop, ALiveSourceIsTakenInOrderRecordedAndHeldInAWindow) {
+  arp::test::TempDir d;
+  sim::LiveSpec s;
+  // (A 64 x 48 display at 60 Hz: 224 x 93 clocks a frame.)
+  s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48", "display.pixel_clock_hz=1249920"});
+  s.memories.scene = "";
+  s.seconds = 2.0;
+  s.record_live = d.file("took.csv");
+  auto owned = std::make_unique<WallClockTurn>();
+  const WallClockTurn& turn = *owned;
+  sim::LiveLoop loop(s, std::move(owned));
+  EXPECT_EQ(loop.source_name(), "test turn");
+  // A second behind frame k, up to when it is shown (the end of frame k + 1, or a frame later when it is late).
+  const double window = 1.0 + 3.0 / loop.refresh_hz();
+  size_t most_held = 0;
+  while (!loop.finished()) {
+    const sim::LiveFrame f = loop.next();
+    EXPECT_LT(f.latency_max_ps, 100'000'000'000) << f.index;  // each pixel a fresh sample, never a stale held pose
+    most_held = std::max(most_held, loop.samples_held());
+  }
+  loop.commit_record();
+  const int64_t taken = loop.live_samples(), before = loop.live_samples_before_start();
+  // Two seconds of a 10 kHz source: taken whole (but what arrived after the last frame), held a second.
+  EXPECT_GE(taken + before, turn.sent() - 2000) << "sent " << turn.sent();
+  EXPECT_GT(taken, 14'000);
+  EXPECT_LE(static_cast<double>(most_held), window * 10'000 + 2) << "taken " << taken;
+  // What was taken, as recorded: the source's samples in order from the last received before the start,
+  // which is at the start; the rest on the source's 0.1 ms steps.
+  const auto took = tracker::read_trace_csv(d.file("took.csv"));
+  ASSERT_EQ(static_cast<int64_t>(took.size()), taken);
+  for (size_t i = 0; i < took.size(); ++i) {
+    const tracker::PoseSample want = WallClockTurn::sample(before + static_cast<int64_t>(i));
+    ASSERT_EQ(took[i].time_ps, static_cast<int64_t>(i) * WallClockTurn::kStepPs) << i;
+    // (17 digits give each double back; the trace reader normalises: an ulp apart)
+    for (int c = 0; c < 4; ++c) ASSERT_NEAR(took[i].orientation[c], want.orientation[c], 1e-15) << i;
+  }
+}
+
+// --record-live records live input: alone it is refused, naming it, before anything is opened.
+TEST(LiveLoop, RecordLiveWithoutLiveInputIsRefused) {
+  sim::LiveSpec s;
+  s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48"});
+  s.memories.scene = "";
+  s.record_live = "took.csv";
+  try {
+    sim::LiveLoop loop(s);
+    ADD_FAILURE() << "accepted --record-live without --live";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--record-live: took.csv: records the motion of live input"), std::string::npos) << e.what();
+  }
+}
+
+// The loop keeps the display's pace from its first frame: its clock starts there (not when it was built:
+// a window opened in between put every frame 0.3 s late), and a loop that fell behind shows the latest
+// frame due, dropping those in between (it used to show each in turn, late, and stayed behind for good).
+// The last frame is shown whatever happens.
+TEST(LiveLoop, ALoopBehindTheDisplayDropsFramesToCatchUp) {
+  sim::LiveSpec s;
+  s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48", "display.pixel_clock_hz=1249920"});
+  s.memories.scene = "";
+  s.seconds = 0.5;
+  sim::LiveLoop loop(s);
+  ASSERT_EQ(loop.frames(), 30);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a window being opened
+  const sim::LiveFrame first = loop.next();
+  EXPECT_EQ(first.index, 0);
+  EXPECT_EQ(first.dropped, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // a window slow to present: 12 periods
+  const sim::LiveFrame caught_up = loop.next();
+  EXPECT_GE(caught_up.index, 12);  // (frame k is due k + 1 periods after the first frame's start)
+  EXPECT_EQ(caught_up.dropped, caught_up.index - 1);
+  EXPECT_FALSE(loop.finished());
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // past the end
+  const sim::LiveFrame last = loop.next();
+  EXPECT_EQ(last.index, 29);
+  EXPECT_TRUE(loop.finished());
+  EXPECT_EQ(loop.dropped_frames(), 27);
+  EXPECT_EQ(loop.shown_frames(), 3);
 }

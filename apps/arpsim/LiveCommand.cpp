@@ -57,7 +57,7 @@ int run_live(LiveArgs& a) {
   std::vector<NamedPath> inputs = a.spec.memories.input_files();
   inputs.push_back({"--config", a.cfg.file});
   inputs.push_back({"--trace", a.spec.trace});
-  check_output_paths({{"--screenshot", a.screenshot}}, inputs);
+  check_output_paths({{"--screenshot", a.screenshot}, {"--record-live", a.spec.record_live}}, inputs);
   host::check_image_output("--screenshot", a.screenshot);
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER")) {
     std::fprintf(stderr, "arpsim live: no display to open a window on; run it on a desktop, or headless: xvfb-run -a arpsim live ...\n");
@@ -76,7 +76,7 @@ int run_live(LiveArgs& a) {
   int64_t shown = 0;
   double render_ms = 0;
   bool quit = false;
-  while (shown < loop.frames() && !quit) {
+  while (!loop.finished() && !quit) {
     const sim::LiveFrame f = loop.next();
     SDL_Event e;
     while (SDL_PollEvent(&e))
@@ -106,9 +106,14 @@ int run_live(LiveArgs& a) {
     if (!a.quiet && f.index % 30 == 0) std::fprintf(stderr, "\r  frame %" PRId64 "  %s", f.index, l2);
   }
   if (!a.quiet) std::fprintf(stderr, "\n");
-  std::printf("arpsim live: %" PRId64 " frames of %s at %.2f Hz (%" PRId64 " late), mean render %.2f ms%s%s\n", shown,
-              loop.source_name().c_str(), loop.refresh_hz(), loop.late_frames(), render_ms / static_cast<double>(std::max<int64_t>(1, shown)),
+  loop.commit_record();
+  std::printf("arpsim live: %" PRId64 " frames of %s at %.2f Hz (%" PRId64 " shown, %" PRId64 " dropped to keep up), mean render %.2f ms%s%s\n",
+              shown + loop.dropped_frames(), loop.source_name().c_str(), loop.refresh_hz(), shown, loop.dropped_frames(),
+              render_ms / static_cast<double>(std::max<int64_t>(1, shown)),
               a.screenshot.empty() ? "" : "; screenshot ", a.screenshot.c_str());
+  if (!a.spec.live.empty())
+    std::printf("arpsim live: %" PRId64 " tracker samples taken (%" PRId64 " received before the start)%s%s\n", loop.live_samples(),
+                loop.live_samples_before_start(), a.spec.record_live.empty() ? "" : "; recorded in ", a.spec.record_live.c_str());
   return 0;
 }
 
@@ -122,6 +127,7 @@ Runner add_live_command(CLI::App& app) {
   cmd->add_option("--trace", a->spec.trace, "Head motion from a trace file (CSV, docs/tracker.md)");
   cmd->add_option("--live", a->spec.live, "Head motion from a tracker: usb (an Oculus Rift DK1/DK2; --device chooses one)");
   add_device_option(*cmd, a->spec.tracker);
+  add_record_live_option(*cmd, a->spec.record_live);
   cmd->add_option("--seconds", a->spec.seconds, "Run this long (0: until the window is closed or Esc)")->capture_default_str();
   cmd->add_option("--scale", a->scale, "Window pixels per display pixel")->capture_default_str();
   cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)");

@@ -15,6 +15,12 @@ void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice) {
                "only once it is known (look around, up and down, for a minute)");
 }
 
+void add_record_live_option(CLI::App& cmd, std::string& path) {
+  cmd.add_option("--record-live", path,
+                 "With --live: write the motion the pipeline took (on the run's timeline) as a trace file, to replay it with "
+                 "`arpsim run --trace`");
+}
+
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bool shape_needs_motion) {
   auto* o = cmd.add_option("--motion", m.motion, "Synthetic motion: rotate (constant rate), shake (sinusoid), pendulum")
                 ->check(CLI::IsMember({"rotate", "shake", "pendulum"}));

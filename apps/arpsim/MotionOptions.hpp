@@ -15,5 +15,7 @@ void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bo
 // --device SERIAL|BUS:ADDR: which USB tracker, and --mag-yaw GAIN: its magnetometer's yaw correction
 // (tracker record, --live usb).
 void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice);
+// --record-live FILE (run, live).
+void add_record_live_option(CLI::App& cmd, std::string& path);
 
 }  // namespace arp::app

@@ -113,8 +113,7 @@ Runner add_run_command(CLI::App& app) {
                   "Live head motion: usb (an Oculus Rift DK1/DK2; --device chooses one), fed to the pipeline frame by frame as it arrives, "
                   "at the display's pace (functional level)");
   add_device_option(*cmd, s.tracker);
-  cmd->add_option("--record-live", s.record_live,
-                  "With --live: write the motion the pipeline took (on the run's timeline) as a trace file, to replay the run with --trace");
+  add_record_live_option(*cmd, s.record_live);
   add_motion_options(*cmd, s.motion, false);
   cmd->add_option("--frames", s.frames, "Number of frames")->capture_default_str();
   cmd->add_option("--first-frame", s.first_frame, "Index of the first frame (sets its time)")->capture_default_str();

@@ -10,7 +10,9 @@
 #include <sstream>
 #include <thread>
 
+#include "../LiveWindow.hpp"
 #include "../TestSupport.hpp"
+#include "host/cubemap/ImageFiles.hpp"
 #include "RiftEmulator.hpp"
 #include "tracker/Fusion.hpp"
 #include "tracker/SyntheticMotion.hpp"
@@ -260,6 +262,40 @@ TEST(RiftCommand, ATransportSlowerThanTheDeviceStillFeedsTheRun) {
   EXPECT_GT(took[1].time_ps, 0);
   EXPECT_LE(took[1].time_ps, 1'000'000'000);
   ASSERT_NO_FATAL_FAILURE(expect_took_the_device_in_order(took, before, truth));
+}
+
+// `arpsim live` with the tracker on USB, in its window under Xvfb: the window shows the pipeline's frame for
+// the motion the tracker sent. What the loop took is recorded (--record-live) and replays in `run --trace`:
+// the window's last frame, outside the overlay, is that run's frame pixel for pixel (the recording ends with
+// the last samples taken before that frame was rendered, so it holds exactly what the frame saw, at any
+// pace). And it is the head turned, not the still head's frame.
+TEST(RiftCommand, TheLiveWindowShowsTheTrackersMotionAndItsRecordingReplays) {
+  const auto truth = yaw_90(30.0);
+  test::RiftEmulator dk1(RiftModel::DK1, truth);
+  arp::test::TempDir d;
+  const std::string& arpsim = arp::test::kArpsim;
+  const auto live = arp::test::run_command(arp::test::kXvfbRun + arpsim + " live -q --live usb --seconds 0.5 --screenshot " +
+                                           d.file("shot.png") + " --record-live " + d.file("took.csv"));
+  ASSERT_EQ(live.status, 0) << live.output;
+  EXPECT_NE(live.output.find("30 frames of Oculus Rift DK1"), std::string::npos) << live.output;
+  const auto took = read_trace_csv(d.file("took.csv"));
+  ASSERT_GT(took.size(), 10u) << live.output;
+  EXPECT_NE(live.output.find(std::to_string(took.size()) + " tracker samples taken"), std::string::npos) << live.output;
+  EXPECT_EQ(took[0].time_ps, 0);  // the pose at the start: the last received before it
+  ASSERT_NO_FATAL_FAILURE(expect_device_steps(took));
+  // (--every 29: frames 0 and 29)
+  const auto replay = arp::test::run_command(arpsim + " run -q --fidelity functional --frames 30 --every 29 --trace " + d.file("took.csv") +
+                                             " --out-dir " + d.file("replay"));
+  ASSERT_EQ(replay.status, 0) << replay.output;
+  const auto still = arp::test::run_command(arpsim + " frame --frame 29 --out " + d.file("still.png"));
+  ASSERT_EQ(still.status, 0) << still.output;
+  const host::RgbImage shot = host::read_rgb8(d.file("shot.png"));
+  const auto same = arp::test::compare_outside_overlay(shot, host::read_rgb8(d.file("replay/frame_000029.png")));
+  EXPECT_GT(same.text, 1000);  // the overlay is there
+  EXPECT_EQ(same.differ, 0);
+  // Turned: the calibration pattern has moved under most of the window (a half turn of a degree moves most).
+  const auto moved = arp::test::compare_outside_overlay(shot, host::read_rgb8(d.file("still.png")));
+  EXPECT_GT(moved.differ, shot.width * shot.height / 4) << "the window shows the still head";
 }
 
 // Two trackers on the command line: the list tells them apart and says what to
