@@ -131,8 +131,9 @@ TEST(LiveLoop, ALiveSourceIsTakenInOrderRecordedAndHeldInAWindow) {
   const WallClockTurn& turn = *owned;
   sim::LiveLoop loop(s, std::move(owned));
   EXPECT_EQ(loop.source_name(), "test turn");
-  // A second behind frame k, up to when it is shown (the end of frame k + 1, or a frame later when it is late).
-  const double window = 1.0 + 3.0 / loop.refresh_hz();
+  // A second behind frame k, up to when it is shown (the end of frame k + 1, a frame later when it is late),
+  // and a quarter of a second for a starved machine's delays between choosing the frame and taking its samples.
+  const double window = 1.25;
   size_t most_held = 0;
   while (!loop.finished()) {
     const sim::LiveFrame f = loop.next();
@@ -141,8 +142,9 @@ TEST(LiveLoop, ALiveSourceIsTakenInOrderRecordedAndHeldInAWindow) {
   }
   loop.commit_record();
   const int64_t taken = loop.live_samples(), before = loop.live_samples_before_start();
-  // Two seconds of a 10 kHz source: taken whole (but what arrived after the last frame), held a second.
-  EXPECT_GE(taken + before, turn.sent() - 2000) << "sent " << turn.sent();
+  // Two seconds of a 10 kHz source (it makes its samples as it is polled): every one taken, or received before
+  // the start; held a second.
+  EXPECT_EQ(taken + before, turn.sent());
   EXPECT_GT(taken, 14'000);
   EXPECT_LE(static_cast<double>(most_held), window * 10'000 + 2) << "taken " << taken;
   // What was taken, as recorded: the source's samples in order from the last received before the start,
@@ -184,12 +186,12 @@ TEST(LiveLoop, ALoopBehindTheDisplayDropsFramesToCatchUp) {
   ASSERT_EQ(loop.frames(), 30);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a window being opened
   const sim::LiveFrame first = loop.next();
-  EXPECT_EQ(first.index, 0);
-  EXPECT_EQ(first.dropped, 0);
+  EXPECT_LT(first.index, 5);  // 0, or a few on a starved machine; 17 with the clock started at the construction
+  EXPECT_EQ(first.dropped, first.index);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // a window slow to present: 12 periods
   const sim::LiveFrame caught_up = loop.next();
-  EXPECT_GE(caught_up.index, 12);  // (frame k is due k + 1 periods after the first frame's start)
-  EXPECT_EQ(caught_up.dropped, caught_up.index - 1);
+  EXPECT_GE(caught_up.index, first.index + 12);  // (frame k is due k + 1 periods after the first frame's start)
+  EXPECT_EQ(caught_up.dropped, caught_up.index - first.index - 1);
   EXPECT_FALSE(loop.finished());
   std::this_thread::sleep_for(std::chrono::milliseconds(500));  // past the end
   const sim::LiveFrame last = loop.next();
