@@ -97,8 +97,12 @@ class WallClockTurn : public tracker::PoseSource {
   }
   void poll(std::vector<tracker::PoseSample>& out, int timeout_ms) override {
     if (now_ps() < next_ * kStepPs) std::this_thread::sleep_for(std::chrono::milliseconds(timeout_ms));
-    for (const int64_t now = now_ps(); next_ * kStepPs <= now; ++next_) out.push_back(sample(next_));
+    for (const int64_t now = now_ps(); next_ * kStepPs <= now; ++next_)
+      if (plugged_) out.push_back(sample(next_));
   }
+  bool connected() const override { return plugged_; }
+  // Unplugged: no samples (those it would have made are lost), and not connected.
+  void set_plugged(bool plugged) { plugged_ = plugged; }
   std::vector<std::string> take_events() override { return {}; }
   static tracker::PoseSample sample(int64_t j) {
     tracker::PoseSample p;
@@ -112,6 +116,7 @@ class WallClockTurn : public tracker::PoseSource {
   using Clock = std::chrono::steady_clock;
   Clock::time_point t0_ = Clock::now();
   int64_t next_ = 0;
+  bool plugged_ = true;
 };
 
 }  // namespace
@@ -199,4 +204,44 @@ TEST(LiveLoop, ALoopBehindTheDisplayDropsFramesToCatchUp) {
   EXPECT_TRUE(loop.finished());
   EXPECT_EQ(loop.dropped_frames(), 27);
   EXPECT_EQ(loop.shown_frames(), 3);
+}
+
+// Unplugged for a while: the frames meanwhile say so and hold the last pose (their latency grows from the
+// unplug), and after the replug the frames latch fresh samples again.
+TEST(LiveLoop, FramesWhileTheTrackerIsUnpluggedSaySoAndHoldTheLastPose) {
+  sim::LiveSpec s;
+  s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48", "display.pixel_clock_hz=1249920"});
+  s.memories.scene = "";
+  s.seconds = 1.5;
+  auto owned = std::make_unique<WallClockTurn>();
+  WallClockTurn& turn = *owned;  // (the loop owns it and keeps it while it lives)
+  sim::LiveLoop loop(s, std::move(owned));
+  // Unplugged once frame 20 is shown, replugged once a frame 20 frames later has shown the unplug: a third
+  // of a second with no samples, whatever frames are dropped.
+  int64_t unplugged_at = -1, unplugged_frames = 0, held = 0, fresh_after = 0;
+  bool replugged = false;
+  while (!loop.finished()) {
+    const sim::LiveFrame f = loop.next();
+    if (f.disconnected) {
+      EXPECT_FALSE(replugged) << f.index;
+      ++unplugged_frames;
+      // Each pixel latched the last pose before the unplug (taken as frame unplugged_at + 1 was shown, or a
+      // frame later): older than the frames since.
+      const double since_ps = static_cast<double>(f.index - unplugged_at - 2) * 1e12 / loop.refresh_hz();
+      held += static_cast<double>(f.latency_min_ps) >= since_ps;
+      if (f.index >= unplugged_at + 20) {
+        turn.set_plugged(true);
+        replugged = true;
+      }
+    } else if (replugged) {
+      fresh_after += f.latency_max_ps < 100'000'000'000;  // < 100 ms: fresh samples again
+    } else if (unplugged_at < 0 && f.index >= 20) {
+      turn.set_plugged(false);
+      unplugged_at = f.index;
+    }
+  }
+  EXPECT_GT(unplugged_frames, 0);
+  EXPECT_EQ(held, unplugged_frames);
+  EXPECT_TRUE(replugged);
+  EXPECT_GT(fresh_after, 0);
 }
