@@ -456,12 +456,15 @@ std::vector<double> Session::frame_speeds_dps() const {
 // the window of generated motion moves: through two more frames and a second
 // ahead (the next frame's pixels are already in flight at the timed levels),
 // and trimmed to a second and two frames behind frame k (every latch lead).
+// Live input arrives by itself (build_live_input) and is trimmed the same way:
+// held whole, a tracker's 1 kHz grows by 144 MB an hour.
 void Session::advance_motion(int64_t frame) {
-  if (live_ || !more_poses_) return;
+  if (!live_ && !more_poses_) return;
   const int64_t f0 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame));
   const int64_t f1 = timing_.cycles_to_ps(timing_.frame_start_cycle(frame + 1));
-  extend_motion(plus_saturated(f1, 2 * (f1 - f0) + kPsPerSecond));
-  if (motion_started_) stream_.discard_before(f0 - 2 * (f1 - f0) - kPsPerSecond);
+  if (live_) live_held_max_ = std::max(live_held_max_, static_cast<int64_t>(stream_.held()));
+  else extend_motion(plus_saturated(f1, 2 * (f1 - f0) + kPsPerSecond));
+  if (motion_started_ || live_) stream_.discard_before(f0 - 2 * (f1 - f0) - kPsPerSecond);
 }
 
 // Appends the generated motion through `through_ps` (and one sample past it) to the stream.
@@ -967,7 +970,8 @@ RunSummary Session::run() {
     r["live"] = {{"source", motion_source_},
                  {"samples", live_intake_->taken()},
                  {"samples_before_start", live_intake_->before_start()},
-                 {"samples_after_end", rest.size()}};
+                 {"samples_after_end", rest.size()},
+                 {"samples_held_max", live_held_max_}};
     tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });
     r["live"]["device_gap_s"] = st.gap_s;
     r["live"]["behind_max_s"] = static_cast<double>(live_behind_max_ps_) * 1e-12;

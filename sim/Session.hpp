@@ -113,6 +113,7 @@ class Session {
   std::string vcd_final_, vcd_tmp_base_;
   int64_t images_ = 0, baseline_triangles_ = 0;
   int64_t live_behind_ps_ = 0, live_behind_max_ps_ = 0;  // how far the run's frames lag the tracker's clock
+  int64_t live_held_max_ = 0;  // the most live samples the stream held at a frame's end (trimmed behind the frame)
   std::string live_lag_text() const;
   double host_wall_s_ = 0;
   double probe_wall_s_ = 0;  // measuring the error against the truth (its renders and its pipeline)
