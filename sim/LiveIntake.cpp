@@ -1,5 +1,7 @@
 #include "sim/LiveIntake.hpp"
 
+#include <stdexcept>
+
 #include "common/InputError.hpp"
 #include "sim/PoseConversion.hpp"
 
@@ -18,12 +20,24 @@ LiveIntake::~LiveIntake() = default;
 
 void LiveIntake::start(dp::OrientationStream& stream, int64_t start_ps, const std::string& stream_source) {
   const LiveStart s = live_start(source_, start_ps);
+  started_ = true;
   offset_ps_ = s.offset_ps;
   before_start_ += s.before;
-  if (s.pose) take(stream, {*s.pose}, stream_source);  // the run starts where the head is (not at the identity until the next sample)
+  tracker::PoseSample at_start;  // nothing received yet: the pose the register holds (its reset value), taken the same way
+  if (s.pose) {
+    at_start = *s.pose;  // the run starts where the head is (not at the identity until the next sample)
+  } else {
+    const dp::Quat q = stream[stream.index_at(start_ps)].q;
+    at_start.time_ps = start_ps - offset_ps_;
+    at_start.orientation = glm::dquat(q.w, q.x, q.y, q.z);
+  }
+  // Taken into the run and recorded: a recording replays from the start (`run --trace` holds a trace's
+  // first sample back to the start, so without it the replay would show the first sample too early).
+  take(stream, {at_start}, stream_source);
 }
 
 void LiveIntake::take(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& got, const std::string& stream_source) {
+  if (!started_) throw std::logic_error("LiveIntake::take before start");
   appended_.clear();
   const int64_t n = append_live_poses(stream, got, offset_ps_, stream_source, record_ ? &appended_ : nullptr);
   for (const auto& p : appended_) record_->append(p);

@@ -29,12 +29,15 @@ class LiveIntake {
   LiveIntake& operator=(const LiveIntake&) = delete;
 
   // At the run's start (start_ps on its timeline): fixes the source's time against it and takes the
-  // pose at the start, the last sample received (live_start).
+  // pose at the start: the last sample received (live_start), or with nothing received the pose the
+  // stream holds there. So a recording always begins at the start.
   void start(dp::OrientationStream& stream, int64_t start_ps, const std::string& stream_source);
   // Takes what has arrived: appended in time order (anything earlier than the stream holds is counted
-  // with what was received before the start), and recorded.
+  // with what was received before the start), and recorded as the stream holds it (normalised).
+  // After start().
   void take(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& got, const std::string& stream_source);
 
+  // The samples taken, the pose at the start included.
   int64_t taken() const { return taken_; }
   int64_t before_start() const { return before_start_; }
   bool recording() const { return record_ != nullptr; }
@@ -46,6 +49,7 @@ class LiveIntake {
   tracker::PoseSource& source_;
   std::unique_ptr<tracker::TraceWriter> record_;
   int64_t offset_ps_ = 0, taken_ = 0, before_start_ = 0;
+  bool started_ = false;
   std::vector<tracker::PoseSample> appended_;
 };
 

@@ -15,6 +15,7 @@ int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<track
   std::vector<dp::OrientationSample> more;
   int64_t last = stream[stream.size() - 1].time_ps;
   const std::vector<dp::OrientationSample> all = to_orientation_samples(poses, offset_ps);
+  const size_t first = appended ? appended->size() : 0;
   for (size_t i = 0; i < all.size(); ++i)
     if (all[i].time_ps >= last) {
       more.push_back(all[i]);
@@ -25,6 +26,11 @@ int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<track
       }
     }
   stream.append(more, source);
+  if (appended)  // as the stream holds them (normalised): a recording replays the same orientations
+    for (size_t k = 0; k < more.size(); ++k) {
+      const dp::Quat& q = stream[stream.size() - more.size() + k].q;
+      (*appended)[first + k].orientation = glm::dquat(q.w, q.x, q.y, q.z);
+    }
   return static_cast<int64_t>(more.size());
 }
 

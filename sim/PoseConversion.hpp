@@ -18,7 +18,8 @@ std::vector<dp::OrientationSample> to_orientation_samples(const std::vector<trac
 
 // Appends live poses (times moved by offset_ps), skipping any earlier than the
 // last sample the stream holds -- e.g. a report's earlier samples from before
-// the run started. Returns how many were appended; with `appended`, also adds them there (times moved).
+// the run started. Returns how many were appended; with `appended`, also adds them there as the stream
+// holds them (times moved, orientations normalised).
 int64_t append_live_poses(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& poses, int64_t offset_ps,
                           const std::string& source, std::vector<tracker::PoseSample>* appended = nullptr);
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "LiveWindow.hpp"
 #include "TestSupport.hpp"
@@ -49,4 +50,25 @@ TEST(LiveCli, NoDisplayAndBadOptions) {
     EXPECT_EQ(r.status, 2) << bad << "\n" << r.output;
   }
   EXPECT_EQ(run_command(kArpsim + " live --help").status, 0);
+}
+
+// Ctrl-C (SIGINT) closes the window after the frame in flight: the exit status says so, the screenshot of
+// the last frame shown is written whole, and no temporary file is left (SDL's own handler only posted a
+// quit event, and before the window there was none).
+TEST(LiveCli, CtrlCClosesTheWindowAndWritesTheScreenshot) {
+  TempDir d;
+  // The window's process is told from xvfb-run's (which carries the same arguments) by its name; the loop is
+  // running once its progress line has appeared.
+  const std::string script =
+      kXvfbRun + kArpsim + " live --seconds 60 --screenshot " + d.file("shot.png") + " > " + d.file("out.txt") + " 2>&1 & job=$!; " +
+      "for i in $(seq 600); do grep -q frame " + d.file("out.txt") + " && break; sleep 0.1; done; " +
+      "for p in $(pgrep -f " + d.path() + "); do [ \"$(cat /proc/$p/comm)\" = arpsim ] && kill -INT $p; done; wait $job; echo status=$?";
+  {
+    std::ofstream(d.file("ctrl-c.sh")) << script << "\n";
+  }
+  const auto r = run_command("sh " + d.file("ctrl-c.sh"));
+  EXPECT_NE(r.output.find("status=130"), std::string::npos) << r.output << arp::test::read_text(d.file("out.txt"));
+  const arp::host::RgbImage shot = arp::host::read_rgb8(d.file("shot.png"));
+  EXPECT_EQ(shot.width, 1280);
+  EXPECT_EQ(d.entries(), 3u) << "shot.png, out.txt and the script, nothing else";
 }

@@ -5,6 +5,8 @@
 // samples counted and not taken, and the recording exactly what was taken.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <glm/gtc/quaternion.hpp>
 
 #include "TestSupport.hpp"
@@ -90,17 +92,28 @@ TEST(LiveIntake, ATrackerUnpluggedAcrossTheStartIsTimedFromItsClock) {
   in.take(stream, {yaw_at(1600, 8)}, "scripted");
   ASSERT_EQ(stream.size(), 3u);
   EXPECT_EQ(stream[2].time_ps, 100 * kMs);
-  // Nothing received at all: the source's clock as well, and nothing taken until something comes.
+  // Nothing received at all: the source's clock as well. The pose the stream holds at the start (its reset
+  // value) is taken there, so a recording begins at the start (a replay holds a trace's first sample back to
+  // it: without this it would show the first sample too early).
+  arp::test::TempDir d;
   ScriptedLiveSource quiet;
   quiet.now = 40 * kMs;
-  sim::LiveIntake none(quiet, "");
-  auto still = dp::OrientationStream::constant(dp::Quat{});
-  none.start(still, 0, "scripted");
-  EXPECT_EQ(none.taken(), 0);
-  EXPECT_EQ(still.size(), 1u);
-  none.take(still, {yaw_at(41, 1)}, "scripted");
+  sim::LiveIntake none(quiet, d.file("none.csv"));
+  auto still = dp::OrientationStream::constant(dp::Quat{0.6, 0.0, 0.8, 0.0});
+  none.start(still, 3 * kMs, "scripted");
+  EXPECT_EQ(none.taken(), 1);
+  EXPECT_EQ(none.before_start(), 0);
   ASSERT_EQ(still.size(), 2u);
-  EXPECT_EQ(still[1].time_ps, 1 * kMs);
+  EXPECT_EQ(still[1].time_ps, 3 * kMs);
+  none.take(still, {yaw_at(41, 1)}, "scripted");
+  ASSERT_EQ(still.size(), 3u);
+  EXPECT_EQ(still[2].time_ps, 4 * kMs);
+  none.commit_record();
+  const auto took = tracker::read_trace_csv(d.file("none.csv"));
+  ASSERT_EQ(took.size(), 2u);
+  EXPECT_EQ(took[0].time_ps, 3 * kMs);
+  EXPECT_EQ(took[0].orientation, glm::dquat(0.6, 0.0, 0.8, 0.0));
+  EXPECT_EQ(took[1].time_ps, 4 * kMs);
 }
 
 // A sample earlier than the stream holds (a report's older samples, after a newer one) is not taken: it

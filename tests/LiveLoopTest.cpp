@@ -130,15 +130,12 @@ TEST(LiveLoop, ALiveSourceIsTakenInOrderRecordedAndHeldInAWindow) {
   // (A 64 x 48 display at 60 Hz: 224 x 93 clocks a frame.)
   s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48", "display.pixel_clock_hz=1249920"});
   s.memories.scene = "";
-  s.seconds = 2.0;
+  s.seconds = 3.0;
   s.record_live = d.file("took.csv");
   auto owned = std::make_unique<WallClockTurn>();
   const WallClockTurn& turn = *owned;
   sim::LiveLoop loop(s, std::move(owned));
   EXPECT_EQ(loop.source_name(), "test turn");
-  // A second behind frame k, up to when it is shown (the end of frame k + 1, a frame later when it is late),
-  // and a quarter of a second for a starved machine's delays between choosing the frame and taking its samples.
-  const double window = 1.25;
   size_t most_held = 0;
   while (!loop.finished()) {
     const sim::LiveFrame f = loop.next();
@@ -147,11 +144,13 @@ TEST(LiveLoop, ALiveSourceIsTakenInOrderRecordedAndHeldInAWindow) {
   }
   loop.commit_record();
   const int64_t taken = loop.live_samples(), before = loop.live_samples_before_start();
-  // Two seconds of a 10 kHz source (it makes its samples as it is polled): every one taken, or received before
-  // the start; held a second.
+  // Three seconds of a 10 kHz source (it makes its samples as it is polled): every one taken, or received
+  // before the start. Held: a second behind the frame, up to when it is shown -- about 10 000, a third of
+  // what was taken; less than 0.6 of it allows a starved machine 0.8 s between choosing a frame and taking its
+  // samples (held whole, all of it: 30 000).
   EXPECT_EQ(taken + before, turn.sent());
-  EXPECT_GT(taken, 14'000);
-  EXPECT_LE(static_cast<double>(most_held), window * 10'000 + 2) << "taken " << taken;
+  EXPECT_GT(taken, 25'000);
+  EXPECT_LT(static_cast<double>(most_held), 0.6 * static_cast<double>(taken));
   // What was taken, as recorded: the source's samples in order from the last received before the start,
   // which is at the start; the rest on the source's 0.1 ms steps.
   const auto took = tracker::read_trace_csv(d.file("took.csv"));
@@ -186,9 +185,9 @@ TEST(LiveLoop, ALoopBehindTheDisplayDropsFramesToCatchUp) {
   sim::LiveSpec s;
   s.config = config::apply_overrides({}, {"display.h_active=64", "display.v_active=48", "display.pixel_clock_hz=1249920"});
   s.memories.scene = "";
-  s.seconds = 0.5;
+  s.seconds = 2.0;
   sim::LiveLoop loop(s);
-  ASSERT_EQ(loop.frames(), 30);
+  ASSERT_EQ(loop.frames(), 120);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a window being opened
   const sim::LiveFrame first = loop.next();
   EXPECT_LT(first.index, 5);  // 0, or a few on a starved machine; 17 with the clock started at the construction
@@ -197,13 +196,13 @@ TEST(LiveLoop, ALoopBehindTheDisplayDropsFramesToCatchUp) {
   const sim::LiveFrame caught_up = loop.next();
   EXPECT_GE(caught_up.index, first.index + 12);  // (frame k is due k + 1 periods after the first frame's start)
   EXPECT_EQ(caught_up.dropped, caught_up.index - first.index - 1);
-  EXPECT_FALSE(loop.finished());
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // past the end
+  ASSERT_FALSE(loop.finished());
+  std::this_thread::sleep_for(std::chrono::milliseconds(2000));  // past the end
   const sim::LiveFrame last = loop.next();
-  EXPECT_EQ(last.index, 29);
+  EXPECT_EQ(last.index, 119);
   EXPECT_TRUE(loop.finished());
-  EXPECT_EQ(loop.dropped_frames(), 27);
   EXPECT_EQ(loop.shown_frames(), 3);
+  EXPECT_EQ(loop.dropped_frames(), 117);
 }
 
 // Unplugged for a while: the frames meanwhile say so and hold the last pose (their latency grows from the

@@ -14,6 +14,7 @@
 #include "CommonOptions.hpp"
 #include "MotionOptions.hpp"
 #include "common/InputError.hpp"
+#include "common/Interrupt.hpp"
 #include "common/OutputPaths.hpp"
 #include "host/cubemap/BitmapFont.hpp"
 #include "host/cubemap/ImageFiles.hpp"
@@ -63,8 +64,13 @@ int run_live(LiveArgs& a) {
     std::fprintf(stderr, "arpsim live: no display to open a window on; run it on a desktop, or headless: xvfb-run -a arpsim live ...\n");
     return 1;
   }
+  // Ctrl-C / SIGTERM: close the window after the frame in flight and write what was recorded (not SDL's
+  // handler, which would only post a quit event, and none before the window).
+  const InterruptGuard ctrl_c;
   sim::LiveLoop loop(a.spec);
+  if (const int sig = interrupt_signal()) return interrupted_exit_status(sig);  // (stopped while the memories were filled)
   const auto& c = loop.config();
+  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail("cannot start SDL video");
   Sdl sdl;
   const int iw = c.timing.h_active * c.timing.eyes, ih = c.timing.v_active;
@@ -73,10 +79,10 @@ int run_live(LiveArgs& a) {
   sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_SOFTWARE);  // readable back for screenshots, everywhere
   if (!sdl.renderer || !(sdl.texture = SDL_CreateTexture(sdl.renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, iw, ih)))
     return fail("cannot draw into the window");
-  int64_t shown = 0;
+  int64_t shown = 0, progress_at = -30;
   double render_ms = 0;
   bool quit = false;
-  while (!loop.finished() && !quit) {
+  while (!loop.finished() && !quit && !interrupt_requested()) {
     const sim::LiveFrame f = loop.next();
     SDL_Event e;
     while (SDL_PollEvent(&e))
@@ -95,7 +101,7 @@ int run_live(LiveArgs& a) {
     SDL_UpdateTexture(sdl.texture, nullptr, img.rgb.data(), iw * 3);
     SDL_RenderClear(sdl.renderer);
     SDL_RenderCopy(sdl.renderer, sdl.texture, nullptr, nullptr);
-    if (!a.screenshot.empty() && (f.index + 1 == loop.frames() || quit)) {
+    if (!a.screenshot.empty() && (f.index + 1 == loop.frames() || quit || interrupt_requested())) {
       host::RgbImage shot(iw * a.scale, ih * a.scale);  // what the window shows, read back from the renderer
       if (SDL_RenderReadPixels(sdl.renderer, nullptr, SDL_PIXELFORMAT_RGB24, shot.rgb.data(), shot.width * 3) != 0)
         return fail("cannot read the window back");
@@ -103,7 +109,10 @@ int run_live(LiveArgs& a) {
     }
     SDL_RenderPresent(sdl.renderer);
     ++shown;
-    if (!a.quiet && f.index % 30 == 0) std::fprintf(stderr, "\r  frame %" PRId64 "  %s", f.index, l2);
+    if (!a.quiet && f.index >= progress_at + 30) {  // (about twice a second, however many frames are dropped)
+      std::fprintf(stderr, "\r  frame %" PRId64 "  %s", f.index, l2);
+      progress_at = f.index;
+    }
   }
   if (!a.quiet) std::fprintf(stderr, "\n");
   loop.commit_record();
@@ -114,6 +123,7 @@ int run_live(LiveArgs& a) {
   if (!a.spec.live.empty())
     std::printf("arpsim live: %" PRId64 " tracker samples taken (%" PRId64 " received before the start)%s%s\n", loop.live_samples(),
                 loop.live_samples_before_start(), a.spec.record_live.empty() ? "" : "; recorded in ", a.spec.record_live.c_str());
+  if (const int sig = interrupt_signal()) return interrupted_exit_status(sig);
   return 0;
 }
 
