@@ -3,6 +3,7 @@
 // record a trace that replays into the pipeline, and survive an unplug.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -301,10 +302,14 @@ TEST(RiftCommand, ALiveRunHoldsASecondOfSamplesBehindItsFrame) {
   ASSERT_FALSE(c.rep.empty());
   const int64_t held = json_int(c.rep, "samples_held_max");
   // At most a second and four frames at the device's 1 kHz, what arrived ahead of the frames while the run was
-  // behind the tracker (the first frames are, by 0.2 s here), and a tenth of a second.
+  // behind the tracker (the first frames are, by 0.2 s here), and a tenth of a second. And what a starved
+  // emulator handed over late: sampled before the start but received after it, it is placed after the start
+  // by the device's time (the timeline is fixed by arrival) and runs ahead of the frames -- whatever the run
+  // took beyond the device's 1 kHz over its 4 s (CI under ASan: 4 453 taken, 1 558 held).
   const double behind_s = json_double(c.rep, "behind_max_s");
+  const double late_backlog = std::max(0.0, static_cast<double>(c.taken) - 4000.0);
   EXPECT_GT(held, 0) << c.rep;
-  EXPECT_LE(static_cast<double>(held), 1000.0 * (1.0 + 4.0 / 60.0 + behind_s + 0.1)) << c.rep;
+  EXPECT_LE(static_cast<double>(held), 1000.0 * (1.0 + 4.0 / 60.0 + behind_s + 0.1) + late_backlog) << c.rep;
   // It took more than it held (at half the device's rate, as a loaded machine's emulator has run: 2 000).
   EXPECT_GT(c.taken, 1500) << c.rep;
 }
