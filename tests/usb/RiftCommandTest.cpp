@@ -301,16 +301,15 @@ TEST(RiftCommand, ALiveRunHoldsASecondOfSamplesBehindItsFrame) {
   const LiveCounts c = read_live_report(d.file("r.json"));
   ASSERT_FALSE(c.rep.empty());
   const int64_t held = json_int(c.rep, "samples_held_max");
-  // At most a second and four frames at the device's 1 kHz, what arrived ahead of the frames while the run was
-  // behind the tracker (the first frames are, by 0.2 s here), and a tenth of a second. And what a starved
-  // emulator handed over late: sampled before the start but received after it, it is placed after the start
-  // by the device's time (the timeline is fixed by arrival) and runs ahead of the frames -- whatever the run
-  // took beyond the device's 1 kHz over its 4 s (CI under ASan: 4 453 taken, 1 558 held).
-  const double behind_s = json_double(c.rep, "behind_max_s");
-  const double late_backlog = std::max(0.0, static_cast<double>(c.taken) - 4000.0);
+  // About a second and four frames at the device's 1 kHz, plus what runs ahead of the frames: what arrived
+  // while the run was behind the tracker, and what a starved emulator handed over late (sampled before the
+  // start but received after it, it is placed after the start by the device's time: the timeline is fixed by
+  // arrival). That last part cannot be told from the report (CI under ASan: 1 558 held of 4 453 taken, 1 473
+  // of 3 881), so the bound is half of what was taken: the trim keeps a second of a 4 s run, holding all of it
+  // keeps everything (4 050 here).
   EXPECT_GT(held, 0) << c.rep;
-  EXPECT_LE(static_cast<double>(held), 1000.0 * (1.0 + 4.0 / 60.0 + behind_s + 0.1) + late_backlog) << c.rep;
-  // It took more than it held (at half the device's rate, as a loaded machine's emulator has run: 2 000).
+  EXPECT_LT(held * 2, c.taken) << c.rep;
+  // (At half the device's rate, as a loaded machine's emulator has run, still 2 000 taken.)
   EXPECT_GT(c.taken, 1500) << c.rep;
 }
 
