@@ -38,6 +38,7 @@ struct Sdl {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
   SDL_Texture* texture = nullptr;
+  void draw() const { SDL_RenderClear(renderer); SDL_RenderCopy(renderer, texture, nullptr, nullptr); }
   ~Sdl() {
     if (texture) SDL_DestroyTexture(texture);
     if (renderer) SDL_DestroyRenderer(renderer);
@@ -99,14 +100,7 @@ int run_live(LiveArgs& a) {
                   f.disconnected ? "  DISCONNECTED - HOLDING" : "");
     host::draw_text_box(img, {l1, l2, l3});
     SDL_UpdateTexture(sdl.texture, nullptr, img.rgb.data(), iw * 3);
-    SDL_RenderClear(sdl.renderer);
-    SDL_RenderCopy(sdl.renderer, sdl.texture, nullptr, nullptr);
-    if (!a.screenshot.empty() && (f.index + 1 == loop.frames() || quit || interrupt_requested())) {
-      host::RgbImage shot(iw * a.scale, ih * a.scale);  // what the window shows, read back from the renderer
-      if (SDL_RenderReadPixels(sdl.renderer, nullptr, SDL_PIXELFORMAT_RGB24, shot.rgb.data(), shot.width * 3) != 0)
-        return fail("cannot read the window back");
-      host::write_rgb8(a.screenshot, shot);
-    }
+    sdl.draw();
     SDL_RenderPresent(sdl.renderer);
     ++shown;
     if (!a.quiet && f.index >= progress_at + 30) {  // (about twice a second, however many frames are dropped)
@@ -115,11 +109,18 @@ int run_live(LiveArgs& a) {
     }
   }
   if (!a.quiet) std::fprintf(stderr, "\n");
+  if (!a.screenshot.empty() && shown > 0) {  // however the loop ended: the last frame shown, still in the texture
+    host::RgbImage shot(iw * a.scale, ih * a.scale);
+    sdl.draw();  // as the window shows it, read back
+    if (SDL_RenderReadPixels(sdl.renderer, nullptr, SDL_PIXELFORMAT_RGB24, shot.rgb.data(), shot.width * 3) != 0)
+      return fail("cannot read the window back");
+    host::write_rgb8(a.screenshot, shot);
+  }
   loop.commit_record();
   std::printf("arpsim live: %" PRId64 " frames of %s at %.2f Hz (%" PRId64 " shown, %" PRId64 " dropped to keep up), mean render %.2f ms%s%s\n",
               shown + loop.dropped_frames(), loop.source_name().c_str(), loop.refresh_hz(), shown, loop.dropped_frames(),
               render_ms / static_cast<double>(std::max<int64_t>(1, shown)),
-              a.screenshot.empty() ? "" : "; screenshot ", a.screenshot.c_str());
+              a.screenshot.empty() ? "" : shown > 0 ? "; screenshot " : "; no frame shown, no screenshot ", a.screenshot.c_str());
   if (!a.spec.live.empty())
     std::printf("arpsim live: %" PRId64 " tracker samples taken (%" PRId64 " received before the start)%s%s\n", loop.live_samples(),
                 loop.live_samples_before_start(), a.spec.record_live.empty() ? "" : "; recorded in ", a.spec.record_live.c_str());
