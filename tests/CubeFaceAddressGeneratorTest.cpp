@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
@@ -176,5 +179,56 @@ TEST(ReciprocalUnit, AlignedReciprocalGivesTheSameQuotientsAsTheNormalisedOne) {
               << "m=" << m << " sc=" << sc << " mode=" << to_string(mode) << " rot_frac=" << u.rot_frac;
         }
       }
+    }
+}
+
+// The functional model computes the generator in 32-bit lanes where address_fits_int32 says every value
+// fits. Checked here by enumeration, not by the check's closed form: for every |ma| the table covers, with
+// sc at both ends, zero, one and spread between, in every rounding mode and several unit configurations,
+// the 64-bit chain's widest values (the product and its rounding bias, the position before its shift) stay
+// within 32 bits wherever the check says yes, and the 32-bit chain gives the same quotient and position.
+// Where a value does not fit -- quotients of 24 fraction bits on a face of 512 texels, (q + 1) S reaches
+// 2^34 -- the check says no.
+TEST(CubeFaceAddressGenerator, ThirtyTwoBitLanesGiveTheSamePositionsWhereTheCheckSaysTheyFit) {
+  std::mt19937_64 rng(23);
+  const struct { int rot_frac, index_bits, recip_frac, quot_frac, texel_frac, face; bool fits; } units[] = {
+      {14, 8, 16, 16, 8, 512, true},  {14, 8, 16, 16, 8, 300, true}, {8, 3, 8, 9, 3, 512, true},
+      {15, 10, 15, 16, 8, 2048, true}, {14, 8, 16, 24, 12, 512, false}, {14, 8, 16, 16, 8, 1 << 14, false}};
+  for (const auto& u : units)
+    for (Rounding mode : {Rounding::Floor, Rounding::HalfUp, Rounding::HalfEven}) {
+      DatapathWidths w;
+      w.rot_frac = u.rot_frac;
+      w.recip_index_bits = u.index_bits;
+      w.recip_frac_bits = u.recip_frac;
+      w.quot_frac = u.quot_frac;
+      w.texel_frac = u.texel_frac;
+      w.div_rounding = w.texel_rounding = mode;
+      const AddressGeneratorParams p(w, u.face);
+      const auto memo = tabulate_aligned_reciprocal(p, w);
+      ASSERT_FALSE(memo.empty());
+      const bool fits = address_fits_int32(p, memo);
+      EXPECT_EQ(fits, u.fits) << "rot_frac " << u.rot_frac << ", quot_frac " << u.quot_frac << ", face " << u.face;
+      const int64_t shift = int64_t{u.recip_frac} + p.n_max - 1 - u.quot_frac;
+      const int64_t one = int64_t{1} << u.quot_frac, S = u.face;
+      int64_t widest = 0;  // the largest magnitude any step of the 64-bit chain reached
+      for (int64_t m = 1; m < static_cast<int64_t>(memo.size()); ++m) {
+        std::uniform_int_distribution<int64_t> d(-m, m);
+        for (const int64_t sc : {m, -m, int64_t{0}, int64_t{1}, int64_t{-1}, d(rng), d(rng)}) {
+          const int64_t ya = memo[static_cast<size_t>(m)];
+          const int64_t product = sc * ya;
+          widest = std::max({widest, std::abs(product) + (shift > 0 ? int64_t{1} << (shift - 1) : 0)});
+          const int64_t q = multiply_aligned_reciprocal(sc, ya, u.recip_frac, p.n_max, u.quot_frac, p.div_rounding);
+          const int64_t qc = std::clamp(q, -one, one);
+          widest = std::max(widest, (qc + one) * S + (int64_t{1} << (u.quot_frac - u.texel_frac)));
+          const int64_t pos = quotient_to_position(q, p);
+          if (!fits) continue;  // (the 32-bit chain would overflow: not evaluated)
+          const int32_t q32 = multiply_aligned_reciprocal_as<int32_t>(static_cast<int32_t>(sc), static_cast<int32_t>(ya),
+                                                                      u.recip_frac, p.n_max, u.quot_frac, p.div_rounding);
+          ASSERT_EQ(q32, q) << "ma " << m << ", sc " << sc;
+          ASSERT_EQ(quotient_to_position_as<int32_t>(q32, p), pos) << "ma " << m << ", sc " << sc;
+        }
+      }
+      if (fits) EXPECT_LE(widest, INT32_MAX) << "rot_frac " << u.rot_frac << ", quot_frac " << u.quot_frac;
+      else EXPECT_GT(widest, INT32_MAX) << "rot_frac " << u.rot_frac << ", quot_frac " << u.quot_frac;
     }
 }

@@ -100,20 +100,38 @@ void fill_every_memory_in_order(DisplayMemorySet& mem) {
     }
 }
 
-enum class Fill { Layered, EveryMemory, EveryMemoryInOrder };
+// One memory (the single-memory passes), written from the last face's last row back: its tiles out of
+// table order, read through its table.
+void fill_one_memory_backwards(DisplayMemorySet& mem) {
+  const MemoryFormat& fmt = mem.format();
+  const int S = fmt.face_size;
+  for (int e = 0; e < mem.eyes(); ++e) {
+    auto& b = mem.bank(e, 0);
+    for (int f = 5; f >= 0; --f)
+      for (int y = S - 1; y >= 0; --y)
+        for (int x = 0; x < S; ++x)
+          b.write(f, x, y, fmt.pack_rgb8(40 * f + 5 * e, (y * 255) / S, (x * 255) / S), fmt.empty_depth() / 2);
+    b.commit();
+    b.vblank();
+    EXPECT_FALSE(b.front_tiles_in_order()) << "eye " << e;
+  }
+}
+
+enum class Fill { Layered, EveryMemory, EveryMemoryInOrder, OneMemoryBackwards };
 
 void expect_bit_identical(const ArpConfig& c, const std::string& what, Fill how = Fill::Layered) {
   DisplayMemorySet mem(c.memory, c.timing.eyes);
   if (how == Fill::EveryMemory) fill_every_memory(mem);
   else if (how == Fill::EveryMemoryInOrder) fill_every_memory_in_order(mem);
+  else if (how == Fill::OneMemoryBackwards) fill_one_memory_backwards(mem);
   else fill(mem);
-  // Which read path the model's several-memory passes take for each eye: by arithmetic only where every
-  // memory was written whole, in order.
-  if (mem.count() > 1)
-    for (int e = 0; e < mem.eyes(); ++e) {
-      std::vector<std::vector<int32_t>> flat;
-      EXPECT_EQ(FunctionalModel::eye_sources(mem, e, flat).dense, how == Fill::EveryMemoryInOrder) << what << ", eye " << e;
-    }
+  // Which read path the model's passes take for each eye: by arithmetic only where every memory was written
+  // whole, in order (fill() writes memory 0 so, and the others sparsely).
+  const bool in_order = how == Fill::EveryMemoryInOrder || (how == Fill::Layered && mem.count() == 1);
+  for (int e = 0; e < mem.eyes(); ++e) {
+    std::vector<std::vector<int32_t>> flat;
+    EXPECT_EQ(FunctionalModel::eye_sources(mem, e, flat).dense, in_order) << what << ", eye " << e;
+  }
   const FunctionalModel model(c);
   const OrientationStream o = fast_turn(model.timing(), 1);
   const HmdFrame ref = scalar_reference(c, mem, o, 1);
@@ -208,7 +226,31 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
   cases["two memories, nearest"] = c;
   c.memory.count = 3;
   cases["three memories, nearest"] = c;
+  // The rotation's and the address generator's 64-bit lanes, for configurations whose values do not fit 32
+  // bits (the lens vectors and matrix entries' sums reach 2^32; (q + 1) S reaches 2^34); the defaults take
+  // the 32-bit lanes.
+  c = test::small_display(ArpConfig{});
+  EXPECT_TRUE(FunctionalModel(c).rotates_in_32_bits());
+  EXPECT_TRUE(FunctionalModel(c).addresses_in_32_bits());
+  c.widths.vec_frac = c.widths.mat_frac = 16;
+  EXPECT_FALSE(FunctionalModel(c).rotates_in_32_bits());
+  EXPECT_TRUE(FunctionalModel(c).addresses_in_32_bits());
+  cases["16-bit lens and matrix fractions (64-bit rotation lanes)"] = c;
+  c = test::small_display(ArpConfig{});
+  c.widths.quot_frac = 24;
+  EXPECT_TRUE(FunctionalModel(c).rotates_in_32_bits());
+  EXPECT_FALSE(FunctionalModel(c).addresses_in_32_bits());
+  cases["24-bit quotients (64-bit address lanes)"] = c;
   for (const auto& [name, cfg] : cases) expect_bit_identical(cfg, name);
+  // One memory whose tiles are out of table order (read through its table; the cases above read by arithmetic).
+  for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
+    c = test::small_display(ArpConfig{});
+    c.memory.count = 1;
+    c.memory.face_size = 128;
+    c.pipeline.aa = aa;
+    expect_bit_identical(c, std::string("one memory written backwards, ") + (aa == AaMode::Off ? "nearest" : "bilinear"),
+                         Fill::OneMemoryBackwards);
+  }
   // Every memory holding something: four to eight (the fixed-count passes, up to the composition unit's
   // eight inputs) and eleven (the run-time count); with the tiles where writes put them, and with every
   // memory's tiles in table order (read without the tables). Faces of 128 texels (4 x 4 tiles): writing eleven

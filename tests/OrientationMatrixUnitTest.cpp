@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "common/InputError.hpp"
@@ -169,4 +172,45 @@ TEST(OrientationStream, DiscardKeepsIndicesAndTheHeldSample) {
   EXPECT_EQ(st.index_at(20000), 10u);
   st.discard_before(4000);  // nothing before the held sample: no change
   EXPECT_EQ(st.index_at(4000), 4u);
+}
+
+// The functional model rotates in 32-bit lanes where rotate_fits_int32 says the accumulators fit. At the
+// corners of what the register holds (every entry at the ends of mat_frac + 2 bits) and of the lens vectors
+// (every component +-max_vec), the largest accumulator magnitude, computed in 64 bits, is within 32 bits
+// wherever the check says yes, and rotate_as<int32_t> gives rotate's vector; where it says no (16-bit
+// fractions: 3 x 2^17 x 2^16), that magnitude is over.
+TEST(OrientationMatrixUnit, ThirtyTwoBitLanesGiveTheSameVectorsWhereTheCheckSaysTheyFit) {
+  const struct { int vec_frac, mat_frac, rot_frac; Rounding mode; int64_t max_vec; bool fits; } cases[] = {
+      {14, 14, 14, Rounding::HalfUp, int64_t{1} << 14, true},   {7, 6, 8, Rounding::HalfEven, int64_t{1} << 7, true},
+      {14, 14, 16, Rounding::Floor, int64_t{1} << 14, true},    {14, 14, 14, Rounding::HalfUp, int64_t{1} << 15, false},
+      {16, 16, 14, Rounding::HalfEven, int64_t{1} << 16, false}, {20, 20, 20, Rounding::HalfUp, int64_t{1} << 20, false}};
+  for (const auto& c : cases) {
+    DatapathWidths w;
+    w.vec_frac = c.vec_frac;
+    w.mat_frac = c.mat_frac;
+    w.rot_frac = c.rot_frac;
+    w.rot_rounding = c.mode;
+    const bool fits = rotate_fits_int32(w, c.max_vec);
+    EXPECT_EQ(fits, c.fits) << "vec_frac " << c.vec_frac << ", mat_frac " << c.mat_frac << ", max_vec " << c.max_vec;
+    const RotateParams p(w);
+    const int32_t lo = -(int32_t{1} << (c.mat_frac + 1)), hi = (int32_t{1} << (c.mat_frac + 1)) - 1;
+    const auto v = static_cast<int32_t>(c.max_vec);
+    int64_t widest = 0;
+    for (int corner = 0; corner < (1 << 12); ++corner) {  // each of the 9 entries and 3 components at an end
+      Mat3q M{};
+      for (int i = 0; i < 9; ++i) M.m[i] = corner >> i & 1 ? hi : lo;
+      const Vec3q x{corner >> 9 & 1 ? v : -v, corner >> 10 & 1 ? v : -v, corner >> 11 & 1 ? v : -v};
+      for (int row = 0; row < 3; ++row) {
+        const int64_t sum = int64_t{M.m[3 * row]} * x.x + int64_t{M.m[3 * row + 1]} * x.y + int64_t{M.m[3 * row + 2]} * x.z;
+        widest = std::max(widest, (std::abs(sum) << p.shift.left) + p.shift.bias + 1);
+      }
+      if (!fits) continue;  // (the 32-bit accumulators would overflow: not evaluated)
+      const Vec3q a = rotate_as<int32_t>(M, x, p), b = rotate(M, x, p);
+      ASSERT_EQ(a.x, b.x);
+      ASSERT_EQ(a.y, b.y);
+      ASSERT_EQ(a.z, b.z);
+    }
+    if (fits) EXPECT_LE(widest, INT32_MAX) << "vec_frac " << c.vec_frac << ", mat_frac " << c.mat_frac;
+    else EXPECT_GT(widest, INT32_MAX) << "vec_frac " << c.vec_frac << ", mat_frac " << c.mat_frac;
+  }
 }

@@ -18,15 +18,20 @@ struct BilinearTaps {
   uint32_t wx, wy;  // weight of x1 / y1, Q0.texel_frac
 };
 
-// u, v: texel-space position Q.texel_frac (texel_frac >= 1).
-inline BilinearTaps bilinear_taps(int64_t u, int64_t v, int texel_frac, int32_t face_size) {
-  const int64_t half = int64_t{1} << (texel_frac - 1);
-  const int64_t mask = (int64_t{1} << texel_frac) - 1;
-  const int64_t us = u - half, vs = v - half;
+// u, v: texel-space position Q.texel_frac (texel_frac >= 1), in a type I holding them (int32_t for
+// positions below 2^31, as the functional model's lines hold them: no step is wider than u).
+template <class I>
+inline BilinearTaps bilinear_taps_as(I u, I v, int texel_frac, int32_t face_size) {
+  const I half = I{1} << (texel_frac - 1);
+  const I mask = (I{1} << texel_frac) - 1;
+  const I us = u - half, vs = v - half;
   const int32_t i0 = static_cast<int32_t>(us >> texel_frac), j0 = static_cast<int32_t>(vs >> texel_frac);
   auto clampi = [face_size](int32_t i) { return i < 0 ? 0 : (i >= face_size ? face_size - 1 : i); };
   return {clampi(i0), clampi(i0 + 1), clampi(j0), clampi(j0 + 1), static_cast<uint32_t>(us & mask),
           static_cast<uint32_t>(vs & mask)};
+}
+inline BilinearTaps bilinear_taps(int64_t u, int64_t v, int texel_frac, int32_t face_size) {
+  return bilinear_taps_as<int64_t>(u, v, texel_frac, face_size);
 }
 
 struct ChannelLayout {

@@ -57,45 +57,57 @@ class AddressGeneratorParams : public AddressArith {
   std::vector<uint32_t> table_;
 };
 
-struct FaceSelect {
+template <class I>
+struct FaceSelectOf {
   uint8_t face;
-  int64_t sc, tc, ma;  // ma = |major component|
+  I sc, tc, ma;  // ma = |major component|; |sc|, |tc| <= ma
 };
+using FaceSelect = FaceSelectOf<int64_t>;
 
 // Branch-free (selects only) so a line of pixels vectorises.
 // A face's 90 degrees over its S texels: the angle of one texel, priority
 // rendering's default threshold angle (theta_t 0 means "one texel").
 inline double texel_angle_rad(int face_size) { return (kPi / 2) / face_size; }
 
-inline FaceSelect select_face(const Vec3q& r) {
-  const int64_t x = r.x, y = r.y, z = r.z;
-  const int64_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
+// I: int64_t, or int32_t (every component of a Vec3q is an int32_t and |lo| of rot_frac + 2 bits fits).
+template <class I>
+inline FaceSelectOf<I> select_face_as(const Vec3q& r) {
+  const I x = r.x, y = r.y, z = r.z;
+  const I ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
   const bool is_x = ax >= ay && ax >= az;
   const bool is_y = !is_x && ay >= az;
   const bool pos = is_x ? x >= 0 : (is_y ? y >= 0 : z >= 0);
   // +X: -z,-y  -X: z,-y  +Y: x,z  -Y: x,-z  +Z: x,-y  -Z: -x,-y
-  const int64_t sc = is_x ? (pos ? -z : z) : (is_y ? x : (pos ? x : -x));
-  const int64_t tc = is_x ? -y : (is_y ? (pos ? z : -z) : -y);
-  const int64_t ma = is_x ? ax : (is_y ? ay : az);
+  const I sc = is_x ? (pos ? -z : z) : (is_y ? x : (pos ? x : -x));
+  const I tc = is_x ? -y : (is_y ? (pos ? z : -z) : -y);
+  const I ma = is_x ? ax : (is_y ? ay : az);
   const int axis = is_x ? 0 : (is_y ? 1 : 2);
   return {static_cast<uint8_t>(2 * axis + (pos ? 0 : 1)), sc, tc, ma};
 }
+inline FaceSelect select_face(const Vec3q& r) { return select_face_as<int64_t>(r); }
 
 // Face coordinate quotient Q1.quot_frac -> texel-space position Q.texel_frac, clamped to the face.
-inline int64_t quotient_to_position(int64_t q, const AddressArith& p) {
-  const int64_t one = int64_t{1} << p.quot_frac;
+template <class I>
+inline I quotient_to_position_as(I q, const AddressArith& p) {
+  const I one = I{1} << p.quot_frac;
   q = q > -one ? q : -one;
   q = q < one ? q : one;
-  int64_t pos = rshift_round((q + one) * p.face_size, p.quot_frac + 1 - p.texel_frac, p.texel_rounding.half_sel,
-                             p.texel_rounding.even);
+  I pos = rshift_round_as<I>((q + one) * static_cast<I>(p.face_size), static_cast<I>(p.quot_frac + 1 - p.texel_frac),
+                             static_cast<I>(p.texel_rounding.half_sel), static_cast<I>(p.texel_rounding.even));
   pos = pos > 0 ? pos : 0;
-  return pos < p.max_pos ? pos : p.max_pos;
+  return pos < static_cast<I>(p.max_pos) ? pos : static_cast<I>(p.max_pos);
 }
+inline int64_t quotient_to_position(int64_t q, const AddressArith& p) { return quotient_to_position_as<int64_t>(q, p); }
 
 // The reciprocal unit's aligned output for every |ma| (a simulation speed-up:
 // the same values, looked up instead of recomputed); empty when the domain is
 // too large or the output does not fit 32 bits, or for the exact divider.
 std::vector<uint32_t> tabulate_aligned_reciprocal(const AddressGeneratorParams& p, const DatapathWidths& w);
+
+// Whether the generator with the reciprocal table `memo` computes the same in 32-bit lanes
+// (select_face_as, multiply_aligned_reciprocal_as, quotient_to_position_as with int32_t): every product,
+// rounding and clamp of it fits 32 bits. False without a table.
+bool address_fits_int32(const AddressArith& p, const std::vector<uint32_t>& memo);
 
 // `aligned_memo`: optional table from tabulate_aligned_reciprocal (same result).
 inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p, const uint32_t* aligned_memo = nullptr) {

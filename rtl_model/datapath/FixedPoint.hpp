@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <type_traits>
 
 #include "common/Parameter.hpp"
 
@@ -39,9 +40,13 @@ struct RoundShift {
       case Rounding::HalfEven: bias = half - 1; even = 1; break;
     }
   }
-  constexpr int64_t apply(int64_t v) const {
-    const int64_t w = static_cast<int64_t>(static_cast<uint64_t>(v) << left);
-    return (w + bias + ((w >> right) & even)) >> right;
+  constexpr int64_t apply(int64_t v) const { return apply_as<int64_t>(v); }
+  // The same shift in a narrower type I, for loops that hold more lanes of it: the caller has proven that
+  // v << left plus the bias fits I (e.g. rotate_fits_int32), so every result is apply's.
+  template <class I>
+  constexpr I apply_as(I v) const {
+    const I w = static_cast<I>(static_cast<std::make_unsigned_t<I>>(v) << left);
+    return (w + static_cast<I>(bias) + ((w >> right) & static_cast<I>(even))) >> right;
   }
 };
 
@@ -51,9 +56,12 @@ struct SignedRange {
   SignedRange() = default;
   explicit SignedRange(int bits)
       : lo(-(int64_t{1} << (bits - 1))), hi((int64_t{1} << (bits - 1)) - 1) {}
-  constexpr int64_t clamp(int64_t v) const {
-    const int64_t a = v > lo ? v : lo;  // written as max then min so loops vectorise
-    return a < hi ? a : hi;
+  constexpr int64_t clamp(int64_t v) const { return clamp_as<int64_t>(v); }
+  // In a narrower type I holding lo and hi (a narrow loop's; see RoundShift::apply_as).
+  template <class I>
+  constexpr I clamp_as(I v) const {
+    const I a = v > static_cast<I>(lo) ? v : static_cast<I>(lo);  // written as max then min so loops vectorise
+    return a < static_cast<I>(hi) ? a : static_cast<I>(hi);
   }
   constexpr bool contains(int64_t v) const { return v >= lo && v <= hi; }
 };

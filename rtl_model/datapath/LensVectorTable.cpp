@@ -1,6 +1,9 @@
 #include "LensVectorTable.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+
 #include "common/Units.hpp"
 
 namespace arp::dp {
@@ -34,6 +37,7 @@ LensVectorTable::LensVectorTable(const LensConfig& lens, const VideoTimingConfig
         x_[i] = static_cast<int32_t>(quantise_real(dx * inv, vec_frac, bits));
         y_[i] = static_cast<int32_t>(quantise_real(dy * inv, vec_frac, bits));
         z_[i] = static_cast<int32_t>(quantise_real(dz * inv, vec_frac, bits));
+        for (const int32_t c : {x_[i], y_[i], z_[i]}) max_abs_ = std::max(max_abs_, std::abs(int64_t{c}));
       }
     }
   }

@@ -32,6 +32,9 @@ class LensVectorTable {
   const int32_t* row_y(int eye, int y) const { return y_.data() + index(eye, 0, y); }
   const int32_t* row_z(int eye, int y) const { return z_.data() + index(eye, 0, y); }
 
+  // The largest magnitude of any component in the table (the orientation unit's narrow-loop bound).
+  int64_t max_abs_component() const { return max_abs_; }
+
   // Horizontal position of eye e's lens centre, in pixels from the left edge.
   static double lens_center_x(const LensConfig& lens, const VideoTimingConfig& timing, int eye);
 
@@ -40,6 +43,7 @@ class LensVectorTable {
     return (static_cast<size_t>(eye) * h_ + static_cast<size_t>(y)) * w_ + static_cast<size_t>(x);
   }
   int w_, h_, eyes_, frac_;
+  int64_t max_abs_ = 0;
   std::vector<int32_t> x_, y_, z_;
 };
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "PipelineSchedule.hpp"
@@ -32,6 +33,17 @@ Quat from_yaw_pitch_roll_deg(double yaw, double pitch, double roll) {
   const Quat qp{std::cos(pitch * k), std::sin(pitch * k), 0, 0};
   const Quat qr{std::cos(roll * k), 0, 0, std::sin(roll * k)};
   return mul(mul(qy, qp), qr);
+}
+
+bool rotate_fits_int32(const DatapathWidths& w, int64_t max_vec) {
+  constexpr int64_t kMax = INT32_MAX;
+  const RotateParams p(w);
+  const int64_t max_m = int64_t{1} << (w.mat_frac + 1);  // the register's largest magnitude (mat_frac + 2 bits)
+  if (w.rot_frac + 2 > 32 || max_vec < 0 || max_m > kMax || p.shift.left > 30) return false;
+  if (max_vec > 0 && max_m > kMax / 3 / max_vec) return false;
+  const int64_t sum = 3 * max_m * max_vec;  // the largest accumulator magnitude
+  // Shifted left (an exact left shift) and rounded: the bias and the half-even bit on top.
+  return sum <= ((kMax - p.shift.bias - 1) >> p.shift.left);
 }
 
 Mat3q quantise_rotation(const Quat& q, int mat_frac) {

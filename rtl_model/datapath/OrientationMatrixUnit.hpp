@@ -42,16 +42,23 @@ struct RotateParams {
       : shift(w.mat_frac + w.vec_frac - w.rot_frac, w.rot_rounding), out(w.rot_frac + 2) {}
 };
 
-// Three multiply-accumulate rows; 64-bit accumulators hold any valid widths
-// (<= 30 x 30-bit products, three terms).
-inline Vec3q rotate(const Mat3q& M, const Vec3q& v, const RotateParams& p) {
-  const int64_t sx = int64_t{M.m[0]} * v.x + int64_t{M.m[1]} * v.y + int64_t{M.m[2]} * v.z;
-  const int64_t sy = int64_t{M.m[3]} * v.x + int64_t{M.m[4]} * v.y + int64_t{M.m[5]} * v.z;
-  const int64_t sz = int64_t{M.m[6]} * v.x + int64_t{M.m[7]} * v.y + int64_t{M.m[8]} * v.z;
-  return {static_cast<int32_t>(p.out.clamp(p.shift.apply(sx))),
-          static_cast<int32_t>(p.out.clamp(p.shift.apply(sy))),
-          static_cast<int32_t>(p.out.clamp(p.shift.apply(sz)))};
+// Three multiply-accumulate rows in accumulators of type I: int64_t holds any valid widths (<= 30 x
+// 30-bit products, three terms); int32_t the configurations rotate_fits_int32 admits.
+template <class I>
+inline Vec3q rotate_as(const Mat3q& M, const Vec3q& v, const RotateParams& p) {
+  const I sx = I{M.m[0]} * v.x + I{M.m[1]} * v.y + I{M.m[2]} * v.z;
+  const I sy = I{M.m[3]} * v.x + I{M.m[4]} * v.y + I{M.m[5]} * v.z;
+  const I sz = I{M.m[6]} * v.x + I{M.m[7]} * v.y + I{M.m[8]} * v.z;
+  return {static_cast<int32_t>(p.out.clamp_as<I>(p.shift.apply_as<I>(sx))),
+          static_cast<int32_t>(p.out.clamp_as<I>(p.shift.apply_as<I>(sy))),
+          static_cast<int32_t>(p.out.clamp_as<I>(p.shift.apply_as<I>(sz)))};
 }
+inline Vec3q rotate(const Mat3q& M, const Vec3q& v, const RotateParams& p) { return rotate_as<int64_t>(M, v, p); }
+
+// Whether rotate_as<int32_t> gives rotate's result for every matrix the orientation register can hold
+// (quantise_rotation: mat_frac + 2 bits) and every lens vector whose components are at most max_vec in
+// magnitude: the three products' sum, shifted and rounded, and the output range all fit 32 bits.
+bool rotate_fits_int32(const DatapathWidths& w, int64_t max_vec);
 
 // A timed orientation from the tracker.
 struct OrientationSample {

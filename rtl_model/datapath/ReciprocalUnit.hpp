@@ -3,6 +3,7 @@
 // Newton-Raphson steps, one multiply per quotient) or an exact divider.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "ArpConfig.hpp"
@@ -12,13 +13,19 @@ namespace arp::dp {
 
 // v >> s with the given rounding (s may be <= 0: exact left shift), branch-free.
 // half_sel is 1 for the round-to-nearest modes, even is 1 for HalfEven.
-inline int64_t rshift_round(int64_t v, int64_t s, int64_t half_sel, int64_t even) {
-  const int64_t left = s < 0 ? -s : 0, right = s > 0 ? s : 0;
-  const int64_t w = static_cast<int64_t>(static_cast<uint64_t>(v) << left);
-  const int64_t on = right > 0 ? 1 : 0;  // no fraction bits dropped: nothing to round
-  const int64_t ev = even & on;
-  const int64_t half = on * (int64_t{1} << (right - on));  // 2^(right-1), written so GCC vectorises it
+// I: the type the shift is computed in; int64_t holds every valid width. A narrower I gives the same
+// result where the caller has proven that v << max(-s, 0) plus half fits it (address_fits_int32).
+template <class I>
+inline I rshift_round_as(I v, I s, I half_sel, I even) {
+  const I left = s < 0 ? -s : 0, right = s > 0 ? s : 0;
+  const I w = static_cast<I>(static_cast<std::make_unsigned_t<I>>(v) << left);
+  const I on = right > 0 ? 1 : 0;  // no fraction bits dropped: nothing to round
+  const I ev = even & on;
+  const I half = on * (I{1} << (right - on));  // 2^(right-1), written so GCC vectorises it
   return (w + half_sel * (half - ev) + ((w >> right) & ev)) >> right;
+}
+inline int64_t rshift_round(int64_t v, int64_t s, int64_t half_sel, int64_t even) {
+  return rshift_round_as<int64_t>(v, s, half_sel, even);
 }
 
 struct RoundingSel {
@@ -84,9 +91,15 @@ inline int64_t aligned_reciprocal(const Reciprocal& r, int n_max) {
 // multiply_reciprocal bit for bit: rounding v * 2^k at a shift k larger
 // rounds v identically in every mode (floor, half up, and half even, whose
 // tie bit moves with the value), and |sc| <= m keeps sc * y' below 2^61.
+// In a type I where sc * aligned and the rounding fit (see rshift_round_as).
+template <class I>
+inline I multiply_aligned_reciprocal_as(I sc, I aligned, int recip_frac, int n_max, int quot_frac, const RoundingSel& rs) {
+  return rshift_round_as<I>(sc * aligned, static_cast<I>(recip_frac + n_max - 1 - quot_frac), static_cast<I>(rs.half_sel),
+                            static_cast<I>(rs.even));
+}
 inline int64_t multiply_aligned_reciprocal(int64_t sc, int64_t aligned, int recip_frac, int n_max, int quot_frac,
                                            const RoundingSel& rs) {
-  return rshift_round(sc * aligned, recip_frac + n_max - 1 - quot_frac, rs.half_sel, rs.even);
+  return multiply_aligned_reciprocal_as<int64_t>(sc, aligned, recip_frac, n_max, quot_frac, rs);
 }
 
 // sc / m as signed Q1.quot_frac by exact integer division with the rounding mode.

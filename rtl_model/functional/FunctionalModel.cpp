@@ -64,6 +64,9 @@ FunctionalModel::FunctionalModel(const ArpConfig& cfg)
   // Tabulate the reciprocal unit when its domain is small and its output fits 32 bits.
   memo_ = tabulate_aligned_reciprocal(addr_, cfg_.widths);
   if (!memo_.empty()) memo_view_.aligned = memo_.data();
+  // The narrow loops where the configuration's bounds fit 32 bits (the same results; tests/FunctionalModelTest).
+  memo_view_.int32_lanes = address_fits_int32(addr_, memo_);
+  rotate_int32_ = rotate_fits_int32(cfg_.widths, lens_.max_abs_component());
 }
 
 void FunctionalModel::render(const DisplayMemorySet& mem, const OrientationStream& orientation, int64_t frame,
@@ -105,7 +108,7 @@ passes::EyeSources FunctionalModel::eye_sources(const DisplayMemorySet& mem, int
     dense = dense && b.front_tiles_in_order();
     ++es.count;
   }
-  es.dense = dense && es.count > 1;
+  es.dense = dense && es.count > 0;
   return es;
 }
 
@@ -164,7 +167,7 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
           const int a = std::max(sg.x0, c0), b = std::min(sg.x1, c0 + n);
           if (a < b)
             passes::rotate_line(mats[sg.sample - s_lo], lens_.row_x(eye, y) + c0, lens_.row_y(eye, y) + c0,
-                                lens_.row_z(eye, y) + c0, a - c0, b - c0, rot_, rx.data(), ry.data(), rz.data());
+                                lens_.row_z(eye, y) + c0, a - c0, b - c0, rot_, rotate_int32_, rx.data(), ry.data(), rz.data());
         }
         if constexpr (D == DividerKind::ReciprocalLut)
           passes::address_line_lut(rx.data(), ry.data(), rz.data(), n, addr_, memo_view_, face.data(), u.data(), v.data());

@@ -42,6 +42,10 @@ class FunctionalModel {
 
   const dp::ArpConfig& config() const { return cfg_; }
   const dp::VideoTiming& timing() const { return timing_; }
+  // Whether the rotation and the address generator run in 32-bit lanes for this configuration
+  // (dp::rotate_fits_int32, dp::address_fits_int32): the same results, twice the pixels per vector.
+  bool rotates_in_32_bits() const { return rotate_int32_; }
+  bool addresses_in_32_bits() const { return memo_view_.int32_lanes; }
   const dp::LensVectorTable& lens() const { return lens_; }
   const dp::AddressGeneratorParams& address_params() const { return addr_; }
   const dp::RotateParams& rotate_params() const { return rot_; }
@@ -78,6 +82,7 @@ class FunctionalModel {
   // dp::reciprocal tabulated over its whole input domain (see LinePasses.hpp).
   std::vector<uint32_t> memo_;  // the aligned reciprocal of every |ma|
   passes::ReciprocalMemo memo_view_;
+  bool rotate_int32_ = false;  // dp::rotate_fits_int32 for this configuration and lens table
 };
 
 }  // namespace arp

@@ -17,38 +17,59 @@ constexpr int TM = DisplayMemoryBank::kTile - 1;
 constexpr int TR = DisplayMemoryBank::kTileStride;  // words a stored tile row (texels + apron)
 }  // namespace
 
-ARP_VECTOR_CLONES
-void rotate_line(const Mat3q& Mref, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
-                 const RotateParams& pref, int32_t* __restrict rx, int32_t* __restrict ry, int32_t* __restrict rz) {
+namespace {
+// I: the lanes' integer type, int32_t where the configuration's bounds fit it (twice the lanes of int64_t).
+template <class I>
+[[gnu::always_inline]] inline void rotate_impl(const Mat3q& Mref, const int32_t* lx, const int32_t* ly, const int32_t* lz,
+                                               int x0, int x1, const RotateParams& pref, int32_t* __restrict rx,
+                                               int32_t* __restrict ry, int32_t* __restrict rz) {
   const Mat3q M = Mref;  // locals: the stores below cannot alias them, so the loop vectorises
   const RotateParams p = pref;
   for (int x = x0; x < x1; ++x) {
-    const Vec3q r = rotate(M, Vec3q{lx[x], ly[x], lz[x]}, p);
+    const Vec3q r = rotate_as<I>(M, Vec3q{lx[x], ly[x], lz[x]}, p);
     rx[x] = r.x;
     ry[x] = r.y;
     rz[x] = r.z;
   }
 }
+}  // namespace
 
 ARP_VECTOR_CLONES
-void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n, const AddressGeneratorParams& pref,
-                      const ReciprocalMemo& memo_ref, int32_t* __restrict face, int32_t* __restrict u,
-                      int32_t* __restrict v) {
+void rotate_line(const Mat3q& M, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
+                 const RotateParams& p, bool int32_lanes, int32_t* rx, int32_t* ry, int32_t* rz) {
+  if (int32_lanes) rotate_impl<int32_t>(M, lx, ly, lz, x0, x1, p, rx, ry, rz);
+  else rotate_impl<int64_t>(M, lx, ly, lz, x0, x1, p, rx, ry, rz);
+}
+
+namespace {
+template <class I>
+[[gnu::always_inline]] inline void address_lut_impl(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n,
+                                                    const AddressArith& pref, const uint32_t* aligned,
+                                                    int32_t* __restrict face, int32_t* __restrict u,
+                                                    int32_t* __restrict v) {
   const AddressArith p = pref;  // a local copy: the stores cannot alias it
   const int rf = p.recip.recip_frac, qf = p.quot_frac, nm = p.n_max;
   const RoundingSel rs = p.div_rounding;
-  const ReciprocalMemo memo = memo_ref;
+  for (int i = 0; i < n; ++i) {
+    const FaceSelectOf<I> f = select_face_as<I>(Vec3q{rx[i], ry[i], rz[i]});
+    const I ya = static_cast<I>(aligned[static_cast<int32_t>(f.ma)]);  // ma < 2^16: a 32-bit index gathers
+    const bool zero = f.ma == 0;  // a zero vector addresses the face centre
+    const I qs = zero ? 0 : multiply_aligned_reciprocal_as<I>(f.sc, ya, rf, nm, qf, rs);
+    const I qt = zero ? 0 : multiply_aligned_reciprocal_as<I>(f.tc, ya, rf, nm, qf, rs);
+    face[i] = f.face;
+    u[i] = static_cast<int32_t>(quotient_to_position_as<I>(qs, p));
+    v[i] = static_cast<int32_t>(quotient_to_position_as<I>(qt, p));
+  }
+}
+}  // namespace
+
+ARP_VECTOR_CLONES
+void address_line_lut(const int32_t* rx, const int32_t* ry, const int32_t* rz, int n, const AddressGeneratorParams& p,
+                      const ReciprocalMemo& memo, int32_t* __restrict face, int32_t* __restrict u,
+                      int32_t* __restrict v) {
   if (memo.valid()) {
-    for (int i = 0; i < n; ++i) {
-      const FaceSelect f = select_face(Vec3q{rx[i], ry[i], rz[i]});
-      const int64_t ya = memo.aligned[static_cast<int32_t>(f.ma)];  // ma < 2^16: a 32-bit index gathers
-      const bool zero = f.ma == 0;  // a zero vector addresses the face centre
-      const int64_t qs = zero ? 0 : multiply_aligned_reciprocal(f.sc, ya, rf, nm, qf, rs);
-      const int64_t qt = zero ? 0 : multiply_aligned_reciprocal(f.tc, ya, rf, nm, qf, rs);
-      face[i] = f.face;
-      u[i] = static_cast<int32_t>(quotient_to_position(qs, p));
-      v[i] = static_cast<int32_t>(quotient_to_position(qt, p));
-    }
+    if (memo.int32_lanes) address_lut_impl<int32_t>(rx, ry, rz, n, p, memo.aligned, face, u, v);
+    else address_lut_impl<int64_t>(rx, ry, rz, n, p, memo.aligned, face, u, v);
   } else {
     for (int i = 0; i < n; ++i) {
       const CubeAddress a = generate_address(Vec3q{rx[i], ry[i], rz[i]}, p);
@@ -238,34 +259,35 @@ namespace {
 ARP_VECTOR_CLONES
 void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
                         int T, int32_t S, int tpr, int tpf, int32_t* __restrict tile, int32_t* __restrict w0,
-                        int32_t* __restrict dx, int32_t* __restrict dy, uint32_t* __restrict wx,
-                        uint32_t* __restrict wy) {
+                        int32_t* __restrict dy, uint32_t* __restrict wx, uint32_t* __restrict wy) {
   for (int i = 0; i < n; ++i) {
-    const BilinearTaps t = bilinear_taps(u[i], v[i], T, S);
+    const BilinearTaps t = bilinear_taps_as<int32_t>(u[i], v[i], T, S);  // u, v are 32-bit: so is every step
     // All four taps lie in the tile of (x0, y0): x1 - x0 and y1 - y0 are 0 or
     // 1, and a stored tile's apron holds its right and bottom neighbours' edges.
     tile[i] = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
     w0[i] = (t.y0 & TM) * TR + (t.x0 & TM);
-    dx[i] = t.x1 - t.x0;
     dy[i] = (t.y1 - t.y0) * TR;
-    wx[i] = t.wx;
+    // At a face's first or last column both horizontal taps are the same texel (x1 == x0). The loads then
+    // take the pair's right-hand word from the apron, and the weight of x1 is made 0: per channel
+    // c00 (W - 0) + c10' 0 = c00 W = c00 (W - wx) + c00 wx, the blend of the same texel twice, exactly.
+    wx[i] = t.x1 != t.x0 ? t.wx : 0;
     wy[i] = t.wy;
   }
 }
 
 // No vector clone: the baseline has no gathers, so the loads stay scalar. Each row of a quad is one
-// 16-byte pair, as in bilinear_load below: row0[2 i + column], row1[2 i + column].
+// 16-byte pair, as in bilinear_load below: row0[2 i + column], row1[2 i + column]. Dense: the memory's
+// tiles lie in its pool in table order (EyeSources::dense), so a quad's place is arithmetic, without the
+// tile table's dependent load.
+template <bool Dense>
 void bilinear_load_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
-                        const int32_t* __restrict tile, const int32_t* __restrict w0, const int32_t* __restrict dx,
-                        const int32_t* __restrict dy, int n, uint64_t* __restrict row0, uint64_t* __restrict row1) {
+                        const int32_t* __restrict tile, const int32_t* __restrict w0, const int32_t* __restrict dy,
+                        int n, uint64_t* __restrict row0, uint64_t* __restrict row1) {
   for (int i = 0; i < n; ++i) {
-    const uint64_t* q = pool + static_cast<int64_t>(offset[tile[i]]) + w0[i];
+    const int64_t at = Dense ? int64_t{tile[i]} * DisplayMemoryBank::kTileWords : int64_t{offset[tile[i]]};
+    const uint64_t* q = pool + at + w0[i];
     std::memcpy(row0 + 2 * i, q, 16);
     std::memcpy(row1 + 2 * i, q + dy[i], 16);
-    if (dx[i] == 0) [[unlikely]] {  // a face's first or last column: both taps the same texel
-      row0[2 * i + 1] = row0[2 * i];
-      row1[2 * i + 1] = row1[2 * i];
-    }
   }
 }
 
@@ -295,17 +317,18 @@ void bilinear_blend_64(const uint64_t* row0, const uint64_t* row1, const uint32_
   bilinear_blend_body<uint64_t>(row0, row1, wx, wy, n, T, L, cp, out);
 }
 
-void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int32_t* face, const int32_t* u,
-                          const int32_t* v, int n, int T, int32_t S, int tpr, int tpf, const ChannelLayout& L,
-                          const CompositionParams& cp, uint32_t* out) {
-  alignas(64) int32_t tile[kBlock], w0[kBlock], dx[kBlock], dy[kBlock];
+void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, bool dense, const int32_t* face,
+                          const int32_t* u, const int32_t* v, int n, int T, int32_t S, int tpr, int tpf,
+                          const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  alignas(64) int32_t tile[kBlock], w0[kBlock], dy[kBlock];
   alignas(64) uint32_t wx[kBlock], wy[kBlock];
   alignas(64) uint64_t row0[2 * kBlock], row1[2 * kBlock];
   const auto blend = blend_fits_32(T, L) ? bilinear_blend_32 : bilinear_blend_64;
   for (int i0 = 0; i0 < n; i0 += kBlock) {
     const int m = std::min(kBlock, n - i0);
-    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, tpr, tpf, tile, w0, dx, dy, wx, wy);
-    bilinear_load_impl(pool, offset, tile, w0, dx, dy, m, row0, row1);
+    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, tpr, tpf, tile, w0, dy, wx, wy);
+    if (dense) bilinear_load_impl<true>(pool, offset, tile, w0, dy, m, row0, row1);
+    else bilinear_load_impl<false>(pool, offset, tile, w0, dy, m, row0, row1);
     blend(row0, row1, wx, wy, m, T, L, cp, out + i0);
   }
 }
@@ -315,11 +338,11 @@ void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, const int
 // Pixels [i0, i0 + n) of a line of `line` pixels whose taps are all known: as nearest_load, the prefetch
 // (both rows of a quad) looks ahead across the block's end. Each row of a quad is its two neighbouring
 // words, read and stored as one 16-byte pair (the apron keeps the right-hand word within the stored tile,
-// and below it the apron row): w[k][row][2 i + column]. At a face's first or last column both taps are the same
-// texel (dx 0), and the pair is made so.
+// and below it the apron row): w[k][row][2 i + column]. At a face's first or last column the right-hand word
+// is the apron's, weighted 0 (bilinear_taps_impl).
 template <int K, bool Dense>
 void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, const int32_t* __restrict w0,
-                   const int32_t* __restrict dx, const int32_t* __restrict dy, int i0, int n, int line,
+                   const int32_t* __restrict dy, int i0, int n, int line,
                    uint64_t (*__restrict w)[2][2 * Block<K>::kPixels]) {
   if (i0 == 0)
     for (int i = 0; i < std::min(line, kAhead); ++i)
@@ -341,11 +364,6 @@ void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, con
       std::memcpy(&w[k][0][2 * i], q, 16);
       std::memcpy(&w[k][1][2 * i], q + dy[j], 16);
     }
-    if (dx[j] == 0) [[unlikely]]
-      for (int k = 0; k < p.count; ++k) {
-        w[k][0][2 * i + 1] = w[k][0][2 * i];
-        w[k][1][2 * i + 1] = w[k][1][2 * i];
-      }
   }
 }
 
@@ -418,18 +436,18 @@ void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const in
   // The whole line's taps first, so that the loads can look ahead across blocks.
   thread_local std::vector<int32_t> taps_of_thread;
   std::vector<int32_t>& taps = taps_of_thread;
-  taps.resize(6 * static_cast<size_t>(n));
+  taps.resize(5 * static_cast<size_t>(n));
   int32_t* tile = taps.data();
-  int32_t *w0 = tile + n, *dx = w0 + n, *dy = dx + n;
+  int32_t *w0 = tile + n, *dy = w0 + n;
   uint32_t* wx = reinterpret_cast<uint32_t*>(dy + n);
   uint32_t* wy = wx + n;
-  bilinear_taps_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dx, dy, wx, wy);
+  bilinear_taps_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dy, wx, wy);
   alignas(64) uint32_t row0[2 * B], row1[2 * B];
   alignas(64) uint64_t words[Block<K>::kMemories][2][2 * B];
   const auto blend = blend_fits_32(T, L) ? blend_colours_32 : blend_colours_64;
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
-    bilinear_load<K, Dense>(p, tile, w0, dx, dy, i0, m, n, words);
+    bilinear_load<K, Dense>(p, tile, w0, dy, i0, m, n, words);
     if constexpr (K == 2) compose_taps_2(words, p.count, m, cp, row0, row1);
     else if constexpr (K == 3) compose_taps_3(words, p.count, m, cp, row0, row1);
     else if constexpr (K == 4) compose_taps_4(words, p.count, m, cp, row0, row1);
@@ -448,23 +466,33 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
   else bilinear_memories_pass<K, false>(src, face, u, v, n, T, S, L, cp, out);
 }
 
-ARP_VECTOR_CLONES
-void nearest_single_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
-                         const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v,
-                         int n, int T, int tpr, int tpf, const CompositionParams& cpref, uint32_t* __restrict out) {
+template <bool Dense>
+[[gnu::always_inline]] inline void nearest_single_body(const uint64_t* __restrict pool, const int32_t* __restrict offset,
+                                                       const int32_t* __restrict face, const int32_t* __restrict u,
+                                                       const int32_t* __restrict v, int n, int T, int tpr, int tpf,
+                                                       const CompositionParams& cpref, uint32_t* __restrict out) {
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;
-    const uint64_t w = texel(pool, offset, face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), (ty & TM) * TR + (tx & TM));
+    const int32_t tile = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), word = (ty & TM) * TR + (tx & TM);
+    // Dense: the tiles in table order (EyeSources::dense), the place arithmetic; else through the table.
+    const uint64_t w = Dense ? pool[int64_t{tile} * DisplayMemoryBank::kTileWords + word] : texel(pool, offset, tile, word);
     out[i] = compose(&w, 1, cp).color;
   }
+}
+
+ARP_VECTOR_CLONES
+void nearest_single_impl(const uint64_t* pool, const int32_t* offset, bool dense, const int32_t* face, const int32_t* u,
+                         const int32_t* v, int n, int T, int tpr, int tpf, const CompositionParams& cp, uint32_t* out) {
+  if (dense) nearest_single_body<true>(pool, offset, face, u, v, n, T, tpr, tpf, cp, out);
+  else nearest_single_body<false>(pool, offset, face, u, v, n, T, tpr, tpf, cp, out);
 }
 }  // namespace
 
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
-  bilinear_single_impl(src.pool[0], src.offset[0], face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, L, cp,
-                       out);
+  bilinear_single_impl(src.dense ? src.dense_base[0] : src.pool[0], src.offset[0], src.dense, face, u, v, n, T, S,
+                       src.tiles_per_row, src.tiles_per_face, L, cp, out);
 }
 
 void bilinear_memories_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n, int T,
@@ -485,7 +513,8 @@ void bilinear_memories_line(const EyeSources& src, const int32_t* face, const in
 
 void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                 int T, const CompositionParams& cp, uint32_t* out) {
-  nearest_single_impl(src.pool[0], src.offset[0], face, u, v, n, T, src.tiles_per_row, src.tiles_per_face, cp, out);
+  nearest_single_impl(src.dense ? src.dense_base[0] : src.pool[0], src.offset[0], src.dense, face, u, v, n, T,
+                      src.tiles_per_row, src.tiles_per_face, cp, out);
 }
 
 }  // namespace arp::passes

@@ -25,6 +25,7 @@ namespace arp::passes {
 // domain is small (rot_frac <= 15) and entries fit 32 bits.
 struct ReciprocalMemo {
   const uint32_t* aligned = nullptr;
+  bool int32_lanes = false;  // dp::address_fits_int32: the generator's arithmetic in 32-bit lanes
   bool valid() const { return aligned != nullptr; }
 };
 
@@ -42,14 +43,15 @@ struct EyeSources {
   int tiles_per_row = 0, tiles_per_face = 0;
   // Every memory's tiles in its pool in table order (offset[k][t] == offset[k][0] + t x kTileWords for
   // every t): a texel of tile t is then dense_base[k] + t x kTileWords + word, the same arithmetic for
-  // every memory (the several-memory passes skip the tile tables).
+  // every memory (the passes skip the tile tables: one dependent load a texel less).
   bool dense = false;
   const uint64_t* dense_base[16];
 };
 
-// Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors.
+// Orientation matrix unit over [x0, x1): lens vectors -> rotated vectors. int32_lanes: the accumulators
+// in 32 bits, for configurations dp::rotate_fits_int32 admits (the same results, twice the lanes).
 void rotate_line(const dp::Mat3q& M, const int32_t* lx, const int32_t* ly, const int32_t* lz, int x0, int x1,
-                 const dp::RotateParams& p, int32_t* rx, int32_t* ry, int32_t* rz);
+                 const dp::RotateParams& p, bool int32_lanes, int32_t* rx, int32_t* ry, int32_t* rz);
 
 // Cube-face address generator over a line: face and texel-space position
 // (Q.texel_frac; below 2^30 for every valid configuration, so 32 bits).
