@@ -22,6 +22,7 @@ void LiveIntake::start(dp::OrientationStream& stream, int64_t start_ps, const st
   const LiveStart s = live_start(source_, start_ps);
   started_ = true;
   offset_ps_ = s.offset_ps;
+  start_ps_ = start_ps;
   before_start_ += s.before;
   tracker::PoseSample at_start;  // nothing received yet: the pose the register holds (its reset value), taken the same way
   if (s.pose) {
@@ -42,7 +43,12 @@ void LiveIntake::take(dp::OrientationStream& stream, const std::vector<tracker::
   const int64_t n = append_live_poses(stream, got, offset_ps_, stream_source, record_ ? &appended_ : nullptr);
   for (const auto& p : appended_) record_->append(p);
   taken_ += n;
-  before_start_ += static_cast<int64_t>(got.size()) - n;
+  // Every sample timed before the start is left out (the stream holds the pose at the start); the others
+  // left out stepped back in time.
+  int64_t before = 0;
+  for (const auto& p : got) before += p.time_ps + offset_ps_ < start_ps_ ? 1 : 0;
+  before_start_ += before;
+  out_of_order_ += static_cast<int64_t>(got.size()) - n - before;
 }
 
 int64_t LiveIntake::recorded() const { return record_ ? record_->written() : 0; }

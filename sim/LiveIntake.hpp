@@ -32,14 +32,16 @@ class LiveIntake {
   // pose at the start: the last sample received (live_start), or with nothing received the pose the
   // stream holds there. So a recording always begins at the start.
   void start(dp::OrientationStream& stream, int64_t start_ps, const std::string& stream_source);
-  // Takes what has arrived: appended in time order (anything earlier than the stream holds is counted
-  // with what was received before the start), and recorded as the stream holds it (normalised).
-  // After start().
+  // Takes what has arrived: appended in time order, and recorded as the stream holds it (normalised).
+  // A sample earlier than the stream's last is not taken: counted as received before the start when its
+  // time is before the run's start (a report's older samples, handed over after the start), else as out of
+  // order (a source whose times step back). After start().
   void take(dp::OrientationStream& stream, const std::vector<tracker::PoseSample>& got, const std::string& stream_source);
 
   // The samples taken, the pose at the start included.
   int64_t taken() const { return taken_; }
   int64_t before_start() const { return before_start_; }
+  int64_t out_of_order() const { return out_of_order_; }
   bool recording() const { return record_ != nullptr; }
   int64_t recorded() const;
   // Writes the recording in place (temporary file, then rename); without a call nothing is left behind.
@@ -48,7 +50,7 @@ class LiveIntake {
  private:
   tracker::PoseSource& source_;
   std::unique_ptr<tracker::TraceWriter> record_;
-  int64_t offset_ps_ = 0, taken_ = 0, before_start_ = 0;
+  int64_t offset_ps_ = 0, start_ps_ = 0, taken_ = 0, before_start_ = 0, out_of_order_ = 0;
   bool started_ = false;
   std::vector<tracker::PoseSample> appended_;
 };

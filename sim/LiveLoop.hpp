@@ -73,6 +73,7 @@ class LiveLoop {
   // Live input: the samples taken so far, and how many were received before the start.
   int64_t live_samples() const { return intake_ ? intake_->taken() : 0; }
   int64_t live_samples_before_start() const { return intake_ ? intake_->before_start() : 0; }
+  int64_t live_samples_out_of_order() const { return intake_ ? intake_->out_of_order() : 0; }
   // Writes --record-live's trace (what was taken up to now); without a call nothing is left behind.
   void commit_record();
 

@@ -963,13 +963,14 @@ RunSummary Session::run() {
     tracker::StreamStats st;
     live_->usb_stats(st);
     // What arrived after the last frame was taken is counted too, so every sample the device sent up to
-    // the stats is accounted for: samples + samples_before_start + samples_after_end + device_dropped_unconsumed
-    // >= device_samples.
+    // the stats is accounted for: samples + samples_before_start + samples_out_of_order + samples_after_end +
+    // device_dropped_unconsumed >= device_samples.
     std::vector<tracker::PoseSample> rest;
     live_->poll(rest, 0);
     r["live"] = {{"source", motion_source_},
                  {"samples", live_intake_->taken()},
                  {"samples_before_start", live_intake_->before_start()},
+                 {"samples_out_of_order", live_intake_->out_of_order()},
                  {"samples_after_end", rest.size()},
                  {"samples_held_max", live_held_max_}};
     tracker::for_each_counter(st, [&r](const char* name, int64_t v) { r["live"]["device_" + std::string(name)] = v; });

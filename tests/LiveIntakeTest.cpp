@@ -116,9 +116,10 @@ TEST(LiveIntake, ATrackerUnpluggedAcrossTheStartIsTimedFromItsClock) {
   EXPECT_EQ(took[1].time_ps, 4 * kMs);
 }
 
-// A sample earlier than the stream holds (a report's older samples, after a newer one) is not taken: it
-// is counted with those received before the start, and the recording is exactly what was taken, in order,
-// on the run's timeline -- the trace `run --trace` replays.
+// A sample earlier than the stream holds is not taken: counted as received before the start when it is
+// timed before the start (a report's older samples, handed over after it), else as out of order (its time
+// stepped back). The recording is exactly what was taken, in order, on the run's timeline -- the trace
+// `run --trace` replays.
 TEST(LiveIntake, LateSamplesAreCountedNotTakenAndTheRecordingIsWhatWasTaken) {
   arp::test::TempDir d;
   ScriptedLiveSource src;
@@ -129,7 +130,12 @@ TEST(LiveIntake, LateSamplesAreCountedNotTakenAndTheRecordingIsWhatWasTaken) {
   in.start(stream, 2 * kMs, "scripted");
   in.take(stream, {yaw_at(12, 2), yaw_at(11, 3), yaw_at(13, 4)}, "scripted");
   EXPECT_EQ(in.taken(), 3);
-  EXPECT_EQ(in.before_start(), 1);
+  EXPECT_EQ(in.before_start(), 0);
+  EXPECT_EQ(in.out_of_order(), 1);  // 11 ms after 12 ms, both after the start (10 ms on the source's clock)
+  in.take(stream, {yaw_at(9, 5), yaw_at(8, 6)}, "scripted");  // before the start, handed over late
+  EXPECT_EQ(in.taken(), 3);
+  EXPECT_EQ(in.before_start(), 2);
+  EXPECT_EQ(in.out_of_order(), 1);
   EXPECT_EQ(in.recorded(), 3);
   EXPECT_FALSE(std::filesystem::exists(d.file("took.csv")));  // written only on commit
   in.commit_record();

@@ -122,8 +122,8 @@ int run_live(LiveArgs& a) {
               render_ms / static_cast<double>(std::max<int64_t>(1, shown)),
               a.screenshot.empty() ? "" : shown > 0 ? "; screenshot " : "; no frame shown, no screenshot ", a.screenshot.c_str());
   if (!a.spec.live.empty())
-    std::printf("arpsim live: %" PRId64 " tracker samples taken (%" PRId64 " received before the start)%s%s\n", loop.live_samples(),
-                loop.live_samples_before_start(), a.spec.record_live.empty() ? "" : "; recorded in ", a.spec.record_live.c_str());
+    std::printf("arpsim live: %" PRId64 " tracker samples taken (%" PRId64 " received before the start, %" PRId64 " out of order)%s%s\n",
+                loop.live_samples(), loop.live_samples_before_start(), loop.live_samples_out_of_order(), a.spec.record_live.empty() ? "" : "; recorded in ", a.spec.record_live.c_str());
   if (const int sig = interrupt_signal()) return interrupted_exit_status(sig);
   return 0;
 }

@@ -179,7 +179,7 @@ double json_double(const std::string& text, const std::string& key) {
 // A live run's report: its "live" object (empty if none) and the counts every sample is accounted by.
 struct LiveCounts {
   std::string rep;
-  int64_t taken = -1, before = -1, after = -1, sent = -1, dropped = -1;
+  int64_t taken = -1, before = -1, out_of_order = -1, after = -1, sent = -1, dropped = -1;
 };
 LiveCounts read_live_report(const std::string& path) {
   const std::string all = read_text(path);
@@ -189,6 +189,7 @@ LiveCounts read_live_report(const std::string& path) {
   c.rep = all.substr(at);
   c.taken = json_int(c.rep, "samples");
   c.before = json_int(c.rep, "samples_before_start");
+  c.out_of_order = json_int(c.rep, "samples_out_of_order");
   c.after = json_int(c.rep, "samples_after_end");
   c.sent = json_int(c.rep, "device_samples");
   c.dropped = json_int(c.rep, "device_dropped_unconsumed");
@@ -224,7 +225,8 @@ TEST(RiftCommand, ARunSlowerThanTheDisplayTakesEverySample) {
   const int64_t taken = c.taken, before = c.before, after = c.after, sent = c.sent, dropped = c.dropped;
   ASSERT_GT(sent, 100) << rep.substr(0, 800);
   EXPECT_EQ(dropped, 0);
-  EXPECT_GE(taken + before + after + dropped, sent);  // every sample accounted for
+  EXPECT_EQ(c.out_of_order, 0);  // the device's clock never steps back, nor does the stream's timeline
+  EXPECT_GE(taken + before + c.out_of_order + after + dropped, sent);  // every sample accounted for
   // What the pipeline took, as it took it (--record-live): every one, in the device's order, each the
   // device's next sample -- sample j of the device fused is the motion after j + 1 ms, the first taken
   // being the device's sample `before` -- on steps of its 1 ms (less while the clock sheds the first
@@ -273,6 +275,7 @@ TEST(RiftCommand, ATransportSlowerThanTheDeviceStillFeedsTheRun) {
   ASSERT_FALSE(c.rep.empty()) << read_text(d.file("r.json"));
   const std::string& rep = c.rep;
   const int64_t taken = c.taken, before = c.before;
+  EXPECT_EQ(c.out_of_order, 0) << rep;
   EXPECT_GE(c.taken + c.before + c.after + c.dropped, c.sent) << rep;  // (the device's count is read before the last drain)
   // A live run goes at the display's pace or slower: it takes what arrives for kFrames / 60 s at least, up to
   // kPerSecond a second -- 50 samples, fewer from an emulator starved further. A fifth of that is the bound:
