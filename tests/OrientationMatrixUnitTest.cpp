@@ -213,4 +213,28 @@ TEST(OrientationMatrixUnit, ThirtyTwoBitLanesGiveTheSameVectorsWhereTheCheckSays
     if (fits) EXPECT_LE(widest, INT32_MAX) << "vec_frac " << c.vec_frac << ", mat_frac " << c.mat_frac;
     else EXPECT_GT(widest, INT32_MAX) << "vec_frac " << c.vec_frac << ", mat_frac " << c.mat_frac;
   }
+  // Values far inside 32 bits, but a right shift of 32 (vec_frac 24 + mat_frac 14 - rot_frac 6) is undefined
+  // for an int32_t: refused. At 31 (rot_frac 7) the shift is defined and the result rotate's (found by a
+  // review of 9ec1a61: with Floor rounding and a vector of 1 the check said yes at 32).
+  for (const int rot_frac : {6, 7}) {
+    DatapathWidths w;
+    w.vec_frac = 24;
+    w.mat_frac = 14;
+    w.rot_frac = rot_frac;
+    w.rot_rounding = Rounding::Floor;
+    const RotateParams p(w);
+    ASSERT_EQ(p.shift.right, 38 - rot_frac);
+    EXPECT_EQ(rotate_fits_int32(w, 1), rot_frac == 7);
+    if (rot_frac == 6) continue;
+    const int32_t lo = -(int32_t{1} << 15), hi = (int32_t{1} << 15) - 1;
+    for (int corner = 0; corner < (1 << 12); ++corner) {
+      Mat3q M{};
+      for (int i = 0; i < 9; ++i) M.m[i] = corner >> i & 1 ? hi : lo;
+      const Vec3q x{corner >> 9 & 1 ? 1 : -1, corner >> 10 & 1 ? 1 : -1, corner >> 11 & 1 ? 1 : -1};
+      const Vec3q a = rotate_as<int32_t>(M, x, p), b = rotate(M, x, p);
+      ASSERT_EQ(a.x, b.x);
+      ASSERT_EQ(a.y, b.y);
+      ASSERT_EQ(a.z, b.z);
+    }
+  }
 }

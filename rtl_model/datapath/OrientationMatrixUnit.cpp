@@ -39,7 +39,9 @@ bool rotate_fits_int32(const DatapathWidths& w, int64_t max_vec) {
   constexpr int64_t kMax = INT32_MAX;
   const RotateParams p(w);
   const int64_t max_m = int64_t{1} << (w.mat_frac + 1);  // the register's largest magnitude (mat_frac + 2 bits)
-  if (w.rot_frac + 2 > 32 || max_vec < 0 || max_m > kMax || p.shift.left > 30) return false;
+  // A shift of an int32_t by 32 or more is undefined: refused whatever the values (with Floor rounding no
+  // bias catches it below; unreachable from a lens table, whose unit vectors keep the shift below 29).
+  if (w.rot_frac + 2 > 32 || max_vec < 0 || max_m > kMax || p.shift.left > 30 || p.shift.right > 31) return false;
   if (max_vec > 0 && max_m > kMax / 3 / max_vec) return false;
   const int64_t sum = 3 * max_m * max_vec;  // the largest accumulator magnitude
   // Shifted left (an exact left shift) and rounded: the bias and the half-even bit on top.
