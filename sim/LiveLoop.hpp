@@ -70,7 +70,8 @@ class LiveLoop {
   int64_t shown_frames() const { return next_ - dropped_; }
   // Orientation samples held in memory now (the window around the frame, not the whole motion).
   size_t samples_held() const { return stream_.held(); }
-  // Live input: the samples taken so far, and how many were received before the start.
+  // Live input: the samples taken so far, and how many were set aside: timed before the start, or stepping back
+  // in time after it (LiveIntake).
   int64_t live_samples() const { return intake_ ? intake_->taken() : 0; }
   int64_t live_samples_before_start() const { return intake_ ? intake_->before_start() : 0; }
   int64_t live_samples_out_of_order() const { return intake_ ? intake_->out_of_order() : 0; }
