@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "PixelTokens.hpp"
+#include "RingIndex.hpp"
 
 // The FIFO operations run several times per pixel clock: always inline (the
 // fast level ticks every stage in one function, past the inliner's budget).
@@ -41,7 +42,7 @@ class ClockedFifo {
   ARP_FIFO_OP bool can_write() const { return count_ < depth_ && !write_pending_; }
   ARP_FIFO_OP void write(const T& v, int64_t cycle) {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
-    copy_token(buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()], v);
+    copy_token(buf_[ring_index(head_ + static_cast<size_t>(count_), buf_.size())], v);
     write_pending_ = true;
     cycle_ = cycle;
   }
@@ -51,7 +52,7 @@ class ClockedFifo {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
     write_pending_ = true;
     cycle_ = cycle;
-    return buf_[(head_ + static_cast<size_t>(count_)) % buf_.size()];
+    return buf_[ring_index(head_ + static_cast<size_t>(count_), buf_.size())];
   }
   void note_blocked() { ++blocked_; }
 
@@ -69,7 +70,7 @@ class ClockedFifo {
     if (!read_pending_ && !write_pending_) return;
     account(cycle_ + 1);
     if (read_pending_) {
-      head_ = (head_ + 1) % buf_.size();
+      head_ = ring_index(head_ + 1, buf_.size());
       --count_;
       ++reads_;
       read_pending_ = false;

@@ -16,14 +16,29 @@ class CompositionStage : public RegisteredStage<CompositionStage, FetchToken, Co
         taps_(ctx.config().pipeline.aa == dp::AaMode::Bilinear ? 4 : 1) {}
 
   void compute(const FetchToken& in, ComposedToken& t) const {
-    for_each_eye(in, t, [&](int k) {
-      t.wx[k] = in.wx[k];
-      t.wy[k] = in.wy[k];
-      for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], memories_, comp_).color;
-    });
+    static_assert(dp::kCompositionInputs == 8, "one case per memory count");
+    switch (memories_) {  // the count as a constant: compose's compares unrolled into selects
+      case 1: return compose_taps<1>(in, t);
+      case 2: return compose_taps<2>(in, t);
+      case 3: return compose_taps<3>(in, t);
+      case 4: return compose_taps<4>(in, t);
+      case 5: return compose_taps<5>(in, t);
+      case 6: return compose_taps<6>(in, t);
+      case 7: return compose_taps<7>(in, t);
+      default: return compose_taps<8>(in, t);
+    }
   }
 
  private:
+  template <int N>
+  void compose_taps(const FetchToken& in, ComposedToken& t) const {
+    for_each_eye(in, t, [&](int k) {
+      t.wx[k] = in.wx[k];
+      t.wy[k] = in.wy[k];
+      for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], N, comp_).color;
+    });
+  }
+
   dp::CompositionParams comp_;
   int memories_, taps_;
 };

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include "rtl_model/datapath/ArpConfig.hpp"
@@ -78,7 +79,8 @@ inline void for_each_eye(const In& in, Out& out, Fn&& fn) {
 }
 
 // Copying a token into a FIFO: whole, except the large fetch token, of which
-// only the words in use are copied (the rest is never read).
+// only the taps in use are copied (the rest is never read): each a whole row
+// of kCompositionInputs words, a few vector moves, rather than word by word.
 template <class T>
 inline void copy_token(T& dst, const T& src) {
   dst = src;
@@ -91,8 +93,7 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
   for (int k = 0; k < src.slot.eye_count; ++k) {
     dst.wx[k] = src.wx[k];
     dst.wy[k] = src.wy[k];
-    for (int t = 0; t < src.taps; ++t)
-      for (int m = 0; m < src.memories; ++m) dst.words[k][t][m] = src.words[k][t][m];
+    for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], sizeof src.words[k][t]);
   }
 }
 

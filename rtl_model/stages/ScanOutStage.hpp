@@ -96,6 +96,7 @@ class ScanOutStage {
     uint32_t rgb = 0;
   };
   size_t ring(int64_t c) const {
+    if (latency_ == 1) return 0;  // (the default: no divide)
     const int64_t m = c % latency_;
     return static_cast<size_t>(m < 0 ? m + latency_ : m);
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "PixelTokens.hpp"
+#include "RingIndex.hpp"
 
 namespace arp::stage {
 
@@ -58,7 +59,7 @@ class StagePipe {
     const bool pops = head_done && out_ready;
     ready_in = count_ < latency_ || pops;
     if (ready_in && in.can_read()) {
-      Entry& e = ring_[(head_ + static_cast<size_t>(count_)) % ring_.size()];
+      Entry& e = ring_[ring_index(head_ + static_cast<size_t>(count_), ring_.size())];
       compute(in.front(), e.value);
       e.taken = cycle;
       e.done = cycle + latency_ - 1;
@@ -71,7 +72,7 @@ class StagePipe {
         out.write(e.value, cycle);
         if (probe_data) probe(e.value, data_out);
         record(cycle + 1 - e.taken);
-        head_ = (head_ + 1) % ring_.size();
+        head_ = ring_index(head_ + 1, ring_.size());
         --count_;
         valid_out = true;
       } else {
@@ -104,7 +105,7 @@ class StagePipe {
     Out value{};
     int64_t taken = 0, done = 0;
   };
-  const Entry& entry(int i) const { return ring_[(head_ + static_cast<size_t>(i)) % ring_.size()]; }
+  const Entry& entry(int i) const { return ring_[ring_index(head_ + static_cast<size_t>(i), ring_.size())]; }
   void record(int64_t c) {
     ++n_;
     sum_ += c;

@@ -9,7 +9,7 @@ VideoTimingStage::VideoTimingStage(const StageContext& ctx)
 
 void VideoTimingStage::grow() {
   std::vector<PixelSlot> r(ring_.size() * 2);
-  for (size_t i = 0; i < count_; ++i) r[i] = ring_[(head_ + i) % ring_.size()];
+  for (size_t i = 0; i < count_; ++i) r[i] = ring_[ring_index(head_ + i, ring_.size())];
   ring_.swap(r);
   head_ = 0;
 }

@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "RingIndex.hpp"
 #include "ScanTiming.hpp"
 #include "StageContext.hpp"
 #include "StageInfo.hpp"
@@ -41,7 +42,7 @@ class VideoTimingStage {
     if (due > 0) {
       if (out.can_write()) {
         out.write(ring_[head_], cycle);
-        head_ = (head_ + 1) % ring_.size();
+        head_ = ring_index(head_ + 1, ring_.size());
         --count_;
         issued = true;
       } else {
@@ -87,7 +88,7 @@ class VideoTimingStage {
   // The slot issued at clock `issue_cycle`, if any, onto the ring's tail.
   bool decode_into_ring(int64_t issue_cycle) {
     if (count_ == ring_.size()) grow();
-    PixelSlot& s = ring_[(head_ + count_) % ring_.size()];
+    PixelSlot& s = ring_[ring_index(head_ + count_, ring_.size())];
     if (!scan_.decode(issue_cycle + lead_, s, issue_cursor_)) return false;
     ++count_;
     return true;

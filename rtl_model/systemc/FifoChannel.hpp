@@ -1,7 +1,9 @@
 // The clocked FIFO as a SystemC primitive channel: stages reach it through
 // ports of its two interfaces; reads and writes take effect in the update
 // phase of the clock edge's delta cycle, like registers, through the same
-// core (stage::ClockedFifo) the fast model uses.
+// core (stage::ClockedFifo) the fast model uses. Final: a stage module whose
+// port is bound to one calls it directly (StageModule), not through the
+// interface's virtual functions.
 #pragma once
 #include <systemc>
 
@@ -29,7 +31,7 @@ class FifoReadIf : virtual public sc_core::sc_interface {
 };
 
 template <class T>
-class FifoChannel : public sc_core::sc_prim_channel, public FifoWriteIf<T>, public FifoReadIf<T> {
+class FifoChannel final : public sc_core::sc_prim_channel, public FifoWriteIf<T>, public FifoReadIf<T> {
  public:
   FifoChannel(const char* name, int depth) : sc_core::sc_prim_channel(name), core_(name, depth) {}
 

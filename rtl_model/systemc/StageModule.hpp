@@ -96,17 +96,38 @@ class StageModule : public sc_core::sc_module {
   S stage_;
 
  private:
+  // Ports bound to FifoChannels (every pipeline's and bench's) are called
+  // directly, the FIFO's operations inlined into the stage's tick; any other
+  // channel with the interfaces goes through their virtual functions.
   void on_clock() {
-    if constexpr (std::is_void_v<Input>) stage_.tick(clk->cycle(), *out_);
-    else if constexpr (std::is_void_v<Output>) stage_.tick(clk->cycle(), *in_);
-    else stage_.tick(clk->cycle(), *in_, *out_);
+    const int64_t cycle = clk->cycle();
+    if constexpr (std::is_void_v<Input>) {
+      if (out_fifo_) stage_.tick(cycle, *out_fifo_);
+      else stage_.tick(cycle, *out_);
+    } else if constexpr (std::is_void_v<Output>) {
+      if (in_fifo_) stage_.tick(cycle, *in_fifo_);
+      else stage_.tick(cycle, *in_);
+    } else {
+      if (in_fifo_ && out_fifo_) stage_.tick(cycle, *in_fifo_, *out_fifo_);
+      else stage_.tick(cycle, *in_, *out_);
+    }
   }
   void end_of_elaboration() override {
-    if constexpr (!std::is_void_v<Input>) in_ = input.operator->();
-    if constexpr (!std::is_void_v<Output>) out_ = output.operator->();
+    if constexpr (!std::is_void_v<Input>) {
+      in_ = input.operator->();
+      in_fifo_ = dynamic_cast<FifoChannel<Input>*>(in_);
+    }
+    if constexpr (!std::is_void_v<Output>) {
+      out_ = output.operator->();
+      out_fifo_ = dynamic_cast<FifoChannel<Output>*>(out_);
+    }
   }
-  std::conditional_t<std::is_void_v<Input>, void*, FifoReadIf<Input>*> in_ = nullptr;
-  std::conditional_t<std::is_void_v<Output>, void*, FifoWriteIf<Output>*> out_ = nullptr;
+  template <template <class> class C, class T>
+  using Ptr = std::conditional_t<std::is_void_v<T>, void*, C<T>*>;  // (no input or output: unused)
+  Ptr<FifoReadIf, Input> in_ = nullptr;
+  Ptr<FifoWriteIf, Output> out_ = nullptr;
+  Ptr<FifoChannel, Input> in_fifo_ = nullptr;
+  Ptr<FifoChannel, Output> out_fifo_ = nullptr;
 };
 
 }  // namespace arp::scm
