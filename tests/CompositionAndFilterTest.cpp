@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "rtl_model/datapath/AntiAliasingFilter.hpp"
 #include "rtl_model/datapath/CompositionUnit.hpp"
 #include "rtl_model/datapath/HmdScanOut.hpp"
+#include "rtl_model/stages/CompositionStage.hpp"
 
 using namespace arp::dp;
 
@@ -39,6 +41,48 @@ TEST(CompositionUnit, NearestWinsTiesGoToTheLowerMemoryEmptyShowsBackground) {
   {
     const uint64_t w[2] = {E, word(9, f.empty_depth() - 1)};  // the farthest real depth still shows
     EXPECT_EQ(compose(w, 2, p).color, 9u);
+  }
+}
+
+// The timed models' composition stage takes the memory count as a constant (one case per count): each
+// count composes as the rule says -- the smallest depth code, the lower memory on a tie, the background
+// where all are empty -- for both eyes and every tap, with the words past the count ignored.
+TEST(CompositionUnit, TheStageComposesEveryMemoryCountByTheRule) {
+  for (int n = 1; n <= kCompositionInputs; ++n) {
+    arp::stage::TimedInputs in;
+    in.config.memory.count = n;
+    in.config.memory.background = {10, 20, 30};
+    in.config.pipeline.aa = AaMode::Bilinear;
+    const arp::stage::StageContext ctx{in, PipelineSchedule(in.config)};
+    const arp::stage::CompositionStage stage(ctx);
+    const MemoryFormat f(in.config.memory);
+    const uint32_t empty = f.empty_depth(), background = f.pack_rgb8(10, 20, 30);
+    std::mt19937 rng(static_cast<uint32_t>(n));
+    for (int i = 0; i < 400; ++i) {
+      arp::stage::FetchToken t{};
+      t.slot.eye_count = 2;
+      t.memories = static_cast<uint8_t>(n);
+      t.taps = 4;
+      for (int e = 0; e < 2; ++e)
+        for (int tap = 0; tap < 4; ++tap)
+          for (int m = 0; m < kCompositionInputs; ++m) {
+            // Few depths, so ties are common; a quarter empty; past the count, the nearest possible word.
+            const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+            const uint32_t depth = m >= n ? 0 : (kind == 0 ? empty : std::uniform_int_distribution<uint32_t>(0, 3)(rng));
+            t.words[e][tap][m] = word(std::uniform_int_distribution<uint32_t>(0, 0xffffff)(rng), depth);
+          }
+      arp::stage::ComposedToken out{};
+      stage.compute(t, out);
+      for (int e = 0; e < 2; ++e)
+        for (int tap = 0; tap < 4; ++tap) {
+          const uint64_t* w = t.words[e][tap];
+          int best = 0;
+          for (int m = 1; m < n; ++m)
+            if ((w[m] >> 32) < (w[best] >> 32)) best = m;
+          const uint32_t want = (w[best] >> 32) == empty ? background : static_cast<uint32_t>(w[best]);
+          ASSERT_EQ(out.tap_color[e][tap], want) << n << " memories, token " << i << " eye " << e << " tap " << tap;
+        }
+    }
   }
 }
 

@@ -62,6 +62,33 @@ struct Result {
   std::vector<Out> got;
   std::vector<int64_t> write_cycle, read_cycle;
   size_t phase_one = 0;
+  int64_t forwarded_calls = 0;  // calls the module made through ForwardingFifos
+};
+
+// A channel with the FIFO's two interfaces that is not a FifoChannel: it
+// forwards every call to one and counts them. A stage module bound to it
+// calls it through the interfaces' virtual functions (StageModule), not
+// directly as it calls a FifoChannel: a bench through these shows both paths
+// behave alike.
+template <class T>
+class ForwardingFifo : public sc_core::sc_channel, public scm::FifoWriteIf<T>, public scm::FifoReadIf<T> {
+ public:
+  ForwardingFifo(sc_core::sc_module_name n, scm::FifoChannel<T>& f) : sc_core::sc_channel(n), f_(f) {}
+  bool can_write() const override { return counted().can_write(); }
+  void write(const T& v, int64_t cycle) override { counted().write(v, cycle); }
+  T& emplace(int64_t cycle) override { return counted().emplace(cycle); }
+  void note_blocked() override { counted().note_blocked(); }
+  bool can_read() const override { return counted().can_read(); }
+  const T& front() const override { return counted().front(); }
+  void read(int64_t cycle) override { counted().read(cycle); }
+  mutable int64_t calls = 0;
+
+ private:
+  scm::FifoChannel<T>& counted() const {
+    ++calls;
+    return f_;
+  }
+  scm::FifoChannel<T>& f_;
 };
 
 // With ARPSIM_BENCH_VCD=DIR, a bench writes DIR/bench_<test>.vcd: the clock,
@@ -95,7 +122,7 @@ class BenchWaveform {
 template <class Module>
 Result<typename Module::Input, typename Module::Output> run_bench(World& w, std::vector<typename Module::Input> stimulus,
                                                                   int64_t cycles, std::unique_ptr<Module>* keep = nullptr,
-                                                                  int64_t phase_two_cycle = 0) {
+                                                                  int64_t phase_two_cycle = 0, bool through_interfaces = false) {
   using In = typename Module::Input;
   using Out = typename Module::Output;
   sc_set_time_resolution(1, SC_PS);
@@ -117,8 +144,15 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
     const Module& d = *dut;
     host_gen.gate([&d](int64_t n) { return d.host_port().next_active_cycle(n); });
   }
-  dut->input(in_fifo);
-  dut->output(out_fifo);
+  ForwardingFifo<In> in_forward("stimulus_forward", in_fifo);
+  ForwardingFifo<Out> out_forward("response_forward", out_fifo);
+  if (through_interfaces) {
+    dut->input(in_forward);
+    dut->output(out_forward);
+  } else {
+    dut->input(in_fifo);
+    dut->output(out_fifo);
+  }
   ResponseMonitor<Out> mon("monitor", drv.phase_one(), 23);
   mon.clk(gen);
   mon.response_in(out_fifo);
@@ -131,6 +165,7 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   r.write_cycle = drv.write_cycle;
   r.read_cycle = mon.read_cycle;
   r.phase_one = drv.phase_one();
+  r.forwarded_calls = in_forward.calls + out_forward.calls;
   if (keep) *keep = std::move(dut);
   return r;
 }
@@ -425,7 +460,8 @@ TEST(ModuleBench, CompositionUnit) {
       }
 }
 
-TEST(ModuleBench, AntiAliasingFilter) {
+// The filter's bench, its module bound to the FIFO channels or (through_interfaces) to ForwardingFifos.
+void filter_bench(bool through_interfaces) {
   World w;
   w.build();
   std::mt19937 rng(6);
@@ -444,8 +480,13 @@ TEST(ModuleBench, AntiAliasingFilter) {
     }
     stim.push_back(t);
   }
-  auto r = run_bench<scm::AntiAliasingFilter>(w, stim, 2600);
+  auto r = run_bench<scm::AntiAliasingFilter>(w, stim, 2600, nullptr, 0, through_interfaces);
   check_flow(r, lat(w, dp::Stage::Filter));
+  if (through_interfaces) {
+    EXPECT_GT(r.forwarded_calls, 2 * static_cast<int64_t>(stim.size())) << "the module must have called the forwarding channels";
+  } else {
+    EXPECT_EQ(r.forwarded_calls, 0);
+  }
   const dp::ChannelLayout L{dp::MemoryFormat(w.c.memory)};
   for (size_t i = 0; i < r.got.size(); ++i)
     for (int e = 0; e < 2; ++e) {
@@ -461,6 +502,12 @@ TEST(ModuleBench, AntiAliasingFilter) {
       }
     }
 }
+
+TEST(ModuleBench, AntiAliasingFilter) { filter_bench(false); }
+
+// A stage bound to another channel with the FIFO interfaces (not a
+// FifoChannel) takes the interfaces' path: the same pixels at the same clocks.
+TEST(ModuleBench, AntiAliasingFilterThroughTheInterfaces) { filter_bench(true); }
 
 // The video timing generator issues every active pixel of the run, in scan
 // order, issue_lead clocks before its slot, with latch points per the policy.
