@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
@@ -45,6 +46,58 @@ int64_t plus_saturated(int64_t a, int64_t b) { return a > INT64_MAX - b ? INT64_
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+
+// The files a run writes into --out-dir, named in this one place: frame n's image and its photon times.
+struct OutDirFile {
+  const char* what;  // for a message
+  const char* prefix;
+  const char* extension;
+  std::string name(int64_t frame) const {
+    char n[64];
+    std::snprintf(n, sizeof n, "%s%06" PRId64 "%s", prefix, frame, extension);
+    return n;
+  }
+};
+constexpr OutDirFile kFrameImage{"image", "frame_", ".png"}, kPhotonTimes{"photon times", "photon_", ".csv"};
+
+// A folder's path for comparing with another's (no trailing separator).
+std::string folder_key(const std::string& dir) {
+  fs::path p = fs::path(dir.empty() ? "." : dir).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
+  return p.string();
+}
+
+// An input or an output the run would overwrite with a file it writes into
+// --out-dir, or an output that is that folder: refused before any work. The
+// frames written are first + k for k = 0, every, 2 every, ... below `frames`.
+void check_out_dir_files(const OutputSpec& o, int64_t first, int64_t frames, const std::vector<NamedPath>& outputs,
+                         const std::vector<NamedPath>& inputs) {
+  if (o.every <= 0) return;
+  const std::string out = folder_key(o.out_dir);
+  std::vector<NamedPath> files = outputs;
+  files.insert(files.end(), inputs.begin(), inputs.end());
+  for (size_t i = 0; i < files.size(); ++i) {
+    const NamedPath& f = files[i];
+    if (f.path.empty() || f.path == "-") continue;
+    if (i < outputs.size() && same_file(folder_key(f.path), out))
+      throw InputError(f.option, f.path, "is the --out-dir folder the frames are written into");
+    const fs::path p(f.path);
+    if (!same_file(folder_key(p.has_parent_path() ? p.parent_path().string() : "."), out)) continue;
+    const std::string name = p.filename().string();
+    for (const OutDirFile* kind : {&kFrameImage, &kPhotonTimes}) {
+      if (kind == &kPhotonTimes && !o.photon_times) continue;
+      const std::string prefix = kind->prefix;
+      if (name.rfind(prefix, 0) != 0) continue;
+      int64_t n = 0;
+      const char* digits = name.c_str() + prefix.size();
+      const auto [end, ec] = std::from_chars(digits, name.c_str() + name.size(), n);
+      if (ec != std::errc() || end == digits || kind->name(n) != name) continue;
+      if (n >= first && n - first < frames && (n - first) % o.every == 0)
+        throw InputError(f.option, f.path,
+                         "is where --out-dir puts frame " + std::to_string(n) + "'s " + kind->what + "; it would be overwritten");
+    }
+  }
+}
 
 // "A:B" -> two numbers; InputError naming the option otherwise.
 std::pair<double, double> parse_window(const std::string& opt, const std::string& s) {
@@ -136,16 +189,15 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (h.warp && s.memories.renderer != "software")
     throw InputError("--renderer", s.memories.renderer, "region warping (--warp) moves vertices on the CPU: it needs --renderer software");
   if (o.every > 0 || o.photon_times) check_output_folder("--out-dir", o.out_dir);
-  check_output_paths({{"--report", o.report}, {"--csv", o.csv}, {"--host-csv", o.host_csv}, {"--tear-image", o.tear_image},
-                      {"--record-live", s.record_live},
-                      {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
-                      {"--vcd's save file", o.vcd.empty() ? "" : fs::path(vcd_path(o.vcd)).replace_extension(".gtkw").string(), true}},
-                     [&] {
-                       std::vector<NamedPath> in = {{"--config", s.config_source}, {"--trace", s.trace},
-                                                    {"--walk", h.walk == "gallery" ? "" : h.walk}};
-                       for (NamedPath& f : s.memories.input_files()) in.push_back(std::move(f));
-                       return in;
-                     }());
+  const std::vector<NamedPath> outputs = {
+      {"--report", o.report}, {"--csv", o.csv}, {"--host-csv", o.host_csv}, {"--tear-image", o.tear_image},
+      {"--record-live", s.record_live},
+      {"--vcd", o.vcd.empty() ? "" : vcd_path(o.vcd), true},
+      {"--vcd's save file", o.vcd.empty() ? "" : fs::path(vcd_path(o.vcd)).replace_extension(".gtkw").string(), true}};
+  std::vector<NamedPath> inputs = {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk}};
+  for (NamedPath& f : s.memories.input_files()) inputs.push_back(std::move(f));
+  check_output_paths(outputs, inputs);
+  check_out_dir_files(o, s.first_frame, s.frames, outputs, inputs);
   const bool untimed = fid == scm::Fidelity::Functional || fid == scm::Fidelity::Verilated;
   const auto issues = untimed ? dp::validate(s.config) : dp::validate_timed(s.config);
   if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);
@@ -693,19 +745,16 @@ void Session::on_scanned_out(const HmdFrame& f, const stage::FrameReport& r) {
   const std::string& th = hashes.photons;
   const int64_t k = r.frame - spec_.first_frame;
   if (o.every > 0 && k % o.every == 0) {
-    char name[64];
-    std::snprintf(name, sizeof name, "frame_%06" PRId64 ".png", r.frame);
-    host::write_rgb8((fs::path(o.out_dir) / name).string(), frame_to_image(f));
+    host::write_rgb8((fs::path(o.out_dir) / kFrameImage.name(r.frame)).string(), frame_to_image(f));
     ++images_;
     if (o.photon_times) {
-      std::snprintf(name, sizeof name, "photon_%06" PRId64 ".csv", r.frame);
       std::string text = "eye,x,y,photon_ps\n";
       for (int e = 0; e < f.eyes; ++e)
         for (int y = 0; y < f.height; ++y)
           for (int x = 0; x < f.width; ++x)
             text += std::to_string(e) + "," + std::to_string(x) + "," + std::to_string(y) + "," +
                     std::to_string(f.photon_ps[f.index(e, x, y)]) + "\n";
-      write_text_atomic((fs::path(o.out_dir) / name).string(), text);
+      write_text_atomic((fs::path(o.out_dir) / kPhotonTimes.name(r.frame)).string(), text);
     }
   }
   const auto [lo, hi] = dp::LatchRule(spec_.config).frame_samples(stream_, r.frame);

@@ -164,10 +164,14 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
   std::ofstream(d.file("d.txt")) << "timestamp frameId w x y z\n0 0 1 0 0 0\n1 1 1 0 0 0\n";
   ASSERT_EQ(::mkfifo(d.file("fifo").c_str(), 0600), 0);  // an output onto it would replace the node
   const auto size_of = [&](const std::string& f) { return fs::file_size(d.file(f)); };
+  fs::copy_file(d.file("t.csv"), d.file("photon_000000.csv"));  // a trace with a name --out-dir would give a file
   const auto png = size_of("x.png"), csv = size_of("t.csv"), txt = size_of("d.txt");
   expect_refused("outputs", d);
   EXPECT_EQ(size_of("x.png"), png);
   EXPECT_EQ(size_of("t.csv"), csv);
+  EXPECT_EQ(size_of("photon_000000.csv"), csv);
+  EXPECT_FALSE(fs::exists(d.file("frame_000000.png")));
+  EXPECT_FALSE(fs::exists(d.file("o")));
   EXPECT_EQ(size_of("d.txt"), txt);
   EXPECT_TRUE(fs::is_fifo(d.file("fifo")));
 }
