@@ -15,7 +15,7 @@ const EnumNames<Prediction>& prediction_names() {
 
 TrackerFeed::TrackerFeed(std::vector<tracker::PoseSample> truth, const TrackerModel& model, const std::string& source)
     : truth_(std::move(truth)), m_(model) {
-  if (!(model.rate_hz >= 1.0 && model.rate_hz <= 1e6)) throw InputError(source, "tracker rate", "must be 1 .. 1e6 reports per second");
+  if (!(model.rate_hz >= 1.0 && model.rate_hz <= tracker::kMaxSampleRateHz)) throw InputError(source, "tracker rate", "must be 1 .. 1e6 reports per second");
   if (!(model.latency_s >= 0.0 && model.latency_s <= 1.0)) throw InputError(source, "tracker latency", "must be 0 .. 1 s");
   if (truth_.size() < 2) throw InputError(source, "", "the head motion needs at least two samples");
   for (size_t i = 0; i < truth_.size(); ++i) {

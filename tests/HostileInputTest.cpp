@@ -131,6 +131,21 @@ TEST(HostileInput, TimesOutsideThe64BitPicosecondRangeAreRefusedWithTheLimit) {
   EXPECT_NEAR(first_ps, 552853309.0 * 420000.0 / 25.175e6 * 1e12, 1e7);  // frame x frame time, closed form
 }
 
+// An endless trace on standard input, every sample at one time: refused once it is denser than any tracker
+// (kMaxSampleRateHz), while small -- it filled the memory until the allocator failed ("internal error"). A stream
+// at ten times that rate, ending, is read (the warnings say it is implausible).
+TEST(HostileInput, AnEndlessTraceOfOneTimeIsRefusedBeforeItFillsTheMemory) {
+  const auto r = run_command("(echo time_s,qw,qx,qy,qz; yes 0,1,0,0,0) | timeout 120 " + kArpsim + " run -q --frames 1 --every 0 --trace -");
+  EXPECT_EQ(r.status, 2) << r.output.substr(0, 2000);
+  EXPECT_NE(r.output.find("-: line 1000002: 1000001 samples within 0 s: more than 1000000 a second, faster than any tracker"),
+            std::string::npos)
+      << r.output.substr(0, 2000);
+  const auto fast = run_command("(echo time_s,qw,qx,qy,qz; seq -f '%.12f,1,0,0,0' 0 0.0000001 0.1) | timeout 120 " + kArpsim +
+                                " run -q --frames 1 --every 0 --trace -");
+  EXPECT_EQ(fast.status, 0) << fast.output.substr(0, 2000);
+  EXPECT_NE(fast.output.find("implausible for a head tracker"), std::string::npos) << fast.output.substr(0, 2000);
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {

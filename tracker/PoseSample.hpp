@@ -23,6 +23,9 @@ struct PoseSample {
 // within +-kPoseTimeLimitS: the int64 picosecond timeline spans +-106 days,
 // and a double still resolves a microsecond there.
 constexpr double kPoseTimeLimitS = 9e6;
+// The fastest tracker arpsim models, in samples a second (synthetic motion's
+// --hz, the laboratory's tracker model); a trace denser than that is refused.
+constexpr double kMaxSampleRateHz = 1e6;
 // The limit as the messages state it: "9e6 s (104 days)".
 inline std::string pose_time_limit_text() {
   return std::to_string(static_cast<int>(kPoseTimeLimitS / 1e6)) + "e6 s (" + std::to_string(static_cast<int>(kPoseTimeLimitS / 86400)) +

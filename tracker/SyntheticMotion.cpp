@@ -124,7 +124,7 @@ constexpr const char* kTurnLimit = "must be -1e6 .. 1e6 degrees per second";
 MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   if (!(seconds > 0.0) || !std::isfinite(seconds)) throw InputError("--seconds", "", "must be a positive number");
   if (!(hz > 0.0) || !std::isfinite(hz)) throw InputError("--hz", "", "must be a positive number");
-  if (hz < 1.0 || hz > 1e6) throw InputError("--hz", printf_text("%g", hz), "must be 1 .. 1e6 Hz (a tracker's sample rate)");
+  if (hz < 1.0 || hz > kMaxSampleRateHz) throw InputError("--hz", printf_text("%g", hz), "must be 1 .. 1e6 Hz (a tracker's sample rate)");
   if (seconds * hz > 1e8) throw InputError("--seconds", "", "more than 1e8 samples; lower --seconds or --hz");
   if (!(noise >= 0.0) || !std::isfinite(noise)) throw InputError("--noise", "", "must be >= 0 degrees");
   if (noise > 180.0) throw InputError("--noise", printf_text("%g", noise), "must be at most 180 degrees a sample");

@@ -12,6 +12,7 @@
 #include "common/Units.hpp"
 #include "common/InputError.hpp"
 #include "common/InputFile.hpp"
+#include "common/PrintfText.hpp"
 
 namespace arp::tracker {
 
@@ -97,6 +98,13 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
     // The window: one sample before its start (the one held at the start), none but the first after its end.
     if (p.time_ps <= window.from_ps) out.clear();
     out.push_back(p);
+    // Denser than any tracker: refused while still small (an endless stream of one time on standard input
+    // would otherwise fill the memory before the window ends).
+    const double span_s = static_cast<double>(out.back().time_ps - out.front().time_ps) * 1e-12;
+    if (static_cast<double>(out.size()) > kMaxSampleRateHz * (1.0 + span_s))
+      throw InputError(path, where,
+                       std::to_string(out.size()) + " samples within " + printf_text("%.6g", span_s) +
+                           " s: more than " + printf_text("%.0f", kMaxSampleRateHz) + " a second, faster than any tracker");
     if (p.time_ps > window.to_ps) break;
   }
   if (columns == 0) throw InputError(path, "", "no header line (time_s,qw,qx,qy,qz[,px,py,pz])");
