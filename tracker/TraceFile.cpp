@@ -100,7 +100,8 @@ std::vector<PoseSample> read_trace_csv(std::istream& in, const std::string& path
     out.push_back(p);
     // Denser than any tracker: refused while still small (an endless stream of one time on standard input
     // would otherwise fill the memory before the window ends).
-    const double span_s = static_cast<double>(out.back().time_ps - out.front().time_ps) * 1e-12;
+    // (in double: a trace may span +-9e6 s, more picoseconds than int64_t holds between its ends)
+    const double span_s = (static_cast<double>(out.back().time_ps) - static_cast<double>(out.front().time_ps)) * 1e-12;
     if (static_cast<double>(out.size()) > kMaxSampleRateHz * (1.0 + span_s))
       throw InputError(path, where,
                        std::to_string(out.size()) + " samples within " + printf_text("%.6g", span_s) +
