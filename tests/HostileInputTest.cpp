@@ -146,6 +146,16 @@ TEST(HostileInput, AnEndlessTraceOfOneTimeIsRefusedBeforeItFillsTheMemory) {
   EXPECT_NE(fast.output.find("implausible for a head tracker"), std::string::npos) << fast.output.substr(0, 2000);
 }
 
+// A command's printed output that cannot be written (a full disk: /dev/full) is an error, not a success with an
+// empty file behind it.
+TEST(HostileInput, PrintedOutputThatCannotBeWrittenIsAnError) {
+  for (const std::string args : {"config", "config --list", "tracker synth --motion rotate --seconds 1 -o -"}) {
+    const auto r = run_command("{ " + kArpsim + " " + args + " > /dev/full; }");
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("standard output: the command's output was not written whole"), std::string::npos) << args << "\n" << r.output;
+  }
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {

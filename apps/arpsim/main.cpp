@@ -2,8 +2,11 @@
 #include <CLI/CLI.hpp>
 #include <systemc>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <iostream>
 #include <exception>
 #include <map>
 
@@ -12,6 +15,23 @@
 #include "common/InputError.hpp"
 
 // SystemC's library calls sc_main from sc_elab_and_sim; arpsim is its sc_main.
+namespace {
+
+// A command's printed output lost (a full disk behind `arpsim config > my.json`) is an error, not a success
+// with an empty file: standard output is flushed and checked before the status is returned.
+int checked_stdout(int status) {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int err = errno;
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return status;
+  std::fprintf(stderr, "arpsim: error: standard output: the command's output was not written whole: %s\n",
+               err ? std::strerror(err) : "a write failed");
+  return status == 0 ? 2 : status;
+}
+
+}  // namespace
+
 int sc_main(int argc, char** argv) {
   CLI::App app{"arpsim - bit-accurate model of the Address Recalculation Pipeline head-mounted display"};
   app.require_subcommand(1);
@@ -38,7 +58,7 @@ int sc_main(int argc, char** argv) {
   }
   try {
     for (const auto& [sub, run] : runners)
-      if (sub->parsed()) return run();
+      if (sub->parsed()) return checked_stdout(run());
   } catch (const arp::InputError& e) {
     std::fprintf(stderr, "arpsim: error: %s\n", e.what());
     return 2;
