@@ -76,8 +76,9 @@ int64_t display_memory_bytes_pooled(const dp::ArpConfig& c, const dp::DisplayMem
 // The most memory the model can take for a configuration: every display memory's tiles written (eyes x
 // memories x 2 buffers x faces present x tiles of 33 x 33 64-bit words), the host renderer's float faces
 // and words when a scene is drawn (six faces x S^2 x 44 bytes and two S^2 tables of doubles), and with
-// truth_face_size >= 0 the truth's memory and render (0: at the run's face size). InputError naming
-// memory.face_size (in config_source) or --truth-face-size when that is more than the machine has
+// truth_face_size >= 0 the truth's memory and render (0: at the run's face size), and the display's frames (48
+// bytes a display pixel, measured). InputError naming memory.face_size (in config_source), --truth-face-size or,
+// where the display's frames are the largest part, display.h_active, when that is more than the machine has
 // available (available_memory_bytes: MemAvailable, or a smaller address-space limit): a face size within the key's range can ask for hundreds of GB, and the
 // allocations fail inside parallel regions, where nothing can catch them. Nothing when MemAvailable is unknown.
 void check_model_fits_memory(const dp::ArpConfig& c, const std::string& config_source, bool draws_scene, int truth_face_size = -1);

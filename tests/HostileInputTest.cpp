@@ -156,6 +156,23 @@ TEST(HostileInput, PrintedOutputThatCannotBeWrittenIsAnError) {
   }
 }
 
+// A display whose frames take more memory than the process has (here an address-space limit of 1.5 GB) is
+// refused naming display.h_active before anything is allocated: it ended in std::bad_alloc ("internal error"),
+// `run` leaving an empty --out-dir behind.
+TEST(HostileInput, ADisplayLargerThanTheMemoryIsRefusedBeforeAnythingIsAllocated) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "an address-space limit leaves no room for the sanitizer's shadow memory";
+#endif
+  TempDir d;
+  for (const std::string args : {"frame -o out.png", "run -q --frames 1 --out-dir o"}) {
+    const auto r = run_command("cd " + d.path() + " && ulimit -v 1500000 && " + kArpsim + " " + args +
+                               " --set display.h_active=8192 --set display.v_active=8192");
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("display.h_active: a run of a 8192 x 8192 display may need up to"), std::string::npos) << args << "\n" << r.output;
+  }
+  EXPECT_EQ(d.entries(), 0u) << "no image, no --out-dir";
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {
