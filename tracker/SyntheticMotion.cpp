@@ -130,6 +130,11 @@ MotionGenerator MotionSpec::generator(double start_s, double seconds) const {
   if (noise > 180.0) throw InputError("--noise", printf_text("%g", noise), "must be at most 180 degrees a sample");
   if (!std::isfinite(start_s) || std::abs(start_s) > kPoseTimeLimitS)
     throw InputError("--start", "", "must be within +-" + pose_time_limit_text());
+  // Its last sample too (at start + seconds, rounded to the sample clock): a trace every reader accepts.
+  if (start_s + seconds > kPoseTimeLimitS)
+    throw InputError("--seconds", printf_text("%g", seconds),
+                     "the motion would end at " + printf_text("%.3f", start_s + seconds) + " s, beyond the +-" + pose_time_limit_text() +
+                         " a trace holds: start earlier or make it shorter");
   SamplingSpec s;
   s.rate_hz = hz;
   s.duration_s = seconds;
