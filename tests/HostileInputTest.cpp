@@ -173,6 +173,25 @@ TEST(HostileInput, ADisplayLargerThanTheMemoryIsRefusedBeforeAnythingIsAllocated
   EXPECT_EQ(d.entries(), 0u) << "no image, no --out-dir";
 }
 
+// A scene of many finely divided spheres (a million triangles each at 1024 segments) whose meshes would not fit
+// the memory (here an address-space limit of 1.5 GB) is refused naming the object that tips it: it ended in
+// std::bad_alloc ("internal error").
+TEST(HostileInput, AScenesMeshesLargerThanTheMemoryAreRefusedNamingTheObject) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "an address-space limit leaves no room for the sanitizer's shadow memory";
+#endif
+  TempDir d;
+  std::string objects;
+  for (int i = 0; i < 40; ++i)
+    objects += std::string(i ? ", " : "") + R"({"name": "s)" + std::to_string(i) + R"(", "sphere": 0.1, "segments": 1024, "position": [0, 0, -3]})";
+  std::ofstream(d.file("spheres.json")) << R"({"objects": [)" + objects + "]}";
+  const auto r = run_command("cd " + d.path() + " && ulimit -v 1500000 && " + kArpsim + " frame -o out.png --scene spheres.json");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("spheres.json: objects["), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("with this object the scene's meshes take"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(d.file("out.png")));
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {
