@@ -115,6 +115,18 @@ std::string olano_reproduction(const dp::ArpConfig& base, nlohmann::json& out) {
 
 }  // namespace
 
+const std::vector<std::string>& study_output_files() {
+  static const std::vector<std::string> files = [] {
+    std::vector<std::string> f = {"table.md",        "summary.json",        "error-over-time.csv", "latency-percentiles.csv",
+                                  "speed-sweep.csv", "horizon-sweep.csv",   "overload.csv",        "apparatus.vcd",
+                                  "apparatus.gtkw",  "apparatus.partial"};
+    for (const char* plot : {"error-over-time", "latency", "speed-sweep", "horizon-sweep", "overload"})
+      for (const char* ext : {".gp", ".gp.log", ".png"}) f.push_back(std::string(plot) + ext);
+    return f;
+  }();
+  return files;
+}
+
 LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {}
 
 int64_t LatencyStudy::steps() const {
@@ -143,6 +155,12 @@ std::string LatencyStudy::run() {
   if (a.grid < 1 || a.grid > 512) throw InputError("--grid", "", "must be 1 .. 512 pixels");
   if (!(a.horizon_ms >= 0)) throw InputError("--horizon-ms", "", "must be >= 0 (prediction looks ahead, not back)");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
+  for (const NamedPath& in : {NamedPath{"--trace", a.trace}, NamedPath{"--scene", a.scene == "gallery" ? "" : a.scene},
+                              NamedPath{"--config", a.config_source}})
+    if (!in.path.empty() && in.path != "-")
+      for (const std::string& f : study_output_files())
+        if (same_file(in.path, (fs::path(a.out_dir) / f).string()))
+          throw InputError(in.option, in.path, "is where --out-dir's " + f + " is written; it would be overwritten");
   for (auto [name, v] : {std::pair<const char*, double>{"--conv-transform-ms", a.conv_transform_ms}, {"--conv-render-ms", a.conv_render_ms},
                          {"--conv-copy-ms", a.conv_copy_ms}, {"--conv-triangle-rate", a.conv_rate}, {"--slats-setup-ms", a.slats_setup_ms},
                          {"--slats-copy-ms", a.slats_copy_ms}, {"--slats-triangle-rate", a.slats_rate},

@@ -34,6 +34,11 @@ struct LatencySpec {
   bool no_field_sync = false;
 };
 
+// Every file the study can write into its --out-dir (each plot: its data, script, gnuplot's log and picture).
+// An input of one of these names in that folder is refused before anything runs (it would be written over);
+// LatencyCli.TheOutDirHoldsOnlyTheListedFiles keeps the list true to the writers.
+const std::vector<std::string>& study_output_files();
+
 // Thrown by run() when stop_requested said so: `what()` names the last step finished.
 struct StudyStopped : std::runtime_error {
   using std::runtime_error::runtime_error;

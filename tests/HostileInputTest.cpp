@@ -149,7 +149,7 @@ TEST(HostileInput, AnEndlessTraceOfOneTimeIsRefusedBeforeItFillsTheMemory) {
 // A command's printed output that cannot be written (a full disk: /dev/full) is an error, not a success with an
 // empty file behind it.
 TEST(HostileInput, PrintedOutputThatCannotBeWrittenIsAnError) {
-  for (const std::string args : {"config", "config --list", "tracker synth --motion rotate --seconds 1 -o -"}) {
+  for (const std::string args : {"config", "config --list"}) {
     const auto r = run_command("{ " + kArpsim + " " + args + " > /dev/full; }");
     EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
     EXPECT_NE(r.output.find("standard output: the command's output was not written whole"), std::string::npos) << args << "\n" << r.output;

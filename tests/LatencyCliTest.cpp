@@ -4,11 +4,13 @@
 // before anything is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.hpp"
+#include "lab/LatencyStudy.hpp"
 
 using arp::test::run_command;
 using arp::test::TempDir;
@@ -43,10 +45,39 @@ TEST(LatencyCli, ComparesTheArchitecturesAndReproducesOlano) {
   EXPECT_FALSE(std::filesystem::exists(d.file("lab/apparatus.partial.vcd")));
 }
 
+// Every file a study leaves in its --out-dir is one of lab::study_output_files(), the list the inputs are checked
+// against (an input of such a name there would be written over), with the sweeps and with the apparatus.
+namespace {
+void expect_only_listed_lab_files(const std::string& dir) {
+  const auto& listed = arp::lab::study_output_files();
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    ++files;
+    EXPECT_NE(std::find(listed.begin(), listed.end(), e.path().filename().string()), listed.end()) << e.path();
+  }
+  EXPECT_GE(files, 8) << dir;
+}
+}  // namespace
+
+TEST(LatencyCli, TheOutDirHoldsOnlyTheListedFiles) {
+  TempDir d;
+  const auto r = run_command(kArpsim + " latency -q --frames 4 --grid 64 --out-dir " + d.file("lab"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  expect_only_listed_lab_files(d.file("lab"));
+  // And the list guards the inputs: a trace of such a name in the folder is refused, whole afterwards.
+  ASSERT_EQ(run_command(kArpsim + " tracker synth --motion rotate --seconds 5 -o " + d.file("lab/overload.csv")).status, 0);
+  const auto size = std::filesystem::file_size(d.file("lab/overload.csv"));
+  const auto t = run_command(kArpsim + " latency -q --frames 4 --trace " + d.file("lab/overload.csv") + " --out-dir " + d.file("lab"));
+  EXPECT_EQ(t.status, 2) << t.output;
+  EXPECT_NE(t.output.find("is where --out-dir's overload.csv is written; it would be overwritten"), std::string::npos) << t.output;
+  EXPECT_EQ(std::filesystem::file_size(d.file("lab/overload.csv")), size);
+}
+
 TEST(LatencyCli, SweepsWriteTheirTables) {
   TempDir d;
   const auto r = run_command(kArpsim + " latency -q --frames 8 --grid 64 --no-apparatus --out-dir " + d.file("lab"));
   ASSERT_EQ(r.status, 0) << r.output;
+  expect_only_listed_lab_files(d.file("lab"));
   for (const char* f : {"speed-sweep.csv", "horizon-sweep.csv", "overload.csv"}) {
     std::ifstream in(d.file(std::string("lab/") + f));
     int lines = 0;
