@@ -397,6 +397,12 @@ void Session::build_motion() {
     std::vector<tracker::PoseSample> poses =
         tracker::read_trace_csv(spec_.trace, {start_ps_ - kPsPerSecond, plus_saturated(end_ps_, kPsPerSecond / 100)});
     motion_source_ = spec_.trace;
+    // A trace that begins after the run does: its first sample stands for the motion before it (sample-and-hold
+    // backwards), which no tracker gave -- said, not refused (a run may start early on purpose).
+    if (poses.front().time_ps > start_ps_)
+      motion_notes_.push_back("warning: the trace starts at " + printf_text("%.6f", ps_to_seconds(poses.front().time_ps)) +
+                              " s, after the run's first frame at " + printf_text("%.6f", ps_to_seconds(start_ps_)) +
+                              " s: the pixels before it show its first sample");
     // Told before the run: what the window of the trace looks like, and what a human head would not do.
     trace_summary_ = tracker::summarize_motion(poses);
     const auto d = tracker::describe(*trace_summary_);

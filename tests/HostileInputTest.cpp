@@ -192,6 +192,22 @@ TEST(HostileInput, AScenesMeshesLargerThanTheMemoryAreRefusedNamingTheObject) {
   EXPECT_FALSE(fs::exists(d.file("out.png")));
 }
 
+// A trace that starts after the run's first frame is said (its first sample stands for the motion before it),
+// once; one that covers the start is not.
+TEST(HostileInput, ATraceStartingAfterTheRunIsSaid) {
+  TempDir d;
+  std::ofstream(d.file("late.csv")) << "time_s,qw,qx,qy,qz\n5,1,0,0,0\n6,1,0,0,0\n";
+  const auto r = run_command(kArpsim + " run -q --frames 2 --every 0 --trace " + d.file("late.csv"));
+  EXPECT_EQ(r.status, 0) << r.output;
+  const std::string said = "warning: the trace starts at 5.000000 s, after the run's first frame at 0.000000 s";
+  EXPECT_NE(r.output.find(said), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(said), r.output.rfind(said)) << "once";
+  std::ofstream(d.file("early.csv")) << "time_s,qw,qx,qy,qz\n-1,1,0,0,0\n6,1,0,0,0\n";
+  const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --trace " + d.file("early.csv"));
+  EXPECT_EQ(e.status, 0) << e.output;
+  EXPECT_EQ(e.output.find("the trace starts at"), std::string::npos) << e.output;
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {
