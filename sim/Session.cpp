@@ -197,13 +197,13 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   std::vector<NamedPath> inputs = {{"--config", s.config_source}, {"--trace", s.trace}, {"--walk", h.walk == "gallery" ? "" : h.walk}};
   for (NamedPath& f : s.memories.input_files()) inputs.push_back(std::move(f));
   check_output_paths(outputs, inputs);
-  check_out_dir_files(o, s.first_frame, s.frames, outputs, inputs);
   const bool untimed = fid == scm::Fidelity::Functional || fid == scm::Fidelity::Verilated;
   const auto issues = untimed ? dp::validate(s.config) : dp::validate_timed(s.config);
   if (!issues.empty()) throw InputError(s.config_source, issues.front().key, issues.front().reason);
   // After the configuration's check: the limit depends on its clock.
   if (const std::string why = dp::VideoTiming(s.config.timing).frames_out_of_range(s.first_frame, s.frames); !why.empty())
     throw InputError("--first-frame", "", why);
+  check_out_dir_files(o, s.first_frame, s.frames, outputs, inputs);  // (frames in range: n - first cannot overflow)
   if (!o.tear_at.empty()) parse_tear_at(o.tear_at, s.first_frame, s.frames, o.error_every, s.config.timing);  // before any work
 }
 

@@ -24,7 +24,9 @@ struct PoseSample {
 // and a double still resolves a microsecond there.
 constexpr double kPoseTimeLimitS = 9e6;
 // The fastest tracker arpsim models, in samples a second (synthetic motion's
-// --hz, the laboratory's tracker model); a trace denser than that is refused.
+// --hz, the laboratory's tracker model). A trace read holding more than that
+// many samples beyond as many a second of its span is refused (a guard on the
+// memory a stream can take, not a test of its rate: its warnings say that).
 constexpr double kMaxSampleRateHz = 1e6;
 // The limit as the messages state it: "9e6 s (104 days)".
 inline std::string pose_time_limit_text() {

@@ -107,9 +107,15 @@ int64_t bytes_of(const Mesh& m) {
   return static_cast<int64_t>(m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * sizeof(m.normals[0]) +
                               m.uvs.size() * sizeof(m.uvs[0]) + m.indices.size() * sizeof(m.indices[0]));
 }
-// A scene's meshes and the renderer's working copies, as a multiple of the meshes alone: measured 1.3 (peak RSS
-// of `arpsim frame --scene` grows 49 MB a 1024-segment sphere whose mesh holds 38 MB, 2026-11-29).
-constexpr int64_t kMeshCopies = 2;
+// What the renderer holds of each drawn object during a render (CubeFaceRenderer: its vertices in the world, and
+// their shades when Gouraud-shaded) -- per object, a model shared by several objects too. Mesh and copy together
+// are what was measured: peak RSS of `arpsim frame --scene` grows 49 MB a flat 1024-segment sphere, whose mesh
+// holds 37.8 MB and copy 12.6 MB (2026-11-29).
+int64_t copy_bytes(const Mesh& m, bool smooth) {
+  return static_cast<int64_t>(m.positions.size() * sizeof(glm::dvec3) * (smooth && !m.normals.empty() ? 2 : 1));
+}
+// The rest of a run (display memories, frames, the renderer's faces) needs room too: the meshes may take half.
+constexpr int64_t kHeadroom = 2;
 
 }  // namespace
 
@@ -134,7 +140,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
   std::map<std::string, std::shared_ptr<const Mesh>> models;  // one import per file
   std::map<std::string, std::shared_ptr<const RgbImage>> textures;
   const int64_t available = available_memory_bytes();
-  int64_t mesh_bytes = 0;  // of the meshes made so far (a model shared by several objects once)
+  int64_t mesh_bytes = 0;  // of the meshes made so far (a model shared by several objects once) and their copies
   for (size_t i = 0; i < objs->size(); ++i) {
     Fields o((*objs)[i], source, "objects[" + std::to_string(i) + "]");
     std::shared_ptr<const Mesh> mesh;
@@ -164,18 +170,20 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
       mesh = it->second;
     }
     if (mesh->indices.empty()) o.fail("", "the object has no triangles");
-    // A scene whose meshes (every object's own primitive, 1024 segments a sphere being a million triangles) and
-    // the renderer's copies of them would not fit: refused here, naming the object -- not a failed allocation later.
-    if (!shared) mesh_bytes += bytes_of(*mesh);
-    if (available > 0 && kMeshCopies * mesh_bytes > available)
-      o.fail("", "with this object the scene's meshes take " + printf_text("%.1f", static_cast<double>(mesh_bytes) / 1e9) +
-                     " GB (and the renderer works on copies): more than this process has available (" +
-                     printf_text("%.1f", static_cast<double>(available) / 1e9) + " GB); fewer objects or segments");
     Material mat;
     mat.color = o.vec3("color", mat.color, 0, 1);
     const std::string shading = o.text("shading", "flat");
     if (shading != "flat" && shading != "gouraud") o.fail("shading", "must be flat or gouraud");
     mat.smooth = shading == "gouraud";
+    // A scene whose meshes (every object's own primitive, 1024 segments a sphere being a million triangles; a
+    // model once) and the renderer's per-object copies would not fit: refused here, naming the object -- not a
+    // failed allocation later.
+    if (!shared) mesh_bytes += bytes_of(*mesh);
+    mesh_bytes += copy_bytes(*mesh, mat.smooth);
+    if (available > 0 && kHeadroom * mesh_bytes > available)
+      o.fail("", "with this object the scene's meshes and the renderer's copies of them take " +
+                     printf_text("%.1f", static_cast<double>(mesh_bytes) / 1e9) + " GB, more than half of the " +
+                     printf_text("%.1f", static_cast<double>(available) / 1e9) + " GB this process has available; fewer objects or segments");
     const std::string texture = o.text("texture", "");
     if (!texture.empty()) {
       if (mesh->uvs.empty()) o.fail("texture", "this shape has no texture coordinates (quads, boxes and models with them do)");
