@@ -71,7 +71,10 @@ void make_output_folder(const std::string& option, const std::string& dir) {
 void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
   for (size_t i = 0; i < outputs.size(); ++i) {
     const NamedPath& o = outputs[i];
-    if (o.path.empty() || o.path == "-") continue;
+    if (o.path.empty()) continue;
+    // "-" is standard input to the readers; an output of that name was written as a file called "-".
+    if (o.path == "-")
+      throw InputError(o.option, o.path, "names standard input, and outputs go to files: name one (./- for a file called '-')");
     for (const NamedPath& in : inputs)
       if (!in.path.empty() && in.path != "-" && same_file(o.path, in.path))
         throw InputError(o.option, o.path, "is the " + in.option + " input; it would be overwritten");

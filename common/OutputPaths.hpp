@@ -15,7 +15,8 @@ struct NamedPath {
   bool folder_made_later = false;  // an output whose folder the command creates: checked as check_output_folder does
 };
 
-// InputError naming the option and the file on the first fault; empty paths are skipped.
+// InputError naming the option and the file on the first fault; empty paths are skipped, "-" (standard
+// input's name to every reader) is refused as an output.
 void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
 // Checks an output folder could be made and written without making it (its

@@ -141,7 +141,7 @@ Runner add_live_command(CLI::App& app) {
   add_record_live_option(*cmd, a->spec.record_live);
   cmd->add_option("--seconds", a->spec.seconds, "Run this long (0: until the window is closed or Esc)")->capture_default_str();
   cmd->add_option("--scale", a->scale, "Window pixels per display pixel")->capture_default_str();
-  cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)");
+  cmd->add_option("--screenshot", a->screenshot, "Save what the window showed last (PNG, ... by extension)")->check(output_name());
   add_threads_option(*cmd, a->spec.threads);
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_live(*a); };

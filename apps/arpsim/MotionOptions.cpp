@@ -1,5 +1,7 @@
 #include "MotionOptions.hpp"
 
+#include "CommonOptions.hpp"
+
 namespace arp::app {
 
 void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice) {
@@ -18,7 +20,8 @@ void add_device_option(CLI::App& cmd, tracker::TrackerChoice& choice) {
 void add_record_live_option(CLI::App& cmd, std::string& path) {
   cmd.add_option("--record-live", path,
                  "With --live: write the motion the pipeline took (on the run's timeline) as a trace file, to replay it with "
-                 "`arpsim run --trace`");
+                 "`arpsim run --trace`")
+      ->check(output_name());
 }
 
 void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bool shape_needs_motion) {

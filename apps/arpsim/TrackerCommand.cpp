@@ -113,11 +113,11 @@ Runner add_tracker_command(CLI::App& app) {
   add_motion_options(*synth, a->motion, true);
   synth->add_option("--seconds", a->seconds, "Duration")->capture_default_str();
   synth->add_option("--start", a->start, "Time of the first sample, seconds")->capture_default_str();
-  synth->add_option("--out,-o", a->out, "Trace file to write")->required();
+  synth->add_option("--out,-o", a->out, "Trace file to write")->required()->check(output_name());
   auto r = std::make_shared<RecordArgs>();
   CLI::App* record = cmd->add_subcommand("record", "Stream an Oculus Rift DK1/DK2 to a trace file (CSV, docs/tracker.md)");
   record->add_option("--seconds", r->seconds, "How long to record")->capture_default_str();
-  record->add_option("file", r->out, "Trace file to write")->required();
+  record->add_option("file", r->out, "Trace file to write")->required()->check(output_name());
   add_quiet_flag(*record, r->quiet);
   add_device_option(*record, r->tracker);
   const Subcommand import = add_tracker_import_command(*cmd);

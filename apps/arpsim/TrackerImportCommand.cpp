@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "CommonOptions.hpp"
 #include "Commands.hpp"
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
@@ -57,7 +58,7 @@ Subcommand add_tracker_import_command(CLI::App& tracker) {
       "import", "Convert a head-motion dataset (one sample per line; columns, axes and units stated) into a trace file, "
                 "with a summary of the motion and warnings for what a human head does not do (docs/tracker.md)");
   import->add_option("dataset", im->in, "Dataset file")->required();
-  import->add_option("trace", im->out, "Trace file to write")->required();
+  import->add_option("trace", im->out, "Trace file to write")->required()->check(output_name());
   import->add_option("--time-unit", im->layout.time_unit, "Unit of the timestamp: s, ms, us, ns")->capture_default_str();
   import->add_option("--axes", im->layout.axes,
                      "The dataset's axes: gl (right-handed, y up, -z forward, as arpsim), unity (left-handed, +z forward), "

@@ -127,7 +127,7 @@ int run_tradeoff(TradeoffArgs& a) {
 Runner add_tradeoff_command(CLI::App& app) {
   auto a = std::make_shared<TradeoffArgs>();
   CLI::App* cmd = app.add_subcommand("tradeoff", "Measure the speed-accuracy trade: levels, widths, theta_t, regions, latency knobs");
-  cmd->add_option("--out", a->out, "Folder for the plan, the points' results and the tables");
+  cmd->add_option("--out", a->out, "Folder for the plan, the points' results and the tables")->check(output_name());
   cmd->add_flag("--quick", a->quick, "A smaller sweep (minutes): fewer frames and points");
   cmd->add_option("--jobs,-j", a->jobs, "Points run side by side (default: the cores; speed points always run alone)")
       ->check(CLI::Range(1, 1024));
@@ -139,7 +139,7 @@ Runner add_tradeoff_command(CLI::App& app) {
                   "--emit slurm: the wall-clock limit of each point's task, minutes (default 60; the full sweep's longest point "
                   "takes about a minute on 2 cores)")
       ->check(CLI::Range(1, 10080));
-  cmd->add_option("--doc", a->doc, "Also replace the generated block of this markdown file with the tables");
+  cmd->add_option("--doc", a->doc, "Also replace the generated block of this markdown file with the tables")->check(output_name());
   cmd->add_flag("--list", a->list, "List the points (with --quick: the quick sweep's)");
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_tradeoff(*a); };

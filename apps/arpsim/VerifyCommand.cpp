@@ -50,7 +50,7 @@ Runner add_verify_command(CLI::App& app) {
                 "Skip the whole-frame views aligned with the cube axes (straight ahead, 90-degree turns, edge field of view)");
   cmd->add_option("--aligned-step", a->opt.aligned_row_step, "Check every n-th line of the aligned views")
       ->capture_default_str()->check(CLI::Range(1, 8192));
-  cmd->add_option("--json", a->json, "Also write the report as JSON");
+  cmd->add_option("--json", a->json, "Also write the report as JSON")->check(output_name());
   add_quiet_flag(*cmd, a->quiet);
   return [a] { return run_verify(*a); };
 }
