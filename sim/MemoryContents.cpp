@@ -29,6 +29,9 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
   check_renderer(*this, mem.format().depth_bits);
   if (scene.empty()) {
     if (!position.empty()) throw InputError("--position", "", "only with --scene");
+    // (a cube map's images are the same for both eyes and have no time: given, these changed nothing)
+    if (time_s != MemoryContents{}.time_s) throw InputError("--time", "", "only with --scene (the time of its animations)");
+    if (ipd_m != MemoryContents{}.ipd_m) throw InputError("--ipd", "", "only with --scene (a cube map's image is the same for both eyes)");
     host::load_into_memories(mem, 0, load(mem.format().face_size, source), host::far_depth(mem.format()));
     return;
   }

@@ -131,6 +131,19 @@ std::string detail_text(const stage::FrameWindows& w, const RunSpec& s, const sc
          ", fewer at the run's start), functional between";
 }
 
+// The host's options act on the simulation of its rendering along a walk (and on its regions): given
+// without one they changed nothing, silently.
+void check_host_options_used(const HostSpec& h, double regions) {
+  for (const auto& [option, given] : {std::pair{"--speed", h.walk_speed.has_value()}, {"--threshold-deg", h.threshold_deg.has_value()},
+                                      {"--baseline", h.baseline}, {"--engine-triangles", h.engine_triangles.has_value()},
+                                      {"--engine-fill", h.engine_fill.has_value()}, {"--engine-setup", h.engine_setup.has_value()},
+                                      {"--regions", h.region_size.has_value()}})
+    if (given && h.walk.empty()) throw InputError(option, "", "acts on the host's rendering along a walk: it needs --walk");
+  for (const auto& [option, given] : {std::pair{"--margin", h.margin.has_value()}, {"--no-segmentation", !h.segmentation}})
+    if (given && regions == 0) throw InputError(option, "", "needs --regions SIZE (or memory.region_size_m)");
+  if (h.warp_falloff != HostSpec{}.warp_falloff && !h.warp) throw InputError("--warp-falloff", "", "needs --warp");
+}
+
 void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const auto& o = s.out;
   const auto& h = s.host;
@@ -176,6 +189,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
     set_parameter(*dp::arp_parameters().find("memory.face_size"), nlohmann::json(o.truth_face_size), "--truth-face-size", t);
   }
   const double regions = s.config.memory.region_size_m;  // (--regions already applied: the constructor)
+  check_host_options_used(h, regions);
   if (!o.tear_image.empty() && (regions == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && regions == 0) throw InputError("--region-cubes", "", "needs --regions SIZE (or memory.region_size_m)");

@@ -978,7 +978,8 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     EXPECT_NE(o.output.find(other.empty() ? "head stays in one place" : "planned for another motion"), std::string::npos) << o.output;
   }
   // And the eyes it planned for (plan.ipd_m): another --ipd is said once, by a run and by a still frame of the scene;
-  // a plan made for that --ipd runs quietly with it. Not said without a plan, for one eye, or without the scene.
+  // a plan made for that --ipd runs quietly with it. Not said without a plan or for one eye; without the scene
+  // --ipd is refused (a cube map's image is the same for both eyes).
   EXPECT_DOUBLE_EQ(config::load_file(d.file("plan.json")).plan.ipd_m, dp::kDefaultIpdM);
   const std::string eyes = d.file("plan.json") + " was planned for eyes 64 mm apart (plan.ipd_m 0.064); this run's --ipd is 70 mm";
   const std::string frame = kArpsim + " frame --config " + d.file("plan.json") + " -o " + d.file("f.png") + " --ipd 0.07";
@@ -990,11 +991,15 @@ TEST(PlanCli, ThePlanKnowsItsWalk) {
     EXPECT_EQ(o.output.find(" was planned for eyes", at + eyes.size()), std::string::npos) << "warned more than once: " << o.output;
   }
   for (const std::string& quiet : {kArpsim + " run -q --frames 1 --every 0 --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + " --ipd 0.07",
-                                   run + " --walk " + d.file("walk.json") + " --ipd 0.07 --set display.eyes=1", frame}) {
+                                   run + " --walk " + d.file("walk.json") + " --ipd 0.07 --set display.eyes=1"}) {
     const auto o = run_command(quiet);
     ASSERT_EQ(o.status, 0) << quiet << "\n" << o.output;
     EXPECT_EQ(o.output.find(" was planned for eyes"), std::string::npos) << quiet << "\n" << o.output;
   }
+  const auto no_scene = run_command(frame);
+  EXPECT_EQ(no_scene.status, 2) << no_scene.output;
+  EXPECT_NE(no_scene.output.find("--ipd: only with --scene"), std::string::npos) << no_scene.output;
+  EXPECT_EQ(no_scene.output.find(" was planned for eyes"), std::string::npos) << no_scene.output;
   const auto planned = run_command(kArpsim + " plan -q --scene " + d.file("far.json") + " --walk " + d.file("walk.json") + small +
                                    " --ipd 0.07 -o " + d.file("wide.json"));
   ASSERT_EQ(planned.status, 0) << planned.output;

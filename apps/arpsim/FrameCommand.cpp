@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "CommonOptions.hpp"
 #include "Commands.hpp"
@@ -21,7 +23,8 @@ struct FrameArgs {
   ConfigOptions cfg;
   sim::StillSpec spec;
   double yaw = 0, pitch = 0, roll = 0;
-  std::string quat, out = "frame.png", report, aa;
+  std::string quat, out = "frame.png", report;
+  std::optional<std::string> aa;  // given empty is not "not given": it is refused
 };
 
 dp::Quat parse_quat(const std::string& s) {
@@ -47,8 +50,8 @@ int run_frame(FrameArgs& a) {
   // --aa is pipeline.aa, applied with the configuration before it is checked (texel_frac 0 is valid without
   // bilinear filtering: applied after, the check refused it).
   dp::AaMode aa{};
-  if (!a.aa.empty() && !dp::parse(a.aa, aa)) throw InputError("--aa", a.aa, "must be off or bilinear");
-  if (!a.aa.empty()) a.cfg.sets.push_back("pipeline.aa=" + a.aa);
+  if (a.aa && !dp::parse(*a.aa, aa)) throw InputError("--aa", *a.aa, "must be off or bilinear");
+  if (a.aa) a.cfg.sets.push_back("pipeline.aa=" + *a.aa);
   spec.config = a.cfg.resolve();
   spec.config_source = a.cfg.source();
   for (double v : {a.yaw, a.pitch, a.roll})
@@ -86,11 +89,14 @@ int run_frame(FrameArgs& a) {
 Runner add_frame_command(CLI::App& app) {
   auto args = std::make_shared<FrameArgs>();
   CLI::App* cmd = args->cfg.add_command(app, "frame", "Render one stereo HMD frame of a cube map at one head orientation");
-  cmd->add_option("--yaw", args->yaw, "Yaw in degrees about +y, positive turns left");
-  cmd->add_option("--pitch", args->pitch, "Pitch in degrees about +x, positive looks up");
-  cmd->add_option("--roll", args->roll, "Roll in degrees about +z, positive tilts the head left");
+  CLI::Option* yaw = cmd->add_option("--yaw", args->yaw, "Yaw in degrees about +y, positive turns left");
+  CLI::Option* pitch = cmd->add_option("--pitch", args->pitch, "Pitch in degrees about +x, positive looks up");
+  CLI::Option* roll = cmd->add_option("--roll", args->roll, "Roll in degrees about +z, positive tilts the head left");
   cmd->add_option("--quat", args->quat, "Orientation quaternion w,x,y,z (head frame to world) instead of angles")
-      ->type_name("W,X,Y,Z");
+      ->type_name("W,X,Y,Z")
+      ->excludes(yaw)
+      ->excludes(pitch)
+      ->excludes(roll);
   add_memory_options(*cmd, args->spec.memories);
   cmd->add_option("--out,-o", args->out, "Output image (PNG, EXR, TIFF... by extension)")->capture_default_str()->check(output_name());
   cmd->add_option("--aa", args->aa, "Anti-aliasing: off or bilinear (overrides pipeline.aa)");
