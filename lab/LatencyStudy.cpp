@@ -127,33 +127,31 @@ const std::vector<std::string>& study_output_files() {
   return files;
 }
 
-LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {}
+namespace {
 
-int64_t LatencyStudy::steps() const {
-  const int64_t archs = static_cast<int64_t>(make_architectures(DisplayRaster(s_.config.timing, s_.config.lens.fov_deg), s_.config,
-                                                                lab_config(s_), "step count").size());
-  return archs + (s_.no_sweeps ? 0 : 8 + 21 + 7) + (s_.no_apparatus ? 0 : 1) + 1;
-}
-
-std::string LatencyStudy::run() {
-  const LatencySpec& a = s_;
-  auto step = [this](const std::string& what) {
-    if (stop_requested && stop_requested()) throw StudyStopped(what);
-    if (on_step) on_step(what);
-  };
-  auto note = [this](const std::string& n) {
-    if (!n.empty()) notes_.push_back(n);
-  };
+// The laboratory's display: the configuration's, or Olano's NTSC-like one (--olano).
+dp::ArpConfig study_config(const LatencySpec& a) {
   dp::ArpConfig c = a.config;
   if (a.olano) {
     c.timing = ntsc_like_timing();
     c.lens.fov_deg = 60.0;
   }
+  return c;
+}
+
+}  // namespace
+
+// Every setting checked here, naming its option, so that neither steps() nor run() meets a bad one (steps()
+// builds the architectures, whose own checks name no option).
+LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {
+  const LatencySpec& a = s_;
+  const dp::ArpConfig c = study_config(a);
   const auto issues = dp::validate(c);
   if (!issues.empty()) throw InputError(a.config_source, issues.front().key, issues.front().reason);
   if (a.frames < 2 || a.frames > 100000) throw InputError("--frames", "", "must be 2 .. 100000");
   if (a.grid < 1 || a.grid > 512) throw InputError("--grid", "", "must be 1 .. 512 pixels");
   if (!(a.horizon_ms >= 0)) throw InputError("--horizon-ms", "", "must be >= 0 (prediction looks ahead, not back)");
+  if (a.horizon_ms > 1000) throw InputError("--horizon-ms", "", "must be at most 1000 ms");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
   for (const NamedPath& in : {NamedPath{"--trace", a.trace}, NamedPath{"--scene", a.scene == "gallery" ? "" : a.scene},
                               NamedPath{"--config", a.config_source}})
@@ -170,14 +168,36 @@ std::string LatencyStudy::run() {
   if (!(a.walk_speed >= 0) || a.walk_speed > 50) throw InputError("--walk-speed", "", "must be 0 .. 50 m/s");
   if (!(a.theta_deg >= 0) || a.theta_deg > 90) throw InputError("--theta-deg", "", "must be 0 (one texel) .. 90 degrees");
   if (!(a.point_distance > 0) || a.point_distance > 1e4) throw InputError("--point-distance", "", "must be more than 0 and at most 10 km");
-  if (a.tracker_latency_ms != -1 && !(a.tracker_latency_ms >= 0 && a.tracker_latency_ms <= 1000))
+  if (a.tracker_latency_ms && !(*a.tracker_latency_ms >= 0 && *a.tracker_latency_ms <= 1000))
     throw InputError("--tracker-latency-ms", "", "must be 0 .. 1000 ms");
-  if (a.jit_lead_us != -1 && !(a.jit_lead_us >= 0)) throw InputError("--jitp-lead-us", "", "must be >= 0 (or -1: one line)");
+  if (a.jit_lead_us != -1 && !(a.jit_lead_us >= 0 && a.jit_lead_us <= 1e6))
+    throw InputError("--jitp-lead-us", "", "must be 0 .. 1000000 us (or -1: one line)");
   Prediction pred;
   if (!parse_prediction(a.predict, pred)) throw InputError("--predict", a.predict, "must be none, velocity or acceleration");
+}
+
+int64_t LatencyStudy::steps() const {
+  const dp::ArpConfig c = study_config(s_);
+  const int64_t archs = static_cast<int64_t>(make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab_config(s_),
+                                                                "arpsim latency settings").size());
+  return archs + (s_.no_sweeps ? 0 : 8 + 21 + 7) + (s_.no_apparatus ? 0 : 1) + 1;
+}
+
+std::string LatencyStudy::run() {
+  const LatencySpec& a = s_;
+  auto step = [this](const std::string& what) {
+    if (stop_requested && stop_requested()) throw StudyStopped(what);
+    if (on_step) on_step(what);
+  };
+  auto note = [this](const std::string& n) {
+    if (!n.empty()) notes_.push_back(n);
+  };
+  const dp::ArpConfig c = study_config(a);
+  Prediction pred{};
+  parse_prediction(a.predict, pred);  // (checked by the constructor)
   TrackerModel tm;
   tm.rate_hz = a.tracker_rate;
-  tm.latency_s = (a.tracker_latency_ms >= 0 ? a.tracker_latency_ms : (a.olano ? 33.0 : 1.0)) * 1e-3;
+  tm.latency_s = a.tracker_latency_ms.value_or(a.olano ? 33.0 : 1.0) * 1e-3;
   LabConfig lab = lab_config(a);
   std::string scene_note;
   if (!a.scene.empty()) {

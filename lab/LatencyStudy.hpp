@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct LatencySpec {
   bool olano = false, no_sweeps = false, no_apparatus = false;
   int64_t frames = 180;
   int grid = 8;
-  double tracker_rate = 1000, tracker_latency_ms = -1, horizon_ms = 0, jit_lead_us = -1;
+  double tracker_rate = 1000, horizon_ms = 0, jit_lead_us = -1;
+  std::optional<double> tracker_latency_ms;  // unset: 1 ms, or 33 with --olano
   double conv_transform_ms = 8, conv_render_ms = 10, conv_copy_ms = 12, conv_rate = 2e6, triangles = 0;
   double slats_setup_ms = 1, slats_copy_ms = 3.9, slats_rate = 12000, jit_rate = 2e6;
   double walk_speed = 0, theta_deg = 0, point_distance = 2.0;
