@@ -60,6 +60,7 @@ std::string gtkw_for_vcd(std::istream& in, const std::string& vcd_path, const st
   std::vector<std::string> scope;
   std::vector<Var> vars;
   std::string line;
+  bool ended = false;
   while (lines.next(line)) {
     std::istringstream ss(line);
     std::string tok;
@@ -93,10 +94,13 @@ std::string gtkw_for_vcd(std::istream& in, const std::string& vcd_path, const st
       if (name == "occupancy") v.leaf = top_rel + "_occupancy";
       vars.push_back(v);
     } else if (tok == "$enddefinitions") {
+      ended = true;
       break;
     }
   }
   if (vars.empty()) throw InputError(vcd_path, "", "declares no signals");
+  // A header that never ends is a file cut short or not a VCD: GTKWave would not open it.
+  if (!ended) throw InputError(vcd_path, lines.where(), "the header has no $enddefinitions (cut short, or not a VCD)");
   // Where the view opens: the first timestamp after the header; with no
   // view given, as far as the 200th timestamp (about a hundred clocks: each
   // edge readable) or the end of the trace, whichever comes first.

@@ -13,6 +13,8 @@
 //   marked run-length-8 crashed it (SIGSEGV). Bits a pixel, compression and
 //   planes are checked against the combinations the format has, the size
 //   against the pixel limit, the data offset against the file.
+// - Netpbm: a maxval of 0 or above 65535 was read; width, height and maxval
+//   are checked, the size against the pixel limit.
 // Other formats pass through unchanged.
 #pragma once
 #include <cstdint>
