@@ -23,6 +23,13 @@ bool same_file(const std::string& a, const std::string& b) {
 
 namespace {
 
+// A folder's path for comparing with another's: "." for "", no trailing separator ("o/" is "o").
+std::string folder_key(const std::string& dir) {
+  fs::path p = fs::path(dir.empty() ? "." : dir).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
+  return p.string();
+}
+
 // Creates and removes the temporary file the output will be written through.
 void check_writable(const NamedPath& o) {
   std::error_code ec;
@@ -87,6 +94,24 @@ void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector
       check_output_folder(o.option, fs::path(o.path).has_parent_path() ? fs::path(o.path).parent_path().string() : ".");
     } else {
       check_writable(o);
+    }
+  }
+}
+
+bool same_folder(const std::string& a, const std::string& b) { return same_file(folder_key(a), folder_key(b)); }
+
+void check_out_dir_files(const std::string& dir_option, const std::string& dir, const std::vector<NamedPath>& files,
+                         const std::function<std::string(const std::string& name)>& written_as) {
+  const std::string folder = folder_key(dir);
+  for (const NamedPath& f : files) {
+    if (f.path.empty() || f.path == "-") continue;
+    std::error_code ec;
+    const fs::path given(f.path), resolved = fs::weakly_canonical(given, ec);
+    for (const fs::path& p : {given, ec ? given : resolved}) {
+      if (p.filename().empty()) continue;  // a folder ("o/")
+      if (!same_file(p.has_parent_path() ? p.parent_path().string() : ".", folder)) continue;
+      const std::string what = written_as(p.filename().string());
+      if (!what.empty()) throw InputError(f.option, f.path, "is where " + dir_option + " puts " + what + "; it would be overwritten");
     }
   }
 }

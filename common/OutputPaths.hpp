@@ -4,6 +4,7 @@
 // so an hour of simulation is never lost to a typo in --report, and
 // `--out x.png` never overwrites the `--cross x.png` it reads.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,16 @@ void check_output_folder(const std::string& option, const std::string& dir);
 // Creates an output folder (and its parents) and checks a file can be
 // written in it; InputError naming the option and the folder otherwise.
 void make_output_folder(const std::string& option, const std::string& dir);
+
+// InputError when one of `files` would be overwritten by a file the command writes into the folder `dir`
+// (named by `dir_option`): `written_as(name)` says what the command writes there under that name ("frame 3's
+// image"), or "" for a name it does not write. A file is taken by its name as given and by where it leads
+// (symbolic links followed), so a link to a file the command writes is that file. Empty paths and "-" are skipped.
+void check_out_dir_files(const std::string& dir_option, const std::string& dir, const std::vector<NamedPath>& files,
+                         const std::function<std::string(const std::string& name)>& written_as);
+
+// True when a and b name the same folder ("" and "." alike, "o/" and "o" alike).
+bool same_folder(const std::string& a, const std::string& b);
 
 // True when a and b name the same file (the same inode if both exist, else the same normalised path).
 bool same_file(const std::string& a, const std::string& b);

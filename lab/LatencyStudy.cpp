@@ -153,12 +153,12 @@ LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {
   if (!(a.horizon_ms >= 0)) throw InputError("--horizon-ms", "", "must be >= 0 (prediction looks ahead, not back)");
   if (a.horizon_ms > 1000) throw InputError("--horizon-ms", "", "must be at most 1000 ms");
   if (!a.trace.empty() && a.motion.given()) throw InputError("--trace", "", "give either --trace or --motion, not both");
-  for (const NamedPath& in : {NamedPath{"--trace", a.trace}, NamedPath{"--scene", a.scene == "gallery" ? "" : a.scene},
-                              NamedPath{"--config", a.config_source}})
-    if (!in.path.empty() && in.path != "-")
-      for (const std::string& f : study_output_files())
-        if (same_file(in.path, (fs::path(a.out_dir) / f).string()))
-          throw InputError(in.option, in.path, "is where --out-dir's " + f + " is written; it would be overwritten");
+  check_out_dir_files("--out-dir", a.out_dir,
+                      {{"--trace", a.trace}, {"--scene", a.scene == "gallery" ? "" : a.scene}, {"--config", a.config_source}},
+                      [](const std::string& name) {
+                        const auto& f = study_output_files();
+                        return std::find(f.begin(), f.end(), name) != f.end() ? name : std::string();
+                      });
   for (auto [name, v] : {std::pair<const char*, double>{"--conv-transform-ms", a.conv_transform_ms}, {"--conv-render-ms", a.conv_render_ms},
                          {"--conv-copy-ms", a.conv_copy_ms}, {"--conv-triangle-rate", a.conv_rate}, {"--slats-setup-ms", a.slats_setup_ms},
                          {"--slats-copy-ms", a.slats_copy_ms}, {"--slats-triangle-rate", a.slats_rate},

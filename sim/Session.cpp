@@ -60,30 +60,18 @@ struct OutDirFile {
 };
 constexpr OutDirFile kFrameImage{"image", "frame_", ".png"}, kPhotonTimes{"photon times", "photon_", ".csv"};
 
-// A folder's path for comparing with another's (no trailing separator).
-std::string folder_key(const std::string& dir) {
-  fs::path p = fs::path(dir.empty() ? "." : dir).lexically_normal();
-  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
-  return p.string();
-}
-
 // An input or an output the run would overwrite with a file it writes into
 // --out-dir, or an output that is that folder: refused before any work. The
 // frames written are first + k for k = 0, every, 2 every, ... below `frames`.
 void check_out_dir_files(const OutputSpec& o, int64_t first, int64_t frames, const std::vector<NamedPath>& outputs,
                          const std::vector<NamedPath>& inputs) {
   if (o.every <= 0) return;
-  const std::string out = folder_key(o.out_dir);
+  for (const NamedPath& f : outputs)
+    if (!f.path.empty() && same_folder(f.path, o.out_dir))
+      throw InputError(f.option, f.path, "is the --out-dir folder the frames are written into");
   std::vector<NamedPath> files = outputs;
   files.insert(files.end(), inputs.begin(), inputs.end());
-  for (size_t i = 0; i < files.size(); ++i) {
-    const NamedPath& f = files[i];
-    if (f.path.empty() || f.path == "-") continue;
-    if (i < outputs.size() && same_file(folder_key(f.path), out))
-      throw InputError(f.option, f.path, "is the --out-dir folder the frames are written into");
-    const fs::path p(f.path);
-    if (!same_file(folder_key(p.has_parent_path() ? p.parent_path().string() : "."), out)) continue;
-    const std::string name = p.filename().string();
+  arp::check_out_dir_files("--out-dir", o.out_dir, files, [&](const std::string& name) -> std::string {
     for (const OutDirFile* kind : {&kFrameImage, &kPhotonTimes}) {
       if (kind == &kPhotonTimes && !o.photon_times) continue;
       const std::string prefix = kind->prefix;
@@ -92,11 +80,10 @@ void check_out_dir_files(const OutputSpec& o, int64_t first, int64_t frames, con
       const char* digits = name.c_str() + prefix.size();
       const auto [end, ec] = std::from_chars(digits, name.c_str() + name.size(), n);
       if (ec != std::errc() || end == digits || kind->name(n) != name) continue;
-      if (n >= first && n - first < frames && (n - first) % o.every == 0)
-        throw InputError(f.option, f.path,
-                         "is where --out-dir puts frame " + std::to_string(n) + "'s " + kind->what + "; it would be overwritten");
+      if (n >= first && n - first < frames && (n - first) % o.every == 0) return "frame " + std::to_string(n) + "'s " + kind->what;
     }
-  }
+    return "";
+  });
 }
 
 // "A:B" -> two numbers; InputError naming the option otherwise.

@@ -242,6 +242,7 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
   ASSERT_EQ(::mkfifo(d.file("fifo").c_str(), 0600), 0);  // an output onto it would replace the node
   const auto size_of = [&](const std::string& f) { return fs::file_size(d.file(f)); };
   fs::copy_file(d.file("t.csv"), d.file("photon_000000.csv"));  // a trace with a name --out-dir would give a file
+  fs::create_symlink("photon_000000.csv", d.file("link.csv"));   // and a name that leads there
   const auto png = size_of("x.png"), csv = size_of("t.csv"), txt = size_of("d.txt");
   expect_refused("outputs", d);
   EXPECT_EQ(size_of("x.png"), png);
