@@ -208,6 +208,31 @@ TEST(HostileInput, ATraceStartingAfterTheRunIsSaid) {
   EXPECT_EQ(e.output.find("the trace starts at"), std::string::npos) << e.output;
 }
 
+// A file a model names (an OBJ's material library) that is a FIFO or a device is refused at once, named: assimp
+// opened it to see whether it existed, and a FIFO stalled the import until its guard stopped it after 60 s, then
+// blamed on the model's size; a device was read as a material. A regular file of that name still imports.
+TEST(HostileInput, AFileAModelNamesMustBeARegularFile) {
+  TempDir d;
+  std::ofstream(d.file("m.obj")) << "mtllib mat.mtl\nv 0 0 -2\nv 1 0 -2\nv 0 1 -2\nf 1 2 3\n";
+  std::ofstream(d.file("s.json")) << R"({"objects": [{"model": "m.obj"}]})";
+  const std::string frame = kArpsim + " frame --out " + d.file("out.png") + " --scene " + d.file("s.json");
+  ASSERT_EQ(::mkfifo(d.file("mat.mtl").c_str(), 0600), 0);
+  const auto r = run_command(frame);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("m.obj: names mat.mtl: not a regular file"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(d.file("out.png")));
+  fs::remove(d.file("mat.mtl"));
+  fs::create_symlink("/dev/zero", d.file("mat.mtl"));
+  const auto z = run_command(frame);
+  EXPECT_EQ(z.status, 2) << z.output;
+  EXPECT_NE(z.output.find("m.obj: names mat.mtl: not a regular file"), std::string::npos) << z.output;
+  fs::remove(d.file("mat.mtl"));
+  std::ofstream(d.file("mat.mtl")) << "newmtl a\nKd 1 0 0\n";
+  const auto ok = run_command(frame);
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_TRUE(fs::exists(d.file("out.png")));
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {

@@ -1,10 +1,13 @@
 #include "AssimpImport.hpp"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+
+#include <filesystem>
 
 #include "common/InputError.hpp"
 
@@ -26,14 +29,37 @@ struct ScopedLog {
   }
   ~ScopedLog() { Assimp::DefaultLogger::kill(); }
 };
+// The files a model names (an OBJ's mtllib, a glTF's buffers) are opened only
+// when they are regular files: a FIFO or a device named there blocked the
+// importer (until the import guard's 60 s) or read without end. The first
+// refused is kept and named.
+// (assimp's own Exists() opens the file to see whether it is there.)
+struct RegularFilesOnly : Assimp::DefaultIOSystem {
+  mutable std::string refused;
+  bool regular(const char* file) const {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec) || std::filesystem::is_regular_file(file, ec)) return true;
+    if (refused.empty()) refused = file;
+    return false;
+  }
+  bool Exists(const char* file) const override { return regular(file) && Assimp::DefaultIOSystem::Exists(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return regular(file) ? Assimp::DefaultIOSystem::Open(file, mode) : nullptr;
+  }
+};
 }  // namespace
 
 Mesh assimp_import(const std::string& path) {
   ScopedLog log;
   Assimp::Importer imp;
+  auto* io = new RegularFilesOnly;  // the importer owns it
+  imp.SetIOHandler(io);
   const aiScene* sc = imp.ReadFile(path, aiProcess_Triangulate | aiProcess_PreTransformVertices |
                                              aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
                                              aiProcess_ValidateDataStructure);
+  if (!io->refused.empty())
+    // (short: the import helper's message is quoted in 80 characters)
+    throw InputError(path, "", "names " + quoted(std::filesystem::path(io->refused).filename().string()) + ": not a regular file");
   if (!sc || !sc->mRootNode || (sc->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
     throw InputError(path, "", "cannot import the model: " + quoted(imp.GetErrorString()));  // assimp may quote the whole file
   if (log.stream->text.find("out-of-range indices") != std::string::npos)
