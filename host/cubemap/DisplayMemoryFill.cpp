@@ -1,7 +1,10 @@
 #include "DisplayMemoryFill.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
+#include <vector>
 
 #include "CubeFaceBasis.hpp"
 
@@ -22,14 +25,26 @@ void fill_back_buffer(dp::DisplayMemoryBank& bank, const CubeMapImages& cm, uint
   const auto& fmt = bank.format();
   const int S = fmt.face_size;
   if (cm.face_size != S) throw std::invalid_argument("cube map face size differs from the display memory's");
-  for (int f = 0; f < 6; ++f)
+  // The six faces at once (reserve_faces, store_face: what write() does texel by texel, with the pool grown
+  // once by what they need instead of a quarter at a time, each growth a copy of everything before it).
+  // Every texel is written: `skip` has another depth code than all of them.
+  const uint64_t skip = uint64_t{~depth} << 32;
+  const size_t face_words = static_cast<size_t>(S) * static_cast<size_t>(S);
+  std::vector<uint64_t> words(6 * face_words);
+  std::array<const uint64_t*, 6> faces{};
+  for (int f = 0; f < 6; ++f) {
+    uint64_t* w = words.data() + static_cast<size_t>(f) * face_words;
     for (int y = 0; y < S; ++y)
       for (int x = 0; x < S; ++x) {
         int col, row;
         memory_texel_to_image(f, x, y, S, col, row);
         const uint8_t* p = cm.faces[static_cast<size_t>(f)].px(col, row);
-        bank.write(f, x, y, fmt.pack_rgb8(p[0], p[1], p[2]), depth);
+        w[static_cast<size_t>(y) * static_cast<size_t>(S) + static_cast<size_t>(x)] = (uint64_t{depth} << 32) | fmt.pack_rgb8(p[0], p[1], p[2]);
       }
+    faces[static_cast<size_t>(f)] = w;
+  }
+  bank.reserve_faces(faces, skip);
+  for (int f = 0; f < 6; ++f) bank.store_face(f, faces[static_cast<size_t>(f)], skip);
 }
 
 void load_into_memories(dp::DisplayMemorySet& set, int memory, const CubeMapImages& cm, uint32_t depth,
