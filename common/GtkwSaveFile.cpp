@@ -93,10 +93,10 @@ std::string gtkw_for_vcd(std::istream& in, const std::string& vcd_path, const st
       else v.group = top_rel.empty() ? "top" : top_rel;
       if (name == "occupancy") v.leaf = top_rel + "_occupancy";
       vars.push_back(v);
-    } else if (tok == "$enddefinitions") {
-      ended = true;
-      break;
     }
+    // (a line may hold several commands: "$upscope $end $enddefinitions $end")
+    for (std::string t = tok; !ended && !t.empty(); t.clear(), ss >> t) ended = t == "$enddefinitions";
+    if (ended) break;
   }
   if (vars.empty()) throw InputError(vcd_path, "", "declares no signals");
   // A header that never ends is a file cut short or not a VCD: GTKWave would not open it.

@@ -23,11 +23,12 @@ bool same_file(const std::string& a, const std::string& b) {
 
 namespace {
 
-// A folder's path for comparing with another's: "." for "", no trailing separator ("o/" is "o").
+// A folder's path for comparing with another's: "." for "", no trailing separator ("o/" is "o"). Not
+// normalised as text: "S/.." is where the link S leads's parent, which same_file finds and the text does not.
 std::string folder_key(const std::string& dir) {
-  fs::path p = fs::path(dir.empty() ? "." : dir).lexically_normal();
-  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
-  return p.string();
+  std::string p = dir.empty() ? "." : dir;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  return p;
 }
 
 // Creates and removes the temporary file the output will be written through.

@@ -18,6 +18,7 @@
 #include "common/OutputPaths.hpp"
 
 using arp::test::run_command;
+using arp::test::read_text;
 using arp::test::TempDir;
 namespace fs = std::filesystem;
 
@@ -233,6 +234,29 @@ TEST(HostileInput, AFileAModelNamesMustBeARegularFile) {
   EXPECT_TRUE(fs::exists(d.file("out.png")));
 }
 
+// A folder's name is only a name: gnuplot ran in --out-dir through a shell, `cd 'DIR' && gnuplot ...`, so a
+// quote in the folder's name ran the rest as commands. It is spawned without a shell now, and still plots.
+TEST(HostileInput, AFolderNameIsNeverRunAsACommand) {
+  TempDir d;
+  const std::string dir = d.file("x';touch " + d.file("PWNED") + ";'");
+  const auto r = run_command(kArpsim + " latency -q --frames 4 --no-sweeps --no-apparatus --out-dir \"" + dir + "\"");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_FALSE(fs::exists(d.file("PWNED"))) << "a folder's name ran as a command";
+  EXPECT_TRUE(fs::exists(dir + "/latency.png")) << r.output;
+  EXPECT_TRUE(fs::exists(dir + "/latency.gp.log"));
+}
+
+// A VCD's header ends at $enddefinitions wherever it stands on its line (the format allows several commands a
+// line); one without it is refused (refusals.txt), not one that puts it after another command.
+TEST(HostileInput, AVcdHeaderMayEndMidLine) {
+  TempDir d;
+  std::ofstream(d.file("w.vcd")) << "$timescale 1 ps $end\n$scope module SystemC $end\n$var wire 1 ! clk $end\n"
+                                    "$upscope $end $enddefinitions $end\n#0\n1!\n#10\n0!\n";
+  const auto r = run_command(kArpsim + " gtkw " + d.file("w.vcd") + " -o " + d.file("w.gtkw"));
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(read_text(d.file("w.gtkw")).find("clk"), std::string::npos);
+}
+
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
 // hashes the trace's text) came first, and the real error read as its consequence.
 TEST(HostileInput, ATraceThatDoesNotParseIsNotPrecededByAPlansWarning) {
@@ -268,11 +292,17 @@ TEST(HostileInput, OutputsAreCheckedBeforeAnythingRunsAndNeverOverwriteAnInput) 
   const auto size_of = [&](const std::string& f) { return fs::file_size(d.file(f)); };
   fs::copy_file(d.file("t.csv"), d.file("photon_000000.csv"));  // a trace with a name --out-dir would give a file
   fs::create_symlink("photon_000000.csv", d.file("link.csv"));   // and a name that leads there
+  fs::create_directories(d.file("R/sub"));                         // S/.. is R, not "." as the text reads
+  fs::create_directory_symlink("R/sub", d.file("S"));
+  fs::copy_file(d.file("t.csv"), d.file("R/photon_000000.csv"));
+  fs::copy_file(d.file("t.csv"), d.file("R/error-over-time.csv"));
   const auto png = size_of("x.png"), csv = size_of("t.csv"), txt = size_of("d.txt");
   expect_refused("outputs", d);
   EXPECT_EQ(size_of("x.png"), png);
   EXPECT_EQ(size_of("t.csv"), csv);
   EXPECT_EQ(size_of("photon_000000.csv"), csv);
+  EXPECT_EQ(size_of("R/photon_000000.csv"), csv);
+  EXPECT_EQ(size_of("R/error-over-time.csv"), csv);
   EXPECT_FALSE(fs::exists(d.file("frame_000000.png")));
   EXPECT_FALSE(fs::exists(d.file("o")));
   EXPECT_EQ(size_of("d.txt"), txt);
