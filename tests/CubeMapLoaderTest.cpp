@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "TestSupport.hpp"
 #include "host/cubemap/CalibrationPattern.hpp"
@@ -222,6 +225,38 @@ TEST(ImageFiles, ABmpHeaderMustBeACombinationTheFormatHas) {
   const InputError e = test::error_of([&] { read_rgb8(d.file("rle.bmp")); });
   EXPECT_EQ(e.place(), "header");
   EXPECT_NE(e.reason().find("compression 1 with 24 bits"), std::string::npos) << e.what();
+}
+
+// Netpbm and PFM headers are checked before OpenImageIO sizes an image from them: width, height, maxval
+// and, for binary files, the pixel data the header fixes against the file's size. What the formats allow
+// still reads: a comment touching a number, plain (text) samples, two bytes a sample, PFM floats.
+TEST(ImageFiles, ANetpbmHeaderMustFitItsFile) {
+  test::TempDir d;
+  const auto file = [&](const std::string& name, const std::string& header, size_t data_bytes, char fill = '\x40') {
+    std::ofstream(d.file(name), std::ios::binary) << header << std::string(data_bytes, fill);
+    return d.file(name);
+  };
+  const std::vector<std::pair<std::string, std::string>> good = {
+      {"a.ppm", "P6\n# made by hand\n8#width\n4 255\n"}, {"b.pgm", "P5 8 4#h\n255\n"}, {"c.ppm", "P6\r\n8 4\r\n65535\n"}};
+  for (const auto& [name, header] : good) {
+    const size_t bytes = 8 * 4 * (name[0] == 'a' ? 3 : name[0] == 'b' ? 1 : 6);
+    EXPECT_EQ(read_rgb8(file(name, header, bytes)).width, 8) << name;
+  }
+  std::ofstream(d.file("plain.pgm")) << "P2\n# plain\n2 2#size\n255\n0 64\n128 255\n";
+  EXPECT_EQ(read_rgb8(d.file("plain.pgm")).height, 2);
+  EXPECT_EQ(read_rgb8(file("f.pfm", "PF\n8 4\n-1.0\n", 8 * 4 * 12, '\0')).width, 8);
+  const std::vector<std::tuple<std::string, std::string, size_t, std::string>> bad = {
+      {"short.ppm", "P6\n23168 11584\n255\n", 1000, "declares 23168 x 11584 pixels, 805134336 bytes; the file holds 1000 after it"},
+      {"short.pfm", "PF\n11584 5792\n-1.0\n", 1000, "declares 11584 x 5792 pixels, 805134336 bytes"},
+      {"short16.pgm", "P5 8 4 65535\n", 63, "64 bytes; the file holds 63"},
+      {"wide.pbm", "P4\n4294967296 4294967296\n", 16, "PNM width beyond 2^31 - 1"},
+      {"big.pgm", "P5\n65536 65536\n255\n", 16, "images are limited to 2^"},
+      {"zero.pgm", "P5\n8 4\n0\n", 32, "PNM maxval 0 (must be 1 .. 65535)"},
+      {"nonum.pgm", "P5\n8 x\n255\n", 32, "PNM height is not a number"}};
+  for (const auto& [name, header, bytes, says] : bad) {
+    const InputError e = test::error_of([&] { read_rgb8(file(name, header, bytes)); });
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << name << ": " << e.what();
+  }
 }
 
 TEST(ImageFiles, WritesAtomicallyAndRefusesUnknownFormats) {

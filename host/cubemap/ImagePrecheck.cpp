@@ -160,31 +160,48 @@ void precheck_bmp(const std::string& path, std::ifstream& in, uint64_t file_size
   if (offset >= file_size) throw InputError(path, "header", "BMP pixel data offset " + std::to_string(offset) + " is past the end of the file");
 }
 
-// Netpbm (P1-P6): width, height and maxval are decimal text between blanks and '#' comments. OpenImageIO's
-// reader took a maxval of 0 (every sample divided by it) or above 65535 (which no sample of one or two bytes
-// can reach), and sized the image from the header alone.
-void precheck_pnm(const std::string& path, std::ifstream& in, uint64_t max_pixels) {
+// Netpbm (P1-P6) and PFM (PF, Pf): width, height and maxval (a PFM's scale) are text between blanks and '#'
+// comments (a comment may touch a number); one blank ends the header of a binary file, whose pixel data's size
+// the header then fixes. OpenImageIO's reader took a maxval of 0 (every sample divided by it) or above 65535,
+// and sized the image from the header alone: a 1 KB file declaring 23168 x 11584 pixels took 930 MB.
+void precheck_pnm(const std::string& path, std::ifstream& in, uint64_t file_size, uint64_t max_pixels) {
   const char kind = static_cast<char>(in.get());
-  const bool bitmap = kind == '1' || kind == '4';
+  const bool pfm = kind == 'F' || kind == 'f', bitmap = kind == '1' || kind == '4';
   uint64_t field[3] = {0, 0, 1};
   static const char* const kName[3] = {"width", "height", "maxval"};
-  for (int f = 0; f < (bitmap ? 2 : 3); ++f) {
-    int c = in.get();
+  const int fields = pfm || bitmap ? 2 : 3;  // (a PFM's scale, a real number, is left to its reader)
+  int c = in.get();
+  for (int f = 0; f < fields; ++f) {
     while (c == '#' || std::isspace(c)) {
       if (c == '#')
-        while (c != '\n' && c != std::char_traits<char>::eof()) c = in.get();
-      c = in.get();
+        while (c != '\n' && c != '\r' && c != std::char_traits<char>::eof()) c = in.get();
+      else
+        c = in.get();
     }
     if (!std::isdigit(c)) throw InputError(path, "header", std::string("PNM ") + kName[f] + " is not a number");
     uint64_t v = 0;
     for (; std::isdigit(c); c = in.get())
-      if ((v = v * 10 + static_cast<uint64_t>(c - '0')) > (uint64_t{1} << 32))
-        throw InputError(path, "header", std::string("PNM ") + kName[f] + " beyond 2^32");
+      if ((v = v * 10 + static_cast<uint64_t>(c - '0')) > uint64_t{0x7fffffff})
+        throw InputError(path, "header", std::string("PNM ") + kName[f] + " beyond 2^31 - 1");
     field[f] = v;
   }
   if (field[0] == 0 || field[1] == 0) throw InputError(path, "header", "PNM of " + std::to_string(field[0]) + " x " + std::to_string(field[1]) + " pixels");
   check_pixels(path, "header", field[0], field[1], max_pixels);
   if (field[2] < 1 || field[2] > 65535) throw InputError(path, "header", "PNM maxval " + std::to_string(field[2]) + " (must be 1 .. 65535)");
+  if (kind == '1' || kind == '2' || kind == '3') return;  // plain (text) samples: no fixed size
+  if (pfm) {  // the scale, ended by a line end
+    while (std::isspace(c)) c = in.get();
+    while (c != '\n' && c != std::char_traits<char>::eof()) c = in.get();
+  }
+  if (!std::isspace(c)) throw InputError(path, "header", "PNM header not ended by a blank");
+  const uint64_t bytes = field[2] > 255 ? 2 : 1;
+  const uint64_t row = kind == '4' ? (field[0] + 7) / 8 : field[0] * (kind == '5' ? bytes : kind == '6' ? 3 * bytes : kind == 'F' ? 12 : 4);
+  const uint64_t header = static_cast<uint64_t>(in.tellg());
+  const uint64_t need = row * field[1];  // (each at most 2^31 - 1: no overflow)
+  if (in.fail() || header > file_size || file_size - header < need)
+    throw InputError(path, "pixels", "the header declares " + std::to_string(field[0]) + " x " + std::to_string(field[1]) + " pixels, " +
+                                         std::to_string(need) + " bytes; the file holds " +
+                                         std::to_string(file_size - std::min(header, file_size)) + " after it");
 }
 
 }  // namespace
@@ -197,10 +214,10 @@ void precheck_image(const std::string& path, uint64_t file_size, uint64_t max_pi
   in.read(reinterpret_cast<char*>(magic), 8);
   if (file_size >= 8 && std::memcmp(magic, kPngMagic, 8) == 0) return precheck_png(path, in, file_size, max_pixels);
   if (file_size >= 2 && magic[0] == 'B' && magic[1] == 'M') return precheck_bmp(path, in, file_size, max_pixels);
-  if (file_size >= 2 && magic[0] == 'P' && magic[1] >= '1' && magic[1] <= '6') {
+  if (file_size >= 2 && magic[0] == 'P' && ((magic[1] >= '1' && magic[1] <= '6') || magic[1] == 'F' || magic[1] == 'f')) {
     in.clear();
     in.seekg(1);
-    return precheck_pnm(path, in, max_pixels);
+    return precheck_pnm(path, in, file_size, max_pixels);
   }
   if (file_size < 4 || std::memcmp(magic, kExrMagic, 4) != 0) return;  // neither: its decoder checks it
   // The header, at most 1 MiB (an OpenEXR header is attributes: a few kB at most in practice).

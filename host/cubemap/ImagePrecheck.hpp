@@ -13,8 +13,10 @@
 //   marked run-length-8 crashed it (SIGSEGV). Bits a pixel, compression and
 //   planes are checked against the combinations the format has, the size
 //   against the pixel limit, the data offset against the file.
-// - Netpbm: a maxval of 0 or above 65535 was read; width, height and maxval
-//   are checked, the size against the pixel limit.
+// - Netpbm and PFM: a maxval of 0 or above 65535 was read, and a 1 KB file
+//   declaring 23168 x 11584 pixels took 930 MB: width, height and maxval are
+//   checked, the size against the pixel limit, a binary file's pixel data
+//   against the file's size.
 // Other formats pass through unchanged.
 #pragma once
 #include <cstdint>
