@@ -17,6 +17,7 @@
 #include "common/InputError.hpp"
 #include "common/OutputPaths.hpp"
 #include "common/Units.hpp"
+#include "tracker/PoseSample.hpp"
 #include "host/scene/Gallery.hpp"
 #include "host/scene/SceneFile.hpp"
 #include "tracker/MotionSummary.hpp"
@@ -129,6 +130,9 @@ const std::vector<std::string>& study_output_files() {
 
 namespace {
 
+// What the pipelines' own checks name: the options that set them.
+const char* const kSettings = "the pipelines' settings (--conv-*, --slats-*, --jitp-*, --triangles, --scene)";
+
 // The laboratory's display: the configuration's, or Olano's NTSC-like one (--olano).
 dp::ArpConfig study_config(const LatencySpec& a) {
   dp::ArpConfig c = a.config;
@@ -172,14 +176,18 @@ LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {
     throw InputError("--tracker-latency-ms", "", "must be 0 .. 1000 ms");
   if (a.jit_lead_us != -1 && !(a.jit_lead_us >= 0 && a.jit_lead_us <= 1e6))
     throw InputError("--jitp-lead-us", "", "must be 0 .. 1000000 us (or -1: one line)");
+  if (a.tracker_rate < 1 || a.tracker_rate > tracker::kMaxSampleRateHz)
+    throw InputError("--tracker-rate", "", "must be 1 .. 1000000 reports a second");
   Prediction pred;
   if (!parse_prediction(a.predict, pred)) throw InputError("--predict", a.predict, "must be none, velocity or acceleration");
+  // The pipelines' own checks (a render stage over 10 s, Slats' set-up beyond a field), before the progress line's count.
+  make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab_config(a), kSettings);
 }
 
 int64_t LatencyStudy::steps() const {
   const dp::ArpConfig c = study_config(s_);
   const int64_t archs = static_cast<int64_t>(make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab_config(s_),
-                                                                "arpsim latency settings").size());
+                                                                kSettings).size());
   return archs + (s_.no_sweeps ? 0 : 8 + 21 + 7) + (s_.no_apparatus ? 0 : 1) + 1;
 }
 
@@ -264,7 +272,7 @@ std::string LatencyStudy::run() {
     motion_name += ", walking " + printf_text("%.2f", a.walk_speed) + " m/s";
   }
   const TrackerFeed feed(motion, tm, a.trace.empty() ? "--motion" : a.trace);
-  auto archs = make_architectures(d, c, lab, "arpsim latency settings", &feed);
+  auto archs = make_architectures(d, c, lab, kSettings, &feed);
   std::vector<std::string> names;
   for (const auto& ar : archs) names.push_back(ar->name());
   make_output_folder("--out-dir", out);  // only once every setting has been checked

@@ -124,7 +124,9 @@ void check_host_options_used(const HostSpec& h, double regions) {
   for (const auto& [option, given] : {std::pair{"--speed", h.walk_speed.has_value()}, {"--threshold-deg", h.threshold_deg.has_value()},
                                       {"--baseline", h.baseline}, {"--engine-triangles", h.engine_triangles.has_value()},
                                       {"--engine-fill", h.engine_fill.has_value()}, {"--engine-setup", h.engine_setup.has_value()},
-                                      {"--regions", h.region_size.has_value()}})
+                                      {"--regions", h.region_size.has_value()}, {"--margin", h.margin.has_value()},
+                                      {"--no-segmentation", !h.segmentation}, {"--region-cubes", h.region_cubes}, {"--warp", h.warp},
+                                      {"--warp-falloff", h.warp_falloff != HostSpec{}.warp_falloff}})
     if (given && h.walk.empty()) throw InputError(option, "", "acts on the host's rendering along a walk: it needs --walk");
   for (const auto& [option, given] : {std::pair{"--margin", h.margin.has_value()}, {"--no-segmentation", !h.segmentation}})
     if (given && regions == 0) throw InputError(option, "", "needs --regions SIZE (or memory.region_size_m)");
@@ -177,6 +179,9 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   }
   const double regions = s.config.memory.region_size_m;  // (--regions already applied: the constructor)
   check_host_options_used(h, regions);
+  if (!h.walk.empty() && !s.memories.position.empty()) throw InputError("--position", "", "the walk moves the head: give one or the other");
+  if (!h.walk.empty() && s.memories.time_s != MemoryContents{}.time_s)
+    throw InputError("--time", "", "a walk's scene time is the run's own (each frame's): --time is for a still scene");
   if (!o.tear_image.empty() && (regions == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");
   if (h.region_cubes && regions == 0) throw InputError("--region-cubes", "", "needs --regions SIZE (or memory.region_size_m)");

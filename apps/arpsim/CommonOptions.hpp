@@ -33,10 +33,17 @@ void strict_numbers(CLI::App& app);
 // The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
 void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, std::optional<double>& threshold_deg);
 
-// An output's name: given, it must name something (an empty --report would silently write nothing).
-inline CLI::Validator output_name() {
-  return CLI::Validator([](std::string& s) { return s.empty() ? std::string("is empty: name the file to write") : std::string(); },
-                        "", "output name");
+// An output's name (`what`: file or folder): given, it must name something (an empty --report would
+// silently write nothing), and not "-", standard input's name to every reader (check_output_paths says so
+// for files too, for callers of the library).
+inline CLI::Validator output_name(const std::string& what = "file") {
+  return CLI::Validator(
+      [what](std::string& s) {
+        if (s.empty()) return "is empty: name the " + what + " to write";
+        if (s == "-") return "-: names standard input, and outputs go to " + what + "s: name one (./- for a " + what + " called '-')";
+        return std::string();
+      },
+      "", "output name");
 }
 
 // --threads: worker threads of the functional model and the scene renderer.

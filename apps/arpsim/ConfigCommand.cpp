@@ -20,7 +20,8 @@ Runner add_config_command(CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* cmd = a->cfg.add_command(app, "config", "Print the effective configuration as JSON (defaults embedded)");
   cmd->add_flag("--list", a->list, "Print every key with its value, range, unit and meaning instead");
-  cmd->add_option("--update-doc", a->doc, "Rewrite the generated key tables of this markdown file (docs/configuration.md)");
+  cmd->add_option("--update-doc", a->doc, "Rewrite the generated key tables of this markdown file (docs/configuration.md)")
+      ->check(output_name());
   return [a] {
     const dp::ArpConfig c = a->cfg.resolve();
     if (!a->doc.empty()) {

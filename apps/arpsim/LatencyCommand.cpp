@@ -56,7 +56,7 @@ Runner add_latency_command(CLI::App& app) {
   cmd->add_option("--trace", s.trace, "Head motion from a trace file (CSV, docs/tracker.md) instead of --motion");
   cmd->add_flag("--olano", s.olano, "Olano et al.'s set-up: NTSC-like interlaced 600-pixel display, 60 deg across, 33 ms tracker");
   cmd->add_option("--frames", s.frames, "Display refreshes measured")->capture_default_str();
-  cmd->add_option("--out-dir", s.out_dir, "Output folder")->capture_default_str()->check(output_name());
+  cmd->add_option("--out-dir", s.out_dir, "Output folder")->capture_default_str()->check(output_name("folder"));
   cmd->add_option("--grid", s.grid, "Sample every Nth pixel and line (plus the last ones and the centre)")->capture_default_str();
   cmd->add_option("--tracker-rate", s.tracker_rate, "Tracker reports per second")->capture_default_str();
   cmd->add_option("--tracker-latency-ms", s.tracker_latency_ms, "Tracker sample -> system latency (default 1, or 33 with --olano)");

@@ -37,7 +37,7 @@ int run(RunArgs& a) {
 }
 
 void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
-  cmd->add_option("--out-dir", o.out_dir, "Folder for frame_NNNNNN.png (created if missing)")->capture_default_str()->check(output_name());
+  cmd->add_option("--out-dir", o.out_dir, "Folder for frame_NNNNNN.png (created if missing)")->capture_default_str()->check(output_name("folder"));
   cmd->add_option("--every", o.every, "Write every Nth frame as an image (0: none)")->capture_default_str();
   cmd->add_flag("--photon-times", o.photon_times, "Also write photon_NNNNNN.csv (every pixel's photon time) with each image");
   cmd->add_option("--report", o.report, "JSON report: latencies, stage and FIFO statistics, underflows, speed")->check(output_name());
@@ -61,10 +61,12 @@ void add_output_options(CLI::App* cmd, sim::OutputSpec& o) {
                   "With --walk: the truth's pixel is the mean of N x N samples over it (its pipeline at N x the display's "
                   "resolution, 1 .. 4), an area-sampled image rather than one sample at the pixel's centre")
       ->capture_default_str();
-  cmd->add_option("--host-csv", o.host_csv, "With --walk: CSV, one row per display memory (rates, load); needs --report");
+  cmd->add_option("--host-csv", o.host_csv, "With --walk: CSV, one row per display memory (rates, load); needs --report")
+      ->check(output_name());
   cmd->add_option("--tear-image", o.tear_image,
                   "--regions: write a magnified view (8x) of the 48x32 window with the most crack pixels: displayed | truth | "
-                  "cracks magenta, tears yellow, seams cyan");
+                  "cracks magenta, tears yellow, seams cyan")
+      ->check(output_name());
   cmd->add_option("--tear-at", o.tear_at, "--tear-image: show this place instead, FRAME:EYE:X:Y (e.g. the same place in another run)");
 }
 

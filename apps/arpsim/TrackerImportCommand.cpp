@@ -2,6 +2,7 @@
 // axes and units stated) converted into a trace file, with a summary of the
 // motion and warnings for what a human head does not do.
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "CommonOptions.hpp"
@@ -21,12 +22,12 @@ struct ImportArgs {
   std::string in, out;
   tracker::DatasetLayoutOptions layout;
   bool drop_repeats = false;
-  double resample_hz = 0;
+  std::optional<double> resample_hz;  // given 0 is refused with the rate's range, not read as "not given"
 };
 
 int run_import(const ImportArgs& a) {
   const tracker::DatasetLayout layout = tracker::dataset_layout(a.layout);
-  if (a.resample_hz != 0) tracker::check_resample_rate(a.resample_hz);  // before the dataset is read
+  if (a.resample_hz) tracker::check_resample_rate(*a.resample_hz);  // before the dataset is read
   check_output_paths({{"trace", a.out}}, {{"dataset", a.in}});
   std::vector<tracker::PoseSample> samples = tracker::read_head_motion_dataset(a.in, layout);
   const tracker::MotionSummary before = tracker::summarize_motion(samples);
@@ -38,11 +39,11 @@ int run_import(const ImportArgs& a) {
     std::printf("  --drop-repeats: %zu repeated samples dropped, %zu kept\n", n, samples.size());
     if (samples.size() < 2) throw InputError(a.in, "", "fewer than two samples differ; nothing to import");
   }
-  if (a.resample_hz > 0) {
-    samples = tracker::resample_as_asked(samples, a.resample_hz);
-    std::printf("  --resample: %zu samples at %.1f Hz (spherical linear interpolation)\n", samples.size(), a.resample_hz);
+  if (a.resample_hz) {
+    samples = tracker::resample_as_asked(samples, *a.resample_hz);
+    std::printf("  --resample: %zu samples at %.1f Hz (spherical linear interpolation)\n", samples.size(), *a.resample_hz);
   }
-  if (a.drop_repeats || a.resample_hz > 0)
+  if (a.drop_repeats || a.resample_hz)
     for (const auto& l : tracker::describe(tracker::summarize_motion(samples))) std::printf("  now: %s\n", l.c_str());
   tracker::write_trace_csv(a.out, samples);
   std::printf("  -> %s (%zu samples, %.3f s)\n", a.out.c_str(), samples.size(),

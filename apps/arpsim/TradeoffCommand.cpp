@@ -127,7 +127,7 @@ int run_tradeoff(TradeoffArgs& a) {
 Runner add_tradeoff_command(CLI::App& app) {
   auto a = std::make_shared<TradeoffArgs>();
   CLI::App* cmd = app.add_subcommand("tradeoff", "Measure the speed-accuracy trade: levels, widths, theta_t, regions, latency knobs");
-  cmd->add_option("--out", a->out, "Folder for the plan, the points' results and the tables")->check(output_name());
+  cmd->add_option("--out", a->out, "Folder for the plan, the points' results and the tables")->check(output_name("folder"));
   cmd->add_flag("--quick", a->quick, "A smaller sweep (minutes): fewer frames and points");
   cmd->add_option("--jobs,-j", a->jobs, "Points run side by side (default: the cores; speed points always run alone)")
       ->check(CLI::Range(1, 1024));
