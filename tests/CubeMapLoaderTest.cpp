@@ -244,7 +244,8 @@ TEST(ImageFiles, ANetpbmHeaderMustFitItsFile) {
   }
   std::ofstream(d.file("plain.pgm")) << "P2\n# plain\n2 2#size\n255\n0 64\n128 255\n";
   EXPECT_EQ(read_rgb8(d.file("plain.pgm")).height, 2);
-  EXPECT_EQ(read_rgb8(file("f.pfm", "PF\n8 4\n-1.0\n", 8 * 4 * 12, '\0')).width, 8);
+  for (const std::string header : {"PF\n8 4\n-1.0\n", "PF\n8 4\n-1.0 ", "PF\r8 4\r-1.0\r"})  // the scale ended by any blank
+    EXPECT_EQ(read_rgb8(file("f.pfm", header, 8 * 4 * 12, '\0')).width, 8) << header;
   const std::vector<std::tuple<std::string, std::string, size_t, std::string>> bad = {
       {"short.ppm", "P6\n23168 11584\n255\n", 1000, "declares 23168 x 11584 pixels, 805134336 bytes; the file holds 1000 after it"},
       {"short.pfm", "PF\n11584 5792\n-1.0\n", 1000, "declares 11584 x 5792 pixels, 805134336 bytes"},
@@ -252,7 +253,9 @@ TEST(ImageFiles, ANetpbmHeaderMustFitItsFile) {
       {"wide.pbm", "P4\n4294967296 4294967296\n", 16, "PNM width beyond 2^31 - 1"},
       {"big.pgm", "P5\n65536 65536\n255\n", 16, "images are limited to 2^"},
       {"zero.pgm", "P5\n8 4\n0\n", 32, "PNM maxval 0 (must be 1 .. 65535)"},
-      {"nonum.pgm", "P5\n8 x\n255\n", 32, "PNM height is not a number"}};
+      {"nonum.pgm", "P5\n8 x\n255\n", 32, "PNM height is not a number"},
+      {"ends.ppm", "P6\n8 4\n255", 0, "PNM file ends in its header: no pixel data"},
+      {"noscale.pfm", "PF\n8 4\n", 0, "PFM file ends before its scale"}};
   for (const auto& [name, header, bytes, says] : bad) {
     const InputError e = test::error_of([&] { read_rgb8(file(name, header, bytes)); });
     EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << name << ": " << e.what();

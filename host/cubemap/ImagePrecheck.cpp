@@ -170,34 +170,41 @@ void precheck_pnm(const std::string& path, std::ifstream& in, uint64_t file_size
   uint64_t field[3] = {0, 0, 1};
   static const char* const kName[3] = {"width", "height", "maxval"};
   const int fields = pfm || bitmap ? 2 : 3;  // (a PFM's scale, a real number, is left to its reader)
+  const std::string format = pfm ? "PFM" : "PNM";
+  constexpr int kEnd = std::char_traits<char>::eof();
   int c = in.get();
   for (int f = 0; f < fields; ++f) {
     while (c == '#' || std::isspace(c)) {
       if (c == '#')
-        while (c != '\n' && c != '\r' && c != std::char_traits<char>::eof()) c = in.get();
+        while (c != '\n' && c != '\r' && c != kEnd) c = in.get();
       else
         c = in.get();
     }
-    if (!std::isdigit(c)) throw InputError(path, "header", std::string("PNM ") + kName[f] + " is not a number");
+    if (!std::isdigit(c)) throw InputError(path, "header", format + " " + kName[f] + " is not a number");
     uint64_t v = 0;
     for (; std::isdigit(c); c = in.get())
       if ((v = v * 10 + static_cast<uint64_t>(c - '0')) > uint64_t{0x7fffffff})
-        throw InputError(path, "header", std::string("PNM ") + kName[f] + " beyond 2^31 - 1");
+        throw InputError(path, "header", format + " " + kName[f] + " beyond 2^31 - 1");
     field[f] = v;
   }
-  if (field[0] == 0 || field[1] == 0) throw InputError(path, "header", "PNM of " + std::to_string(field[0]) + " x " + std::to_string(field[1]) + " pixels");
+  if (field[0] == 0 || field[1] == 0)
+    throw InputError(path, "header", format + " of " + std::to_string(field[0]) + " x " + std::to_string(field[1]) + " pixels");
   check_pixels(path, "header", field[0], field[1], max_pixels);
   if (field[2] < 1 || field[2] > 65535) throw InputError(path, "header", "PNM maxval " + std::to_string(field[2]) + " (must be 1 .. 65535)");
   if (kind == '1' || kind == '2' || kind == '3') return;  // plain (text) samples: no fixed size
-  if (pfm) {  // the scale, ended by a line end
+  if (pfm) {  // the scale: a real number, read as a word
     while (std::isspace(c)) c = in.get();
-    while (c != '\n' && c != std::char_traits<char>::eof()) c = in.get();
+    if (c == kEnd) throw InputError(path, "header", "PFM file ends before its scale");
+    while (c != kEnd && !std::isspace(c)) c = in.get();
   }
-  if (!std::isspace(c)) throw InputError(path, "header", "PNM header not ended by a blank");
+  if (c == kEnd) throw InputError(path, "header", format + " file ends in its header: no pixel data");
+  if (!std::isspace(c))
+    throw InputError(path, "header", format + " header not ended by one blank" +
+                                         std::string(c == '#' ? " (a comment there, which the readers do not take)" : ""));
   const uint64_t bytes = field[2] > 255 ? 2 : 1;
   const uint64_t row = kind == '4' ? (field[0] + 7) / 8 : field[0] * (kind == '5' ? bytes : kind == '6' ? 3 * bytes : kind == 'F' ? 12 : 4);
   const uint64_t header = static_cast<uint64_t>(in.tellg());
-  const uint64_t need = row * field[1];  // (each at most 2^31 - 1: no overflow)
+  const uint64_t need = row * field[1];  // (no overflow: width x height <= the pixel limit, checked above)
   if (in.fail() || header > file_size || file_size - header < need)
     throw InputError(path, "pixels", "the header declares " + std::to_string(field[0]) + " x " + std::to_string(field[1]) + " pixels, " +
                                          std::to_string(need) + " bytes; the file holds " +
