@@ -60,11 +60,19 @@ std::string gtkw_for_vcd(std::istream& in, const std::string& vcd_path, const st
   std::vector<std::string> scope;
   std::vector<Var> vars;
   std::string line;
-  bool ended = false;
+  bool ended = false, in_comment = false;
   while (lines.next(line)) {
     std::istringstream ss(line);
     std::string tok;
     ss >> tok;
+    if (tok == "$comment" || in_comment) {  // its words are no commands, up to its $end (maybe lines later)
+      std::string t = in_comment ? tok : std::string();
+      in_comment = true;
+      do {
+        if (t == "$end") in_comment = false;
+      } while (in_comment && ss >> t);
+      continue;
+    }
     if (tok == "$scope") {
       std::string kind, name;
       ss >> kind >> name;

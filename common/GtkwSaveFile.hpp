@@ -14,7 +14,10 @@ namespace arp {
 // units from there across the wave area (0: its first 200 timestamps, about a
 // hundred clock cycles), so a
 // window traced late in a run opens where something moves. InputError naming
-// the VCD when it cannot be read or declares nothing.
+// the VCD when it cannot be read, declares nothing or has no $enddefinitions.
+// The header is read a command a line, as SystemC writes it ($scope, $var,
+// $upscope lead their lines; a $comment may span lines; $enddefinitions is
+// found anywhere on its line).
 std::string gtkw_for_vcd(const std::string& vcd_path, const std::string& dumpfile, int64_t view = 0);
 // The same from a stream (`vcd_path` names it in messages); reads only the header and the first 200 timestamps.
 std::string gtkw_for_vcd(std::istream& vcd, const std::string& vcd_path, const std::string& dumpfile, int64_t view = 0);

@@ -247,14 +247,16 @@ TEST(HostileInput, AFolderNameIsNeverRunAsACommand) {
 }
 
 // A VCD's header ends at $enddefinitions wherever it stands on its line (the format allows several commands a
-// line); one without it is refused (refusals.txt), not one that puts it after another command.
+// line), and not at one inside a comment; one without it is refused (refusals.txt).
 TEST(HostileInput, AVcdHeaderMayEndMidLine) {
   TempDir d;
   std::ofstream(d.file("w.vcd")) << "$timescale 1 ps $end\n$scope module SystemC $end\n$var wire 1 ! clk $end\n"
+                                    "$comment a $enddefinitions in a comment\n$end\n$var wire 1 \" probe_sig $end\n"
                                     "$upscope $end $enddefinitions $end\n#0\n1!\n#10\n0!\n";
   const auto r = run_command(kArpsim + " gtkw " + d.file("w.vcd") + " -o " + d.file("w.gtkw"));
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(read_text(d.file("w.gtkw")).find("clk"), std::string::npos);
+  EXPECT_NE(read_text(d.file("w.gtkw")).find("probe_sig"), std::string::npos) << "the header ended inside a comment";
 }
 
 // A trace that does not parse is said alone: the warning that the configuration was planned for another motion (which
