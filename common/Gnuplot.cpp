@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <cstring>
 
 #include "AtomicFile.hpp"
 
@@ -15,25 +16,28 @@ namespace arp {
 
 namespace {
 
-// gnuplot on `script` in the script's folder, its standard error into SCRIPT.log; true when it exits 0.
-// Spawned without a shell: the folder is a user's --out-dir, and a quote in it ran the rest as commands.
-bool spawn_gnuplot(const std::filesystem::path& script) {
+// gnuplot on `script` in the script's folder, its standard error into SCRIPT.log: "" when it exits 0, else
+// what went wrong. Spawned without a shell: the folder is a user's --out-dir, and a quote in it ran the rest
+// as commands.
+std::string spawn_gnuplot(const std::filesystem::path& script) {
   const std::string dir = script.has_parent_path() ? script.parent_path().string() : std::string(".");
   const std::string name = "./" + script.filename().string();  // (never read as an option)
   const std::string log = name + ".log";
+  const std::string failed = "gnuplot failed on " + script.string() + " (see " + script.string() + ".log)";
   posix_spawn_file_actions_t actions;
-  if (posix_spawn_file_actions_init(&actions) != 0) return false;
-  bool ok = posix_spawn_file_actions_addchdir_np(&actions, dir.c_str()) == 0 &&
-            posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644) == 0;
+  if (int e = posix_spawn_file_actions_init(&actions); e != 0) return std::string("gnuplot could not be started: ") + std::strerror(e);
+  int e = posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  if (e == 0) e = posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
   char* argv[] = {const_cast<char*>("gnuplot"), const_cast<char*>(name.c_str()), nullptr};
-  ok = ok && posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ) == 0;
+  if (e == 0) e = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (!ok) return false;
+  // (glibc reports a failed chdir or open in the child as the spawn's error)
+  if (e != 0) return "gnuplot could not be started in " + dir + ": " + std::strerror(e);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return false;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (errno != EINTR) return failed;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? std::string() : failed;
 }
 
 }  // namespace
@@ -41,8 +45,7 @@ bool spawn_gnuplot(const std::filesystem::path& script) {
 std::string run_gnuplot(const std::filesystem::path& script, const std::string& text) {
   write_text_atomic(script.string(), text);
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "gnuplot not found; " + script.string() + " is ready for it";
-  if (!spawn_gnuplot(script)) return "gnuplot failed on " + script.string() + " (see " + script.string() + ".log)";
-  return "";
+  return spawn_gnuplot(script);
 }
 
 std::string plot_columns(const std::string& file, int first_col, const std::vector<std::string>& names, const char* style) {
