@@ -166,7 +166,7 @@ LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {
   for (auto [name, v] : {std::pair<const char*, double>{"--conv-transform-ms", a.conv_transform_ms}, {"--conv-render-ms", a.conv_render_ms},
                          {"--conv-copy-ms", a.conv_copy_ms}, {"--conv-triangle-rate", a.conv_rate}, {"--slats-setup-ms", a.slats_setup_ms},
                          {"--slats-copy-ms", a.slats_copy_ms}, {"--slats-triangle-rate", a.slats_rate},
-                         {"--jitp-triangle-rate", a.jit_rate}, {"--tracker-rate", a.tracker_rate}})
+                         {"--jitp-triangle-rate", a.jit_rate}})
     if (!(v > 0) || !std::isfinite(v)) throw InputError(name, "", "must be a positive number");
   if (!(a.triangles >= 0) || !std::isfinite(a.triangles)) throw InputError("--triangles", "", "must be >= 0");
   if (!(a.walk_speed >= 0) || a.walk_speed > 50) throw InputError("--walk-speed", "", "must be 0 .. 50 m/s");
@@ -180,13 +180,26 @@ LatencyStudy::LatencyStudy(LatencySpec spec) : s_(std::move(spec)) {
     throw InputError("--tracker-rate", "", "must be 1 .. 1000000 reports a second");
   Prediction pred;
   if (!parse_prediction(a.predict, pred)) throw InputError("--predict", a.predict, "must be none, velocity or acceleration");
+  if (!a.scene.empty()) {
+    // A real scene's size drives the renderers that draw it per image.
+    if (a.triangles != 0) throw InputError("--triangles", "", "give either --triangles or --scene, not both");
+    const host::Scene sc = a.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.scene);
+    scene_triangles_ = static_cast<double>(sc.triangles());
+    scene_note_ = "; scene " + a.scene + " (" + std::to_string(sc.triangles()) + " triangles per image)";
+  }
   // The pipelines' own checks (a render stage over 10 s, Slats' set-up beyond a field), before the progress line's count.
-  make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab_config(a), kSettings);
+  make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab(), kSettings);
+}
+
+LabConfig LatencyStudy::lab() const {
+  LabConfig l = lab_config(s_);
+  if (scene_triangles_ >= 0) l.triangles = scene_triangles_;
+  return l;
 }
 
 int64_t LatencyStudy::steps() const {
   const dp::ArpConfig c = study_config(s_);
-  const int64_t archs = static_cast<int64_t>(make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab_config(s_),
+  const int64_t archs = static_cast<int64_t>(make_architectures(DisplayRaster(c.timing, c.lens.fov_deg), c, lab(),
                                                                 kSettings).size());
   return archs + (s_.no_sweeps ? 0 : 8 + 21 + 7) + (s_.no_apparatus ? 0 : 1) + 1;
 }
@@ -206,15 +219,8 @@ std::string LatencyStudy::run() {
   TrackerModel tm;
   tm.rate_hz = a.tracker_rate;
   tm.latency_s = a.tracker_latency_ms.value_or(a.olano ? 33.0 : 1.0) * 1e-3;
-  LabConfig lab = lab_config(a);
-  std::string scene_note;
-  if (!a.scene.empty()) {
-    // A real scene's size drives the renderers that draw it per image.
-    if (a.triangles != 0) throw InputError("--triangles", "", "give either --triangles or --scene, not both");
-    const host::Scene sc = a.scene == "gallery" ? host::make_gallery() : host::load_scene_file(a.scene);
-    lab.triangles = static_cast<double>(sc.triangles());
-    scene_note = "; scene " + a.scene + " (" + std::to_string(sc.triangles()) + " triangles per image)";
-  }
+  LabConfig lab = this->lab();
+  const std::string& scene_note = scene_note_;
   const DisplayRaster d(c.timing, c.lens.fov_deg);
   const fs::path out(a.out_dir);
 

@@ -9,8 +9,8 @@
 #pragma once
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +18,8 @@
 #include "tracker/SyntheticMotion.hpp"
 
 namespace arp::lab {
+
+struct LabConfig;  // lab/ArchitectureSet.hpp
 
 // Everything a study is asked (the option names are the command line's).
 struct LatencySpec {
@@ -63,7 +65,10 @@ class LatencyStudy {
   const std::vector<std::string>& notes() const { return notes_; }
 
  private:
+  LabConfig lab() const;  // the settings, with the scene's triangles when --scene is given
   LatencySpec s_;
+  double scene_triangles_ = -1;  // --scene's triangles per image (loaded once, by the constructor); -1: none
+  std::string scene_note_;
   std::vector<std::string> notes_;
 };
 
