@@ -80,9 +80,7 @@ void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector
   for (size_t i = 0; i < outputs.size(); ++i) {
     const NamedPath& o = outputs[i];
     if (o.path.empty()) continue;
-    // "-" is standard input to the readers; an output of that name was written as a file called "-".
-    if (o.path == "-")
-      throw InputError(o.option, o.path, "names standard input, and outputs go to files: name one (./- for a file called '-')");
+    if (o.path == "-") throw InputError(o.option, o.path, output_name_fault(o.path));
     for (const NamedPath& in : inputs)
       if (!in.path.empty() && in.path != "-" && same_file(o.path, in.path))
         throw InputError(o.option, o.path, "is the " + in.option + " input; it would be overwritten");
@@ -97,6 +95,12 @@ void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector
       check_writable(o);
     }
   }
+}
+
+std::string output_name_fault(const std::string& name, const std::string& what) {
+  if (name.empty()) return "is empty: name the " + what + " to write";
+  if (name == "-") return "names standard input, and outputs go to " + what + "s: name one (./- for a " + what + " called '-')";
+  return "";
 }
 
 bool same_folder(const std::string& a, const std::string& b) { return same_file(folder_key(a), folder_key(b)); }

@@ -16,6 +16,10 @@ struct NamedPath {
   bool folder_made_later = false;  // an output whose folder the command creates: checked as check_output_folder does
 };
 
+// Why `name` cannot name an output (`what`: "file" or "folder"), or "" when it can: it is empty, or it is "-",
+// standard input's name to every reader (an output of that name was written as a file called "-").
+std::string output_name_fault(const std::string& name, const std::string& what = "file");
+
 // InputError naming the option and the file on the first fault; empty paths are skipped, "-" (standard
 // input's name to every reader) is refused as an output.
 void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);

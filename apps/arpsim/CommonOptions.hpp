@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/AtomicFile.hpp"
+#include "common/OutputPaths.hpp"
 #include "common/ProgressLine.hpp"
 #include "sim/ConfigFile.hpp"
 #include "sim/MemoryContents.hpp"
@@ -33,15 +34,13 @@ void strict_numbers(CLI::App& app);
 // The walk through a scene and priority rendering's threshold (--walk, --speed, --threshold-deg): run and plan.
 void add_walk_options(CLI::App& cmd, std::string& walk, std::optional<double>& speed, std::optional<double>& threshold_deg);
 
-// An output's name (`what`: file or folder): given, it must name something (an empty --report would
-// silently write nothing), and not "-", standard input's name to every reader (check_output_paths says so
-// for files too, for callers of the library).
+// An output's name (`what`: file or folder), given: output_name_fault's rule (an empty --report would
+// silently write nothing; "-" is standard input's name), at the command line.
 inline CLI::Validator output_name(const std::string& what = "file") {
   return CLI::Validator(
       [what](std::string& s) {
-        if (s.empty()) return "is empty: name the " + what + " to write";
-        if (s == "-") return "-: names standard input, and outputs go to " + what + "s: name one (./- for a " + what + " called '-')";
-        return std::string();
+        const std::string fault = output_name_fault(s, what);
+        return s == "-" && !fault.empty() ? "-: " + fault : fault;
       },
       "", "output name");
 }
