@@ -46,7 +46,10 @@ void ClockGenerator::edge() {
   skipped_ = false;
   ++cycle_;
   ++edges_;
-  posedge_.notify(SC_ZERO_TIME);  // the clocked processes run in the next delta, as after a signal's edge
+  // Immediate: the clocked processes run in this evaluation phase, saving the kernel a delta cycle
+  // per clock. They read only what the last update phase settled (FIFOs, registers) and nothing
+  // that another process of this instant writes before its own update phase, so the order cannot matter.
+  posedge_.notify();
   if (traced_) {
     level_ = true;
     const int64_t rise = edge_ps(cycle_), next = edge_ps(cycle_ + 1);
