@@ -45,13 +45,19 @@ MemoryReadStage::MemoryReadStage(const StageContext& ctx)
       memories_(ctx.config().memory.count),
       texel_frac_(ctx.config().widths.texel_frac),
       face_size_(ctx.config().memory.face_size),
+      tiles_per_row_(dp::DisplayMemoryBank::tiles_per_row_of(face_size_)),
       bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear),
       empty_word_(mem_.format().empty_word()) {}
 
 // Reads through the banks' published front-buffer tables (the same words
 // DisplayMemoryBank::read returns), each memory's face table looked up once.
+// Every tap lies in the stored tile of (x0, y0): x1 - x0 and y1 - y0 are 0 or
+// 1, and a stored tile's apron holds its right and bottom neighbours' edges
+// (DisplayMemoryBank). So a tap's place in a tile is found once per eye, and
+// each memory costs one table lookup -- every memory has the face size.
 void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
   using Bank = dp::DisplayMemoryBank;
+  constexpr int TM = Bank::kTile - 1;
   t.slot = in.slot;
   t.sample = in.sample;
   t.memories = static_cast<uint8_t>(memories_);
@@ -59,34 +65,33 @@ void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
   for (int k = 0; k < in.slot.eye_count; ++k) {
     const int eye = in.slot.eye_first + k;
     const dp::CubeAddress& a = in.address[k];
-    int32_t tx[kMaxTaps] = {a.x}, ty[kMaxTaps] = {a.y};
-    t.wx[k] = t.wy[k] = 0;
+    int32_t x0 = a.x, y0 = a.y;
     int taps = 1;
+    int32_t offset[kMaxTaps] = {0, 0, 0, 0};  // each tap's word from the tile's word of (x0, y0)
+    t.wx[k] = t.wy[k] = 0;
     if (bilinear_) {
       const dp::BilinearTaps b = dp::bilinear_taps(a.u, a.v, texel_frac_, face_size_);
       // Tap order x0y0, x1y0, x0y1, x1y1: the filter's c00, c10, c01, c11.
-      tx[0] = b.x0; ty[0] = b.y0;
-      tx[1] = b.x1; ty[1] = b.y0;
-      tx[2] = b.x0; ty[2] = b.y1;
-      tx[3] = b.x1; ty[3] = b.y1;
+      x0 = b.x0;
+      y0 = b.y0;
+      const int32_t dx = b.x1 - b.x0, dy = (b.y1 - b.y0) * Bank::kTileStride;
+      offset[1] = dx;
+      offset[2] = dy;
+      offset[3] = dy + dx;
       t.wx[k] = b.wx;
       t.wy[k] = b.wy;
       taps = 4;
     }
+    const int32_t slot = (y0 >> Bank::kTileShift) * tiles_per_row_ + (x0 >> Bank::kTileShift);
+    const size_t word = static_cast<size_t>(Bank::tile_word(x0 & TM, y0 & TM));
     for (int m = 0; m < memories_; ++m) {
       const Bank& bank = mem_.bank(eye, m);
       if (!bank.front_face_written(a.face)) {  // its table is all tile 0, the empty tile: the same words, no loads
         for (int i = 0; i < taps; ++i) t.words[k][i][m] = empty_word_;
         continue;
       }
-      const int32_t* index = bank.front_tile_index(a.face);
-      const uint64_t* pool = bank.front_pool();
-      const int tpr = bank.tiles_per_row();
-      for (int i = 0; i < taps; ++i) {
-        const int32_t tile = index[(ty[i] >> Bank::kTileShift) * tpr + (tx[i] >> Bank::kTileShift)];
-        t.words[k][i][m] = pool[static_cast<size_t>(tile) * Bank::kTileWords +
-                                static_cast<size_t>(Bank::tile_word(tx[i] & (Bank::kTile - 1), ty[i] & (Bank::kTile - 1)))];
-      }
+      const uint64_t* q = bank.front_pool() + static_cast<size_t>(bank.front_tile_index(a.face)[slot]) * Bank::kTileWords + word;
+      for (int i = 0; i < taps; ++i) t.words[k][i][m] = q[offset[i]];
     }
   }
 }

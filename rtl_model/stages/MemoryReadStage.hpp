@@ -72,7 +72,7 @@ class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, Fe
  private:
   dp::DisplayMemorySet& mem_;
   BufferSwapper swapper_;
-  int memories_, texel_frac_, face_size_;
+  int memories_, texel_frac_, face_size_, tiles_per_row_;
   bool bilinear_;
   uint64_t empty_word_;  // what every address of a face never written reads
 };
