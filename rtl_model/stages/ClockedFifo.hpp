@@ -66,21 +66,22 @@ class ClockedFifo {
   }
 
   // The clock edge ending cycle `cycle_`: applies this cycle's read and write.
+  // The occupancy statistics change only with the occupancy: a read and a
+  // write in one clock (a streaming FIFO's every clock) leave them to the next
+  // change, which accounts for the cycles since the last (account()).
   ARP_FIFO_OP void update() {
     if (!read_pending_ && !write_pending_) return;
-    account(cycle_ + 1);
     if (read_pending_) {
       head_ = ring_index(head_ + 1, buf_.size());
-      --count_;
       ++reads_;
-      read_pending_ = false;
     }
-    if (write_pending_) {
-      ++count_;
-      ++writes_;
-      write_pending_ = false;
+    if (write_pending_) ++writes_;
+    if (read_pending_ != write_pending_) {
+      account(cycle_ + 1);
+      count_ += write_pending_ ? 1 : -1;
+      if (count_ > max_) max_ = count_;
     }
-    if (count_ > max_) max_ = count_;
+    read_pending_ = write_pending_ = false;
   }
 
   // Statistics over cycles [first observed, end_cycle).

@@ -35,19 +35,19 @@ class FifoChannel final : public sc_core::sc_prim_channel, public FifoWriteIf<T>
  public:
   FifoChannel(const char* name, int depth) : sc_core::sc_prim_channel(name), core_(name, depth) {}
 
-  bool can_write() const override { return core_.can_write(); }
-  void write(const T& v, int64_t cycle) override {
+  ARP_FIFO_OP bool can_write() const override { return core_.can_write(); }
+  ARP_FIFO_OP void write(const T& v, int64_t cycle) override {
     core_.write(v, cycle);
     request_update();
   }
-  T& emplace(int64_t cycle) override {
+  ARP_FIFO_OP T& emplace(int64_t cycle) override {
     request_update();
     return core_.emplace(cycle);
   }
   void note_blocked() override { core_.note_blocked(); }
-  bool can_read() const override { return core_.can_read(); }
-  const T& front() const override { return core_.front(); }
-  void read(int64_t cycle) override {
+  ARP_FIFO_OP bool can_read() const override { return core_.can_read(); }
+  ARP_FIFO_OP const T& front() const override { return core_.front(); }
+  ARP_FIFO_OP void read(int64_t cycle) override {
     core_.read(cycle);
     request_update();
   }
