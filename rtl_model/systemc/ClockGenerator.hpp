@@ -30,7 +30,7 @@ class ClockIf : virtual public sc_core::sc_interface {
   const sc_core::sc_event& default_event() const override { return posedge_event(); }
 };
 
-class ClockGenerator : public sc_core::sc_module, public ClockIf {
+class ClockGenerator final : public sc_core::sc_module, public ClockIf {
  public:
   SC_HAS_PROCESS(ClockGenerator);
   // Rising edges of cycles [first_cycle, end_cycle).

@@ -98,9 +98,10 @@ class StageModule : public sc_core::sc_module {
  private:
   // Ports bound to FifoChannels (every pipeline's and bench's) are called
   // directly, the FIFO's operations inlined into the stage's tick; any other
-  // channel with the interfaces goes through their virtual functions.
+  // channel with the interfaces goes through their virtual functions. So is
+  // a clock port bound to a ClockGenerator.
   void on_clock() {
-    const int64_t cycle = clk->cycle();
+    const int64_t cycle = clock_ ? clock_->cycle() : clk->cycle();
     if constexpr (std::is_void_v<Input>) {
       if (out_fifo_) stage_.tick(cycle, *out_fifo_);
       else stage_.tick(cycle, *out_);
@@ -113,6 +114,7 @@ class StageModule : public sc_core::sc_module {
     }
   }
   void end_of_elaboration() override {
+    clock_ = dynamic_cast<const ClockGenerator*>(clk.operator->());
     if constexpr (!std::is_void_v<Input>) {
       in_ = input.operator->();
       in_fifo_ = dynamic_cast<FifoChannel<Input>*>(in_);
@@ -124,6 +126,7 @@ class StageModule : public sc_core::sc_module {
   }
   template <template <class> class C, class T>
   using Ptr = std::conditional_t<std::is_void_v<T>, void*, C<T>*>;  // (no input or output: unused)
+  const ClockGenerator* clock_ = nullptr;
   Ptr<FifoReadIf, Input> in_ = nullptr;
   Ptr<FifoWriteIf, Output> out_ = nullptr;
   Ptr<FifoChannel, Input> in_fifo_ = nullptr;
