@@ -63,6 +63,7 @@ struct Result {
   std::vector<int64_t> write_cycle, read_cycle;
   size_t phase_one = 0;
   int64_t forwarded_calls = 0;  // calls the module made through ForwardingFifos
+  int64_t forwarded_clock_calls = 0;  // cycle reads through a ForwardingClock
 };
 
 // A channel with the FIFO's two interfaces that is not a FifoChannel: it
@@ -89,6 +90,22 @@ class ForwardingFifo : public sc_core::sc_channel, public scm::FifoWriteIf<T>, p
     return f_;
   }
   scm::FifoChannel<T>& f_;
+};
+
+// A clock channel that is not a ClockGenerator: the generator's edges and
+// cycle through the interface, counting the cycle reads.
+class ForwardingClock : public sc_core::sc_prim_channel, public scm::ClockIf {
+ public:
+  ForwardingClock(const char* name, scm::ClockGenerator& gen) : sc_prim_channel(name), gen_(gen) {}
+  int64_t cycle() const override {
+    ++calls;
+    return gen_.cycle();
+  }
+  const sc_core::sc_event& posedge_event() const override { return gen_.posedge_event(); }
+  mutable int64_t calls = 0;
+
+ private:
+  scm::ClockGenerator& gen_;
 };
 
 // With ARPSIM_BENCH_VCD=DIR, a bench writes DIR/bench_<test>.vcd: the clock,
@@ -138,7 +155,9 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   drv.clk(gen);
   drv.stimulus_out(in_fifo);
   auto dut = std::make_unique<Module>("dut", w.context());
-  dut->clk(gen);
+  ForwardingClock clock_forward("clock_forward", gen);
+  if (through_interfaces) dut->clk(clock_forward);
+  else dut->clk(gen);
   if constexpr (std::is_same_v<Module, scm::DisplayMemoryBanks>) {
     dut->host_clk(host_gen);
     const Module& d = *dut;
@@ -166,6 +185,7 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   r.read_cycle = mon.read_cycle;
   r.phase_one = drv.phase_one();
   r.forwarded_calls = in_forward.calls + out_forward.calls;
+  r.forwarded_clock_calls = clock_forward.calls;
   if (keep) *keep = std::move(dut);
   return r;
 }
@@ -484,8 +504,10 @@ void filter_bench(bool through_interfaces) {
   check_flow(r, lat(w, dp::Stage::Filter));
   if (through_interfaces) {
     EXPECT_GT(r.forwarded_calls, 2 * static_cast<int64_t>(stim.size())) << "the module must have called the forwarding channels";
+    EXPECT_GT(r.forwarded_clock_calls, static_cast<int64_t>(stim.size())) << "the module must have read the forwarding clock";
   } else {
     EXPECT_EQ(r.forwarded_calls, 0);
+    EXPECT_EQ(r.forwarded_clock_calls, 0);
   }
   const dp::ChannelLayout L{dp::MemoryFormat(w.c.memory)};
   for (size_t i = 0; i < r.got.size(); ++i)
@@ -505,8 +527,8 @@ void filter_bench(bool through_interfaces) {
 
 TEST(ModuleBench, AntiAliasingFilter) { filter_bench(false); }
 
-// A stage bound to another channel with the FIFO interfaces (not a
-// FifoChannel) takes the interfaces' path: the same pixels at the same clocks.
+// A stage bound to other channels with the FIFO and clock interfaces (not a
+// FifoChannel or a ClockGenerator) takes the interfaces' path: the same pixels at the same clocks.
 TEST(ModuleBench, AntiAliasingFilterThroughTheInterfaces) { filter_bench(true); }
 
 // The video timing generator issues every active pixel of the run, in scan
