@@ -32,11 +32,16 @@ printf "%-10s %-8s %-9s %s\n" filter threads memories "cycles/pixel"
 for aa in 0 1; do
   for mems in 1 4; do
     best=""
+    missed=0
     for _ in $(seq "$RUNS"); do
       c=$(per_pixel $aa $mems)
-      [ -n "$c" ] || { echo "cycles-per-pixel: no figure (see $LOOP's output)" >&2; exit 1; }
+      # A try without a figure (the clock's two chains disagreed: the core's clock moved during the
+      # measurement) is left out; only a row with no figure at all fails.
+      if [ -z "$c" ]; then missed=$((missed + 1)); continue; fi
       if [ -z "$best" ] || [ "$(echo "$c < $best" | bc -l)" = 1 ]; then best=$c; fi
     done
+    [ -n "$best" ] || { echo "cycles-per-pixel: no figure in $RUNS tries (see $LOOP's output)" >&2; exit 1; }
+    [ "$missed" = 0 ] || echo "($missed of $RUNS tries without a figure: the core's clock moved during them)" >&2
     printf "%-10s %-8s %-9s %.1f\n" "$([ $aa = 1 ] && echo bilinear || echo nearest)" 1 $mems "$best"
   done
 done
