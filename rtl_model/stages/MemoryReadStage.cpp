@@ -56,20 +56,27 @@ MemoryReadStage::MemoryReadStage(const StageContext& ctx)
 // (DisplayMemoryBank). So a tap's place in a tile is found once per eye, and
 // each memory costs one table lookup -- every memory has the face size.
 void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
+  if (bilinear_) fetch<true>(in, t);
+  else fetch<false>(in, t);
+}
+
+// Bilinear: the taps a constant, so their loops unroll.
+template <bool Bilinear>
+void MemoryReadStage::fetch(const AddressToken& in, FetchToken& t) const {
   using Bank = dp::DisplayMemoryBank;
   constexpr int TM = Bank::kTile - 1;
+  constexpr int kTaps = Bilinear ? 4 : 1;
   t.slot = in.slot;
   t.sample = in.sample;
   t.memories = static_cast<uint8_t>(memories_);
-  t.taps = static_cast<uint8_t>(bilinear_ ? 4 : 1);
+  t.taps = static_cast<uint8_t>(kTaps);
   for (int k = 0; k < in.slot.eye_count; ++k) {
     const int eye = in.slot.eye_first + k;
     const dp::CubeAddress& a = in.address[k];
     int32_t x0 = a.x, y0 = a.y;
-    int taps = 1;
-    int32_t offset[kMaxTaps] = {0, 0, 0, 0};  // each tap's word from the tile's word of (x0, y0)
+    int32_t offset[kTaps] = {};  // each tap's word from the tile's word of (x0, y0)
     t.wx[k] = t.wy[k] = 0;
-    if (bilinear_) {
+    if constexpr (Bilinear) {
       const dp::BilinearTaps b = dp::bilinear_taps(a.u, a.v, texel_frac_, face_size_);
       // Tap order x0y0, x1y0, x0y1, x1y1: the filter's c00, c10, c01, c11.
       x0 = b.x0;
@@ -80,18 +87,17 @@ void MemoryReadStage::compute(const AddressToken& in, FetchToken& t) const {
       offset[3] = dy + dx;
       t.wx[k] = b.wx;
       t.wy[k] = b.wy;
-      taps = 4;
     }
     const int32_t slot = (y0 >> Bank::kTileShift) * tiles_per_row_ + (x0 >> Bank::kTileShift);
     const size_t word = static_cast<size_t>(Bank::tile_word(x0 & TM, y0 & TM));
     for (int m = 0; m < memories_; ++m) {
       const Bank& bank = mem_.bank(eye, m);
       if (!bank.front_face_written(a.face)) {  // its table is all tile 0, the empty tile: the same words, no loads
-        for (int i = 0; i < taps; ++i) t.words[k][i][m] = empty_word_;
+        for (int i = 0; i < kTaps; ++i) t.words[k][i][m] = empty_word_;
         continue;
       }
       const uint64_t* q = bank.front_pool() + static_cast<size_t>(bank.front_tile_index(a.face)[slot]) * Bank::kTileWords + word;
-      for (int i = 0; i < taps; ++i) t.words[k][i][m] = q[offset[i]];
+      for (int i = 0; i < kTaps; ++i) t.words[k][i][m] = q[offset[i]];
     }
   }
 }

@@ -70,6 +70,8 @@ class MemoryReadStage : public RegisteredStage<MemoryReadStage, AddressToken, Fe
   const dp::DisplayMemorySet& memories() const { return mem_; }
 
  private:
+  template <bool Bilinear>
+  void fetch(const AddressToken& in, FetchToken& t) const;
   dp::DisplayMemorySet& mem_;
   BufferSwapper swapper_;
   int memories_, texel_frac_, face_size_, tiles_per_row_;
