@@ -93,7 +93,14 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
   for (int k = 0; k < src.slot.eye_count; ++k) {
     dst.wx[k] = src.wx[k];
     dst.wy[k] = src.wy[k];
-    for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], sizeof src.words[k][t]);
+    // A tap's row in two fixed sizes (memcpy of a constant size is a few vector moves): the first half
+    // holds every word in use up to half the composition unit's inputs.
+    constexpr size_t kRow = sizeof src.words[k][0], kHalf = kRow / 2;
+    if (2 * src.memories <= dp::kCompositionInputs) {
+      for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], kHalf);
+    } else {
+      for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], kRow);
+    }
   }
 }
 
