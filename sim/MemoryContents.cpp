@@ -21,8 +21,9 @@
 namespace arp::sim {
 
 double MemoryContents::checked_ipd_m() const {
-  if (!(ipd_m >= 0) || ipd_m > 1) throw InputError("--ipd", printf_text("%g", ipd_m), "must be 0 .. 1 m");
-  return ipd_m;
+  const double d = ipd_m.value_or(dp::kDefaultIpdM);
+  if (!(d >= 0) || d > 1) throw InputError("--ipd", printf_text("%g", d), "must be 0 .. 1 m");
+  return d;
 }
 
 void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads) const {
@@ -30,12 +31,12 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
   if (scene.empty()) {
     if (!position.empty()) throw InputError("--position", "", "only with --scene");
     // (a cube map's images are the same for both eyes and have no time: given, these changed nothing)
-    if (time_s != MemoryContents{}.time_s) throw InputError("--time", "", "only with --scene (the time of its animations)");
-    if (ipd_m != MemoryContents{}.ipd_m) throw InputError("--ipd", "", "only with --scene (a cube map's image is the same for both eyes)");
+    if (time_s) throw InputError("--time", "", "only with --scene (the time of its animations)");
+    if (ipd_m) throw InputError("--ipd", "", "only with --scene (a cube map's image is the same for both eyes)");
     host::load_into_memories(mem, 0, load(mem.format().face_size, source), host::far_depth(mem.format()));
     return;
   }
-  if (!std::isfinite(time_s) || std::abs(time_s) > 1e7) throw InputError("--time", "", "must be finite, within 1e7 s");
+  if (!std::isfinite(time()) || std::abs(time()) > 1e7) throw InputError("--time", "", "must be finite, within 1e7 s");
   const double ipd = checked_ipd_m();
   const host::Scene sc = load_scene();
   check_assignment_names(host::unknown_assignment_names(sc, plan_assignment), sc, plan_scene_hash, plan_source);
@@ -54,7 +55,7 @@ void MemoryContents::fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::
   const auto render = make_bank_renderer(renderer, threads, face_culling);
   for (int e = 0; e < mem.eyes(); ++e) {
     dp::DisplayMemoryBank& bank = mem.bank(e, 0);
-    render(sc, {}, time_s, host::eye_position(p, q, e, mem.eyes(), ipd), bank, nullptr);
+    render(sc, {}, time(), host::eye_position(p, q, e, mem.eyes(), ipd), bank, nullptr);
     bank.vblank();
   }
   source = "scene " + sc.name + " (" + std::to_string(sc.objects.size()) + " objects, " +

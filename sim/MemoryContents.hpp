@@ -2,6 +2,7 @@
 // cube map from files (six faces, a cross, an equirectangular panorama), a
 // scene rendered once from the head's position, or the calibration pattern.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,9 @@ struct MemoryContents {
   std::string faces, cross, equirect;  // at most one: a cube map from files
   std::string scene;                   // or a scene file / "gallery"
   std::string position;                // --scene: head position x,y,z (default: the gallery walk's start)
-  double time_s = 0.0;                 // --scene: animation time
-  double ipd_m = dp::kDefaultIpdM;     // distance between the eyes
+  // Absent: not given (0 s; dp::kDefaultIpdM) -- given, they need a scene, even at their default values.
+  std::optional<double> time_s;        // --scene: animation time
+  std::optional<double> ipd_m;         // distance between the eyes
   std::string renderer = "software";   // --renderer: what draws a scene, here and in the host (sim/BankRenderer)
   bool face_culling = true;            // not --no-face-culling: each object drawn only on the faces it reaches
   // The scene and the eyes the configuration was planned for (plan.scene_hash, 0: none; plan.ipd_m) and the
@@ -52,7 +54,8 @@ struct MemoryContents {
   void fill(dp::DisplayMemorySet& mem, const dp::Quat& head, std::string& source, int threads = 0) const;
   // The scene named by `scene` (notes about stand-ins, and a plan made for another scene, go to stderr).
   host::Scene load_scene() const;
-  // ipd_m, checked: InputError naming --ipd unless 0 .. 1 m. Every user of the eyes' distance (the memories filled
+  double time() const { return time_s.value_or(0.0); }
+  // ipd_m (or the default), checked: InputError naming --ipd unless 0 .. 1 m. Every user of the eyes' distance (the memories filled
   // here, a walk's host, a plan) takes it through this.
   double checked_ipd_m() const;
   // The files these contents read, named by their options (a scene's models and textures too): the inputs no

@@ -1532,7 +1532,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        std::to_string(p.scene_hash) + "). Motion: " + (r.walk.empty() ? std::string("the head still at the gallery walk's start") : "walk " + r.walk) +
        (r.head.given() ? ", the head turning with " + r.head.describe() + " on top" : "") +
        ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
-       std::to_string(p.config.plan.motion_hash) + "), the eyes " + printf_text("%g", 1000 * r.memories.ipd_m) +
+       std::to_string(p.config.plan.motion_hash) + "), the eyes " + printf_text("%g", 1000 * r.memories.checked_ipd_m()) +
        " mm apart (--ipd; plan.ipd_m: a run with another warns). Started from " + r.base_source + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";

@@ -180,7 +180,7 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   const double regions = s.config.memory.region_size_m;  // (--regions already applied: the constructor)
   check_host_options_used(h, regions);
   if (!h.walk.empty() && !s.memories.position.empty()) throw InputError("--position", "", "the walk moves the head: give one or the other");
-  if (!h.walk.empty() && s.memories.time_s != MemoryContents{}.time_s)
+  if (!h.walk.empty() && s.memories.time_s)
     throw InputError("--time", "", "a walk's scene time is the run's own (each frame's): --time is for a still scene");
   if (!o.tear_image.empty() && (regions == 0 || o.error_every <= 0 || h.walk.empty()))
     throw InputError("--tear-image", "", "needs --walk, --regions and --error-every > 0 (tearing is measured against the truth)");

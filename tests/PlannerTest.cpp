@@ -2054,7 +2054,7 @@ TEST(Planner, AHeadTurningStandingStillIsUpdatedAsItsEyesMove) {
   r.head.motion.rate = 300;
   const Plan turning = make_plan(r);
   const double hz = dp::VideoTiming(r.base.timing).refresh_hz();
-  const double x = 2 * (1.5 - 0.3) * std::sin(deg_to_rad(2.0) / 2), eye_speed = deg_to_rad(300.0) * MemoryContents{}.ipd_m / 2;
+  const double x = 2 * (1.5 - 0.3) * std::sin(deg_to_rad(2.0) / 2), eye_speed = deg_to_rad(300.0) * dp::kDefaultIpdM / 2;
   const double need_frames = x / eye_speed * hz;
   ASSERT_NEAR(need_frames, 15.0, 0.05);
   EXPECT_EQ(still.config.memory.count, 1);
@@ -2062,7 +2062,7 @@ TEST(Planner, AHeadTurningStandingStillIsUpdatedAsItsEyesMove) {
   EXPECT_EQ(turning.config.memory.count, 1);
   EXPECT_EQ(slowest_period_frames(turning, "ball"), 8);
   // Eyes twice as far apart (--ipd) move twice as fast: twice as often.
-  r.memories.ipd_m = 2 * MemoryContents{}.ipd_m;
+  r.memories.ipd_m = 2 * dp::kDefaultIpdM;
   const Plan wide = make_plan(r);
   EXPECT_EQ(slowest_period_frames(wide, "ball"), 4);
   // Over the rotation's second (standing_span_s), every frame's turn.

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
 
 namespace arp::app {
 
@@ -89,12 +90,12 @@ void add_memory_options(CLI::App& cmd, sim::MemoryContents& m) {
   g->add_option("--scene", m.scene, "Render a scene into the memories: a scene file (docs/host.md) or 'gallery'");
   g->require_option(0, 1);
   cmd.add_option("--position", m.position, "--scene: head position x,y,z in metres (default: the gallery walk's start)");
-  cmd.add_option("--time", m.time_s, "--scene: scene time in seconds (animations)")->capture_default_str();
+  cmd.add_option("--time", m.time_s, "--scene: scene time in seconds (animations); default 0");
   cmd.add_option("--renderer", m.renderer,
                  "--scene: draw with 'software' (the deterministic reference) or 'gl' (OpenGL through EGL: the GPU, or "
                  "Mesa's llvmpipe without one; docs/performance.md)")
       ->capture_default_str();
-  cmd.add_option("--ipd", m.ipd_m, "--scene: distance between the eyes, metres")->capture_default_str();
+  cmd.add_option("--ipd", m.ipd_m, "--scene: distance between the eyes, metres; default " + printf_text("%g", dp::kDefaultIpdM));
   cmd.add_flag("--no-face-culling{false}", m.face_culling,
                "--scene: draw every object on all six faces, clipped there, instead of only on the faces its bound reaches "
                "(the same texels, more work: to measure what the culling saves)");

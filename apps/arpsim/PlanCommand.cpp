@@ -8,6 +8,7 @@
 #include "MotionOptions.hpp"
 #include "common/AtomicFile.hpp"
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
 #include "common/OutputPaths.hpp"
 #include "host/cubemap/ImageFiles.hpp"
 #include "sim/Planner.hpp"
@@ -69,8 +70,8 @@ Runner add_plan_command(CLI::App& app) {
                   "A recorded head motion on top of the walk (CSV, docs/tracker.md), from the walk's start; standing (--speed 0) "
                   "the plan covers the trace to its last sample");
   cmd->add_option("--ipd", a->req.memories.ipd_m,
-                  "Distance between the eyes, metres, as run's --ipd: how far turning moves them, and where they see from")
-      ->capture_default_str();
+                  "Distance between the eyes, metres, as run's --ipd: how far turning moves them, and where they see from; default " +
+                      printf_text("%g", dp::kDefaultIpdM));
   auto* texel_error = cmd->add_option("--texel-error", a->req.texel_error,
                                       "Bound on the datapath's texel-position error, texels (0: what the starting configuration measures)")
                           ->capture_default_str();
