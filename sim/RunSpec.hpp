@@ -30,7 +30,7 @@ struct HostSpec {
   bool region_cubes = false;    // --region-cubes
   bool segmentation = true;     // not --no-segmentation
   bool warp = false;            // --warp
-  double warp_falloff = 0;      // --warp-falloff, m (0: half a region)
+  std::optional<double> warp_falloff;  // --warp-falloff, m (absent or 0: half a region)
 
   // The walk named (InputError naming --speed for a speed out of range, or the walk file's own errors).
   host::WalkPath make_walk() const;

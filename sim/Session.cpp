@@ -126,11 +126,11 @@ void check_host_options_used(const HostSpec& h, double regions) {
                                       {"--engine-fill", h.engine_fill.has_value()}, {"--engine-setup", h.engine_setup.has_value()},
                                       {"--regions", h.region_size.has_value()}, {"--margin", h.margin.has_value()},
                                       {"--no-segmentation", !h.segmentation}, {"--region-cubes", h.region_cubes}, {"--warp", h.warp},
-                                      {"--warp-falloff", h.warp_falloff != HostSpec{}.warp_falloff}})
+                                      {"--warp-falloff", h.warp_falloff.has_value()}})
     if (given && h.walk.empty()) throw InputError(option, "", "acts on the host's rendering along a walk: it needs --walk");
   for (const auto& [option, given] : {std::pair{"--margin", h.margin.has_value()}, {"--no-segmentation", !h.segmentation}})
     if (given && regions == 0) throw InputError(option, "", "needs --regions SIZE (or memory.region_size_m)");
-  if (h.warp_falloff != HostSpec{}.warp_falloff && !h.warp) throw InputError("--warp-falloff", "", "needs --warp");
+  if (h.warp_falloff && !h.warp) throw InputError("--warp-falloff", "", "needs --warp");
 }
 
 void check_spec(const RunSpec& s, scm::Fidelity fid) {
@@ -595,8 +595,9 @@ void Session::build_memories() {
     });
   if (regions_) {
     host_->use_regions(regions_.get(), segmented_.region, segmented_.span);
-    if (!(h.warp_falloff >= 0) || h.warp_falloff > region_m) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
-    host_->use_warping(h.warp, h.warp_falloff > 0 ? h.warp_falloff : region_m / 2);
+    const double falloff = h.warp_falloff.value_or(0.0);
+    if (!(falloff >= 0) || falloff > region_m) throw InputError("--warp-falloff", "", "must be 0 .. the region size");
+    host_->use_warping(h.warp, falloff > 0 ? falloff : region_m / 2);
   }
   if (spec_.memories.renderer != "software")
     host_->use_renderer(make_bank_renderer(spec_.memories.renderer, spec_.threads, spec_.memories.face_culling));
