@@ -47,8 +47,10 @@ void ClockGenerator::edge() {
   ++cycle_;
   ++edges_;
   // Immediate: the clocked processes run in this evaluation phase, saving the kernel a delta cycle
-  // per clock. They read only what the last update phase settled (FIFOs, registers) and nothing
-  // that another process of this instant writes before its own update phase, so the order cannot matter.
+  // per clock. Their order against the other processes of this instant cannot matter: they talk
+  // through FIFOs settled at the update phase; the orientation register is read by time
+  // (dp::register_sample); the buffer swap takes only commits strictly before its blank, so a host
+  // port commit in this same instant is not among them, whichever process runs first.
   posedge_.notify();
   if (traced_) {
     level_ = true;

@@ -91,6 +91,8 @@ class StageModule : public sc_core::sc_module {
   // data: the register's data fields too (VcdOptions::data).
   void trace(sc_core::sc_trace_file* tf, bool data = true) { trace_stage(tf, stage_, std::string(name()) + ".", data); }
   void stop_trace() { stage_.set_probing(false); }
+  // After elaboration: whether its clock port is bound to a ClockGenerator, whose cycle it reads directly.
+  bool reads_clock_directly() const { return clock_ != nullptr; }
 
  protected:
   S stage_;

@@ -61,8 +61,8 @@ void check_inputs(const stage::TimedInputs& in, bool timed) {
   const auto issues = timed ? dp::validate_timed(in.config) : dp::validate(in.config);
   if (!issues.empty()) throw InputError("configuration", issues.front().key, issues.front().reason);
   if (!in.memories || !in.orientation) throw std::logic_error("run_timed: memories and orientation are required");
-  if (in.memories->eyes() != in.config.timing.eyes || in.memories->count() != in.config.memory.count)
-    throw std::logic_error("run_timed: the memory set does not match the configuration");
+  // (every level reads the memories with the configuration's layout: face size, tiles, pools)
+  if (!dp::matches(*in.memories, in.config)) throw std::logic_error("run_timed: the memory set does not match the configuration");
   if (in.frames < 1) throw InputError("frames", "", "must be at least 1");
   if (in.first_frame < 0) throw InputError("first frame", "", "must be >= 0");
   stage::check_host_jobs(in.host_jobs, in.config, "host write jobs");

@@ -64,6 +64,7 @@ struct Result {
   size_t phase_one = 0;
   int64_t forwarded_calls = 0;  // calls the module made through ForwardingFifos
   int64_t forwarded_clock_calls = 0;  // cycle reads through a ForwardingClock
+  bool clock_direct = false;          // the module read its ClockGenerator's cycle without the interface
 };
 
 // A channel with the FIFO's two interfaces that is not a FifoChannel: it
@@ -186,6 +187,7 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   r.phase_one = drv.phase_one();
   r.forwarded_calls = in_forward.calls + out_forward.calls;
   r.forwarded_clock_calls = clock_forward.calls;
+  r.clock_direct = dut->reads_clock_directly();
   if (keep) *keep = std::move(dut);
   return r;
 }
@@ -505,9 +507,10 @@ void filter_bench(bool through_interfaces) {
   if (through_interfaces) {
     EXPECT_GT(r.forwarded_calls, 2 * static_cast<int64_t>(stim.size())) << "the module must have called the forwarding channels";
     EXPECT_GT(r.forwarded_clock_calls, static_cast<int64_t>(stim.size())) << "the module must have read the forwarding clock";
+    EXPECT_FALSE(r.clock_direct);
   } else {
     EXPECT_EQ(r.forwarded_calls, 0);
-    EXPECT_EQ(r.forwarded_clock_calls, 0);
+    EXPECT_TRUE(r.clock_direct) << "bound to a ClockGenerator, the module reads its cycle directly";
   }
   const dp::ChannelLayout L{dp::MemoryFormat(w.c.memory)};
   for (size_t i = 0; i < r.got.size(); ++i)
