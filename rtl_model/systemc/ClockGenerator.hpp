@@ -52,7 +52,7 @@ class ClockGenerator final : public sc_core::sc_module, public ClockIf {
   void edge();
   int64_t edge_ps(int64_t n) const;
   std::function<int64_t(int64_t)> gate_;
-  sc_core::sc_event posedge_;
+  sc_core::sc_event posedge_, wake_;
   int64_t base_ps_, end_;
   mutable dp::ClockTimeCursor clock_;  // edges are asked for in order: no 128-bit division each
   int64_t cycle_;
