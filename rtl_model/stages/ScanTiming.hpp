@@ -55,6 +55,9 @@ class ScanTiming {
   FrameWindows windows_;
   int64_t field_cycles_;
   int row_pixels_;      // active pixel clocks per line
+  // Per-clock constants, worked out once (position() runs twice a pixel clock).
+  int h_total_, lines_per_field_, hsync_begin_, hsync_end_;
+  bool side_by_side_;
   int64_t last_offset_;
   mutable Cursor scratch_;
 };
