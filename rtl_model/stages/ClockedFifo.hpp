@@ -42,7 +42,7 @@ class ClockedFifo {
   ARP_FIFO_OP bool can_write() const { return count_ < depth_ && !write_pending_; }
   ARP_FIFO_OP void write(const T& v, int64_t cycle) {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
-    copy_token(buf_[ring_index(head_ + static_cast<size_t>(count_), buf_.size())], v);
+    copy_token(buf_[ring_index(head_ + static_cast<size_t>(count_), slots())], v);
     write_pending_ = true;
     cycle_ = cycle;
   }
@@ -52,7 +52,7 @@ class ClockedFifo {
     if (!can_write()) throw std::logic_error(name_ + ": write while not ready (full)");
     write_pending_ = true;
     cycle_ = cycle;
-    return buf_[ring_index(head_ + static_cast<size_t>(count_), buf_.size())];
+    return buf_[ring_index(head_ + static_cast<size_t>(count_), slots())];
   }
   void note_blocked() { ++blocked_; }
 
@@ -72,7 +72,7 @@ class ClockedFifo {
   ARP_FIFO_OP void update() {
     if (!read_pending_ && !write_pending_) return;
     if (read_pending_) {
-      head_ = ring_index(head_ + 1, buf_.size());
+      head_ = ring_index(head_ + 1, slots());
       ++reads_;
     }
     if (write_pending_) ++writes_;
@@ -112,6 +112,10 @@ class ClockedFifo {
     if (count_ == 0) empty_ += span;
     since_ = c;
   }
+
+  // The ring's size, the depth: a vector's size() divides its byte length by sizeof(T), a
+  // multiply for most tokens, several times a clock.
+  size_t slots() const { return static_cast<size_t>(depth_); }
 
   std::string name_;
   std::vector<T> buf_;

@@ -28,7 +28,7 @@ struct StageStats {
 template <class Out>
 class StagePipe {
  public:
-  explicit StagePipe(int latency) : latency_(latency), ring_(static_cast<size_t>(latency) + 1) {}
+  explicit StagePipe(int latency) : latency_(latency), ring_(static_cast<size_t>(latency) + 1), slots_(ring_.size()) {}
 
   int latency() const { return latency_; }
   int occupancy() const { return count_; }
@@ -59,7 +59,7 @@ class StagePipe {
     const bool pops = head_done && out_ready;
     ready_in = count_ < latency_ || pops;
     if (ready_in && in.can_read()) {
-      Entry& e = ring_[ring_index(head_ + static_cast<size_t>(count_), ring_.size())];
+      Entry& e = ring_[ring_index(head_ + static_cast<size_t>(count_), slots_)];
       compute(in.front(), e.value);
       e.taken = cycle;
       e.done = cycle + latency_ - 1;
@@ -72,7 +72,7 @@ class StagePipe {
         out.write(e.value, cycle);
         if (probe_data) probe(e.value, data_out);
         record(cycle + 1 - e.taken);
-        head_ = ring_index(head_ + 1, ring_.size());
+        head_ = ring_index(head_ + 1, slots_);
         --count_;
         valid_out = true;
       } else {
@@ -105,7 +105,7 @@ class StagePipe {
     Out value{};
     int64_t taken = 0, done = 0;
   };
-  const Entry& entry(int i) const { return ring_[ring_index(head_ + static_cast<size_t>(i), ring_.size())]; }
+  const Entry& entry(int i) const { return ring_[ring_index(head_ + static_cast<size_t>(i), slots_)]; }
   void record(int64_t c) {
     ++n_;
     sum_ += c;
@@ -115,6 +115,7 @@ class StagePipe {
 
   int latency_;
   std::vector<Entry> ring_;
+  size_t slots_;  // ring_.size(), kept: size() divides by sizeof(Entry), a multiply, several times a clock
   size_t head_ = 0;
   int count_ = 0;
   int64_t n_ = 0, sum_ = 0, min_ = std::numeric_limits<int64_t>::max(), max_ = 0, stalled_ = 0, forced_ = 0;
