@@ -86,9 +86,11 @@ class StagePipe {
     StageStats s;
     s.latency_cycles = latency_;
     s.pixels = n_;
-    s.min_cycles = n_ ? min_ : 0;
-    s.max_cycles = max_;
-    s.mean_cycles = n_ ? static_cast<double>(sum_) / static_cast<double>(n_) : 0.0;
+    const int64_t on_time = n_ - other_n_, L = latency_;
+    s.min_cycles = n_ ? std::min(other_n_ ? min_ : L, on_time ? L : min_) : 0;
+    s.max_cycles = n_ ? std::max(other_n_ ? max_ : L, on_time ? L : max_) : 0;
+    const int64_t sum = on_time * L + other_sum_;
+    s.mean_cycles = n_ ? static_cast<double>(sum) / static_cast<double>(n_) : 0.0;
     s.stalled_cycles = stalled_;
     s.forced_stall_cycles = forced_;
     return s;
@@ -106,9 +108,13 @@ class StagePipe {
     int64_t taken = 0, done = 0;
   };
   const Entry& entry(int i) const { return ring_[ring_index(head_ + static_cast<size_t>(i), slots_)]; }
+  // A pixel visible downstream c clocks after it was taken. Most take exactly the latency: only
+  // the others are summed and compared (stats() adds the rest back).
   void record(int64_t c) {
     ++n_;
-    sum_ += c;
+    if (c == latency_) return;
+    ++other_n_;
+    other_sum_ += c;
     min_ = std::min(min_, c);
     max_ = std::max(max_, c);
   }
@@ -118,7 +124,8 @@ class StagePipe {
   size_t slots_;  // ring_.size(), kept: size() divides by sizeof(Entry), a multiply, several times a clock
   size_t head_ = 0;
   int count_ = 0;
-  int64_t n_ = 0, sum_ = 0, min_ = std::numeric_limits<int64_t>::max(), max_ = 0, stalled_ = 0, forced_ = 0;
+  int64_t n_ = 0, other_n_ = 0, other_sum_ = 0, min_ = std::numeric_limits<int64_t>::max(), max_ = 0;
+  int64_t stalled_ = 0, forced_ = 0;
 };
 
 }  // namespace arp::stage
