@@ -12,7 +12,9 @@ const char* face_name(int face) {
 
 AddressGeneratorParams::AddressGeneratorParams(const DatapathWidths& w, int S)
     : AddressArith{w.divider, ReciprocalParams{}, RoundingSel(w.div_rounding), RoundingSel(w.texel_rounding),
-                   w.quot_frac, w.texel_frac, w.rot_frac + 1, S, (int64_t{S} << w.texel_frac) - 1},
+                   w.quot_frac, w.texel_frac, w.rot_frac + 1, S, (int64_t{S} << w.texel_frac) - 1,
+                   RoundShift(w.recip_frac_bits + (w.rot_frac + 1) - 1 - w.quot_frac, w.div_rounding),
+                   RoundShift(w.quot_frac + 1 - w.texel_frac, w.texel_rounding)},
       table_(build_reciprocal_table(w.recip_index_bits, w.recip_frac_bits)) {
   recip.lut = table_.data();
   recip.index_bits = w.recip_index_bits;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ArpConfig.hpp"
+#include "FixedPoint.hpp"
 #include "LensVectorTable.hpp"
 #include "ReciprocalUnit.hpp"
 #include "common/Units.hpp"
@@ -42,6 +43,10 @@ struct AddressArith {
   int n_max;  // bit length of the widest |ma|: rot_frac + 1
   int64_t face_size;
   int64_t max_pos;  // S * 2^texel_frac - 1
+  // The two fixed shifts with their rounding, worked out once: the reciprocal multiply's
+  // (recip_frac + n_max - 1 - quot_frac, div rounding) and the position's (quot_frac + 1 -
+  // texel_frac, texel rounding). RoundShift rounds as rshift_round does (FixedPointTest).
+  RoundShift quot_shift, texel_shift;
 };
 
 // Everything the generator needs, built once from the configuration; owns the reciprocal table.
@@ -92,8 +97,7 @@ inline I quotient_to_position_as(I q, const AddressArith& p) {
   const I one = I{1} << p.quot_frac;
   q = q > -one ? q : -one;
   q = q < one ? q : one;
-  I pos = rshift_round_as<I>((q + one) * static_cast<I>(p.face_size), static_cast<I>(p.quot_frac + 1 - p.texel_frac),
-                             static_cast<I>(p.texel_rounding.half_sel), static_cast<I>(p.texel_rounding.even));
+  I pos = p.texel_shift.apply_as<I>((q + one) * static_cast<I>(p.face_size));
   pos = pos > 0 ? pos : 0;
   return pos < static_cast<I>(p.max_pos) ? pos : static_cast<I>(p.max_pos);
 }
@@ -116,8 +120,8 @@ inline CubeAddress generate_address(const Vec3q& r, const AddressArith& p, const
   if (f.ma > 0) {
     if (p.divider == DividerKind::ReciprocalLut) {
       const int64_t ya = aligned_memo ? int64_t{aligned_memo[f.ma]} : aligned_reciprocal(reciprocal(f.ma, p.recip), p.n_max);
-      qs = multiply_aligned_reciprocal(f.sc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
-      qt = multiply_aligned_reciprocal(f.tc, ya, p.recip.recip_frac, p.n_max, p.quot_frac, p.div_rounding);
+      qs = p.quot_shift.apply(f.sc * ya);  // multiply_aligned_reciprocal, its shift's constants kept
+      qt = p.quot_shift.apply(f.tc * ya);
     } else {
       qs = divide_exact(f.sc, f.ma, p.quot_frac, p.div_rounding);
       qt = divide_exact(f.tc, f.ma, p.quot_frac, p.div_rounding);
