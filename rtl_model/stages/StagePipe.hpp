@@ -54,7 +54,7 @@ class StagePipe {
       valid_out = true;
       return;
     }
-    const bool head_done = count_ > 0 && entry(0).done <= cycle;
+    const bool head_done = count_ > 0 && oldest().done <= cycle;
     const bool out_ready = out.can_write();
     const bool pops = head_done && out_ready;
     ready_in = count_ < latency_ || pops;
@@ -66,9 +66,9 @@ class StagePipe {
       in.read(cycle);
       ++count_;
     }
-    if (count_ > 0 && entry(0).done <= cycle) {
+    if (count_ > 0 && oldest().done <= cycle) {
       if (out.can_write()) {
-        const Entry& e = entry(0);
+        const Entry& e = oldest();
         out.write(e.value, cycle);
         if (probe_data) probe(e.value, data_out);
         record(cycle + 1 - e.taken);
@@ -107,7 +107,7 @@ class StagePipe {
     Out value{};
     int64_t taken = 0, done = 0;
   };
-  const Entry& entry(int i) const { return ring_[ring_index(head_ + static_cast<size_t>(i), slots_)]; }
+  const Entry& oldest() const { return ring_[head_]; }  // head_ is always a slot: no ring arithmetic
   // A pixel visible downstream c clocks after it was taken. Most take exactly the latency: only
   // the others are summed and compared (stats() adds the rest back).
   void record(int64_t c) {
