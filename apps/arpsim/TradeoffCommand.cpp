@@ -134,10 +134,8 @@ Runner add_tradeoff_command(CLI::App& app) {
   cmd->add_option("--point", a->point, "Measure only this point (ids: --list) into OUT/points/ID.json");
   cmd->add_flag("--merge", a->merge, "Only merge the results in OUT into the tables");
   cmd->add_flag("--plan-only", a->plan_only, "Only write OUT/plan.json");
-  // The folder (the second value) is checked as an output; the kind by check_slurm_sweep_paths.
-  cmd->add_option("--emit", a->emit, "Write the sweep as a job array: --emit slurm DIR")
-      ->expected(2)
-      ->check(output_name("folder").application_index(1));
+  cmd->add_option("--emit", a->emit, "Write the sweep as a job array: --emit slurm DIR")  // (the kind: sim::check_slurm_sweep_paths)
+      ->expected(2)->check(output_name("folder").application_index(1));
   cmd->add_option("--slurm-time", a->slurm_minutes,
                   "--emit slurm: the wall-clock limit of each point's task, minutes (default 60; the full sweep's longest point "
                   "takes about a minute on 2 cores)")
