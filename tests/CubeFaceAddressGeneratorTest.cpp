@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 #include "rtl_model/datapath/CubeFaceAddressGenerator.hpp"
 #include "reference/golden/GoldenReference.hpp"
@@ -231,4 +232,69 @@ TEST(CubeFaceAddressGenerator, ThirtyTwoBitLanesGiveTheSamePositionsWhereTheChec
       if (fits) EXPECT_LE(widest, INT32_MAX) << "rot_frac " << u.rot_frac << ", quot_frac " << u.quot_frac;
       else EXPECT_GT(widest, INT32_MAX) << "rot_frac " << u.rot_frac << ", quot_frac " << u.quot_frac;
     }
+}
+
+// The texel position and the face quotient against the rounding written out here from the
+// definitions (not the datapath's shift helpers): position = (q + 1) S / 2^(quot_frac + 1 -
+// texel_frac), rounded by texel_rounding, clamped to the face; quotient = sc y' /
+// 2^(recip_frac + n_max - 1 - quot_frac) by div_rounding. Every mode, shifts right and left.
+namespace {
+int64_t round_by(int64_t n, int s, Rounding mode) {  // n / 2^s rounded; n may be negative; s may be <= 0
+  if (s <= 0) return n * (int64_t{1} << -s);
+  const int64_t d = int64_t{1} << s;
+  int64_t q = n / d, r = n % d;
+  if (r < 0) { --q; r += d; }  // floor
+  if (mode == Rounding::Floor) return q;
+  if (mode == Rounding::HalfUp) return q + (2 * r >= d ? 1 : 0);
+  return q + (2 * r > d || (2 * r == d && (q & 1)) ? 1 : 0);  // half even
+}
+}  // namespace
+
+TEST(CubeFaceAddressGenerator, PositionAndQuotientRoundAsTheirModesSay) {
+  std::mt19937_64 rng(5);
+  const struct { int quot_frac, texel_frac, face; } units[] = {{16, 8, 512}, {10, 4, 300}, {6, 9, 64}, {7, 8, 100}};
+  for (const auto& u : units)
+    for (Rounding div : {Rounding::Floor, Rounding::HalfUp, Rounding::HalfEven})
+      for (Rounding tex : {Rounding::Floor, Rounding::HalfUp, Rounding::HalfEven}) {
+        SCOPED_TRACE(testing::Message() << "quot_frac " << u.quot_frac << " texel_frac " << u.texel_frac << " div "
+                                        << to_string(div) << " texel " << to_string(tex));
+        DatapathWidths w;
+        w.quot_frac = u.quot_frac;
+        w.texel_frac = u.texel_frac;
+        w.div_rounding = div;
+        w.texel_rounding = tex;
+        const AddressGeneratorParams p(w, u.face);
+        const int64_t one = int64_t{1} << u.quot_frac, S = u.face;
+        const int64_t max_pos = (S << u.texel_frac) - 1;
+        std::vector<int64_t> quotients;  // every one within the clamp and a few beyond, or edges and a sample
+        if (2 * one + 11 <= 4000) {
+          for (int64_t q = -one - 5; q <= one + 5; ++q) quotients.push_back(q);
+        } else {
+          std::uniform_int_distribution<int64_t> qd(-one - 5, one + 5);
+          for (int i = 0; i < 4000; ++i) quotients.push_back(qd(rng));
+          for (int64_t e : {-one - 1, -one, -one + 1, int64_t{-1}, int64_t{0}, int64_t{1}, one - 1, one, one + 1})
+            quotients.push_back(e);
+        }
+        for (const int64_t q : quotients) {
+          const int64_t want = std::clamp(round_by((std::clamp(q, -one, one) + one) * S, u.quot_frac + 1 - u.texel_frac, tex),
+                                          int64_t{0}, max_pos);
+          ASSERT_EQ(quotient_to_position(q, p), want) << "q " << q;
+        }
+        // The quotient through generate_address: a vector whose major axis is +X (ma = x, sc = -z).
+        const int64_t shift = int64_t{w.recip_frac_bits} + p.n_max - 1 - u.quot_frac;
+        const auto memo = tabulate_aligned_reciprocal(p, w);
+        ASSERT_FALSE(memo.empty());
+        std::uniform_int_distribution<int32_t> md(1, (1 << w.rot_frac) - 1);
+        for (int i = 0; i < 2000; ++i) {
+          const int32_t ma = md(rng);
+          std::uniform_int_distribution<int32_t> sd(-ma, ma);
+          const int32_t sc = sd(rng), tc = sd(rng);
+          const int64_t qs = round_by(int64_t{sc} * memo[static_cast<size_t>(ma)], static_cast<int>(shift), div);
+          const int64_t qt = round_by(int64_t{tc} * memo[static_cast<size_t>(ma)], static_cast<int>(shift), div);
+          const CubeAddress a = generate_address(Vec3q{ma, -tc, -sc}, p);  // +X: sc = -z, tc = -y
+          ASSERT_EQ(a.face, kPosX);
+          ASSERT_EQ(a.u, quotient_to_position(qs, p)) << "ma " << ma << " sc " << sc;
+          ASSERT_EQ(a.v, quotient_to_position(qt, p)) << "ma " << ma << " tc " << tc;
+        }
+      }
 }
