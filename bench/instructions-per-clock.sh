@@ -11,6 +11,8 @@
 # minute under callgrind per frame.
 # Usage: bench/instructions-per-clock.sh [LEVEL]   (env: ARPSIM, FRAMES_A=1, FRAMES_B=3, TOP=25)
 set -euo pipefail
+# A relative ARPSIM names a file from where the script was started; the default, from the repository.
+if [ -n "${ARPSIM:-}" ]; then ARPSIM=$(realpath -m -- "$ARPSIM"); fi
 cd "$(dirname "$0")/.."
 LEVEL=${1:-detailed}
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
@@ -38,7 +40,9 @@ def functions(frames):
     total = int(re.search(r"([\d,]+) \(100\.0%\)\s+PROGRAM TOTALS", out).group(1).replace(",", ""))
     per = {}
     for line in out.splitlines():
-        m = re.match(r"\s*([\d,]+) \([^)]*\)\s+\S*?:(.*?)(\(.*)? \[", line)
+        # "  N (P%)  FILE:FUNCTION [OBJECT]": keyed by the whole signature (a name cut at its first
+        # parenthesis would merge every "(anonymous namespace)" function, and a lambda with its owner).
+        m = re.match(r"\s*([\d,]+) \([^)]*\)\s+\S*?:(.*) \[[^\]]*\]$", line)
         if m: per[m.group(2)] = per.get(m.group(2), 0) + int(m.group(1).replace(",", ""))
     return total, per
 def clocks(frames):
@@ -50,5 +54,5 @@ if n <= 0: sys.exit("instructions-per-clock.sh: no pixel clocks between the two 
 print(f"{level}: {(tb - ta) / n:.1f} instructions a simulated pixel clock "
       f"({tb - ta} instructions over {n} pixel clocks, frames {a} to {b})")
 rows = sorted(((fb.get(k, 0) - fa.get(k, 0)) / n, k) for k in set(fa) | set(fb))[::-1]
-for v, k in rows[:top]: print(f"{v:9.1f}  {k[:120]}")
+for v, k in rows[:top]: print(f"{v:9.1f}  {k[:160]}")
 EOF
