@@ -48,14 +48,12 @@ template <class I>
                                                     int32_t* __restrict face, int32_t* __restrict u,
                                                     int32_t* __restrict v) {
   const AddressArith p = pref;  // a local copy: the stores cannot alias it
-  const int rf = p.recip.recip_frac, qf = p.quot_frac, nm = p.n_max;
-  const RoundingSel rs = p.div_rounding;
   for (int i = 0; i < n; ++i) {
     const FaceSelectOf<I> f = select_face_as<I>(Vec3q{rx[i], ry[i], rz[i]});
     const I ya = static_cast<I>(aligned[static_cast<int32_t>(f.ma)]);  // ma < 2^16: a 32-bit index gathers
     const bool zero = f.ma == 0;  // a zero vector addresses the face centre
-    const I qs = zero ? 0 : multiply_aligned_reciprocal_as<I>(f.sc, ya, rf, nm, qf, rs);
-    const I qt = zero ? 0 : multiply_aligned_reciprocal_as<I>(f.tc, ya, rf, nm, qf, rs);
+    const I qs = zero ? 0 : p.quot_shift.apply_as<I>(f.sc * ya);  // as generate_address
+    const I qt = zero ? 0 : p.quot_shift.apply_as<I>(f.tc * ya);
     face[i] = f.face;
     u[i] = static_cast<int32_t>(quotient_to_position_as<I>(qs, p));
     v[i] = static_cast<int32_t>(quotient_to_position_as<I>(qt, p));
