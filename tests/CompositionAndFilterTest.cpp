@@ -86,6 +86,55 @@ TEST(CompositionUnit, TheStageComposesEveryMemoryCountByTheRule) {
   }
 }
 
+// The memory read leaves out the memories whose face was never written (FetchToken::held): the stage
+// composes the others as if those were empty -- whatever their words hold, here the nearest possible
+// depth, which would win if it were read. Every mask of held memories, every count.
+TEST(CompositionUnit, TheStageComposesOnlyTheMemoriesHeld) {
+  for (int n = 1; n <= kCompositionInputs; ++n) {
+    arp::stage::TimedInputs in;
+    in.config.memory.count = n;
+    in.config.memory.background = {10, 20, 30};
+    in.config.pipeline.aa = AaMode::Bilinear;
+    const arp::stage::StageContext ctx{in, PipelineSchedule(in.config)};
+    const arp::stage::CompositionStage stage(ctx);
+    const MemoryFormat f(in.config.memory);
+    const uint32_t empty = f.empty_depth(), background = f.pack_rgb8(10, 20, 30);
+    std::mt19937 rng(static_cast<uint32_t>(100 + n));
+    for (uint32_t mask = 0; mask < (1u << n); ++mask)
+      for (int i = 0; i < 12; ++i) {
+        arp::stage::FetchToken t{};
+        t.slot.eye_count = 2;
+        t.memories = static_cast<uint8_t>(n);
+        t.taps = 4;
+        t.held[0] = static_cast<uint8_t>(mask);
+        t.held[1] = static_cast<uint8_t>(std::uniform_int_distribution<uint32_t>(0, (1u << n) - 1)(rng));
+        for (int e = 0; e < 2; ++e)
+          for (int tap = 0; tap < 4; ++tap)
+            for (int m = 0; m < kCompositionInputs; ++m) {
+              const bool held = m < n && (t.held[e] >> m & 1u);
+              const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+              const uint32_t depth = !held ? 0 : (kind == 0 ? empty : std::uniform_int_distribution<uint32_t>(0, 3)(rng));
+              t.words[e][tap][m] = word(std::uniform_int_distribution<uint32_t>(0, 0xffffff)(rng), depth);
+            }
+        arp::stage::ComposedToken out{};
+        stage.compute(t, out);
+        for (int e = 0; e < 2; ++e)
+          for (int tap = 0; tap < 4; ++tap) {
+            uint32_t best_depth = empty, want = background;
+            for (int m = 0; m < n; ++m) {
+              const uint64_t w = t.words[e][tap][m];
+              if ((t.held[e] >> m & 1u) && (w >> 32) < best_depth) {
+                best_depth = static_cast<uint32_t>(w >> 32);
+                want = static_cast<uint32_t>(w);
+              }
+            }
+            ASSERT_EQ(out.tap_color[e][tap], want)
+                << n << " memories, held " << int{t.held[e]} << ", token " << i << " eye " << e << " tap " << tap;
+          }
+      }
+  }
+}
+
 TEST(AntiAliasingFilter, TapsAndWeightsAroundTexelCentres) {
   // u = 10.5 texels exactly on a texel centre: taps 10 and 11, weight 0 on 11.
   BilinearTaps t = bilinear_taps(int64_t{21} << 7, int64_t{21} << 7, 8, 512);

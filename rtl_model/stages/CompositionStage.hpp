@@ -30,12 +30,22 @@ class CompositionStage : public RegisteredStage<CompositionStage, FetchToken, Co
   }
 
  private:
+  // Every memory read: the compares unrolled. Some faces never written (the memory read left them
+  // out): only the memories held, the same composite.
   template <int N>
   void compose_taps(const FetchToken& in, ComposedToken& t) const {
+    constexpr uint32_t kAll = (1u << N) - 1;
     for_each_eye(in, t, [&](int k) {
       t.wx[k] = in.wx[k];
       t.wy[k] = in.wy[k];
-      for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], N, comp_).color;
+      const uint32_t held = in.held[k] & kAll;
+      if (held == kAll) {
+        for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], N, comp_).color;
+      } else if (held == 1) {  // the one memory drawn on, most often: no compares
+        for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose(in.words[k][i], 1, comp_).color;
+      } else {
+        for (int i = 0; i < taps_; ++i) t.tap_color[k][i] = dp::compose_held(in.words[k][i], held, comp_).color;
+      }
     });
   }
 

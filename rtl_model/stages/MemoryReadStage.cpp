@@ -90,15 +90,21 @@ void MemoryReadStage::fetch(const AddressToken& in, FetchToken& t) const {
     }
     const int32_t slot = (y0 >> Bank::kTileShift) * tiles_per_row_ + (x0 >> Bank::kTileShift);
     const size_t word = static_cast<size_t>(Bank::tile_word(x0 & TM, y0 & TM));
+    uint32_t held = 0;
     for (int m = 0; m < memories_; ++m) {
       const Bank& bank = mem_.bank(eye, m);
-      if (!bank.front_face_written(a.face)) {  // its table is all tile 0, the empty tile: the same words, no loads
-        for (int i = 0; i < kTaps; ++i) t.words[k][i][m] = empty_word_;
+      if (!bank.front_face_written(a.face)) {
+        // Its table is all tile 0, the empty tile: no loads, and left out of the composition (held).
+        // Memory 0's words are written all the same: the first word is the waveform's probe.
+        if (m == 0)
+          for (int i = 0; i < kTaps; ++i) t.words[k][i][0] = empty_word_;
         continue;
       }
+      held |= 1u << m;
       const uint64_t* q = bank.front_pool() + static_cast<size_t>(bank.front_tile_index(a.face)[slot]) * Bank::kTileWords + word;
       for (int i = 0; i < kTaps; ++i) t.words[k][i][m] = q[offset[i]];
     }
+    t.held[k] = static_cast<uint8_t>(held);
   }
 }
 

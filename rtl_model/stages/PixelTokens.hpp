@@ -52,6 +52,10 @@ struct FetchToken {
   PixelSlot slot;
   uint32_t sample;
   uint8_t memories = 0, taps = 0;                          // words in use per eye: taps x memories
+  // Per eye, the memories whose words were read (bit m: memory m); the others' faces were never
+  // written, so they read as empty and cannot win the composition (dp::compose_held). All, unless
+  // the memory read says otherwise.
+  uint8_t held[kMaxEyes] = {0xff, 0xff};
   uint32_t wx[kMaxEyes], wy[kMaxEyes];                    // bilinear weights (0 when off)
   uint64_t words[kMaxEyes][kMaxTaps][dp::kCompositionInputs];  // texel words per eye, tap, memory
 };
@@ -91,6 +95,7 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
   dst.memories = src.memories;
   dst.taps = src.taps;
   for (int k = 0; k < src.slot.eye_count; ++k) {
+    dst.held[k] = src.held[k];
     dst.wx[k] = src.wx[k];
     dst.wy[k] = src.wy[k];
     // A tap's row in two fixed sizes (memcpy of a constant size is a few vector moves): the first half
