@@ -84,7 +84,8 @@ inline void for_each_eye(const In& in, Out& out, Fn&& fn) {
 
 // Copying a token into a FIFO: whole, except the large fetch token, of which
 // only the taps in use are copied (the rest is never read): each a whole row
-// of kCompositionInputs words, a few vector moves, rather than word by word.
+// of kCompositionInputs words, a few vector moves, rather than word by word;
+// one word a tap where only memory 0 was read.
 template <class T>
 inline void copy_token(T& dst, const T& src) {
   dst = src;
@@ -101,7 +102,9 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
     // A tap's row in two fixed sizes (memcpy of a constant size is a few vector moves): the first half
     // holds every word in use up to half the composition unit's inputs.
     constexpr size_t kRow = sizeof src.words[k][0], kHalf = kRow / 2;
-    if (2 * src.memories <= dp::kCompositionInputs) {
+    if (src.held[k] <= 1) {  // one memory read (memory 0 always is): one word a tap
+      for (int t = 0; t < src.taps; ++t) dst.words[k][t][0] = src.words[k][t][0];
+    } else if (2 * src.memories <= dp::kCompositionInputs) {
       for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], kHalf);
     } else {
       for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], kRow);
