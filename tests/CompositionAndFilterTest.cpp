@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -7,6 +8,7 @@
 #include "rtl_model/datapath/CompositionUnit.hpp"
 #include "rtl_model/datapath/HmdScanOut.hpp"
 #include "rtl_model/stages/CompositionStage.hpp"
+#include "rtl_model/stages/FilterStage.hpp"
 
 using namespace arp::dp;
 
@@ -201,6 +203,47 @@ TEST(AntiAliasingFilter, TheNarrowAccumulatorBlendsAlikeWhereItFits) {
         ASSERT_EQ(bilinear_blend_in<uint32_t>(c00, c10, c01, c11, wx, wy, T, L), bilinear_blend(c00, c10, c01, c11, wx, wy, T, L))
             << "red " << red << " T " << T << " k " << k;
       }
+    }
+  }
+}
+
+// The filter stage blends the default 8-8-8 format through a layout fixed at compile time and any
+// other through the configured one: each channel the exact bilinear value rounded half up, worked out
+// in double (exact for these widths), in every format tried.
+TEST(AntiAliasingFilter, TheStageBlendsEveryFormatAsTheClosedForm) {
+  for (const std::array<int, 3> bits : {std::array<int, 3>{8, 8, 8}, {5, 6, 5}, {16, 8, 8}, {8, 8, 7}, {4, 4, 4}}) {
+    arp::stage::TimedInputs in;
+    in.config.memory.red_bits = bits[0];
+    in.config.memory.green_bits = bits[1];
+    in.config.memory.blue_bits = bits[2];
+    in.config.pipeline.aa = AaMode::Bilinear;
+    const int T = in.config.widths.texel_frac;
+    const arp::stage::StageContext ctx{in, PipelineSchedule(in.config)};
+    const arp::stage::FilterStage stage(ctx);
+    const ChannelLayout L{MemoryFormat(in.config.memory)};
+    EXPECT_EQ((FixedChannelLayout<8, 8, 8>::same(L)), bits == (std::array<int, 3>{8, 8, 8}));
+    const uint32_t all = (L.mask[0] << L.shift[0]) | (L.mask[1] << L.shift[1]) | L.mask[2];
+    std::mt19937 rng(static_cast<uint32_t>(bits[0] * 100 + bits[1] * 10 + bits[2]));
+    for (int i = 0; i < 3000; ++i) {
+      arp::stage::ComposedToken t{};
+      t.slot.eye_count = 2;
+      for (int e = 0; e < 2; ++e) {
+        const bool corner = i < 16;  // all-ones colours and the weights' ends first
+        for (int tap = 0; tap < 4; ++tap) t.tap_color[e][tap] = corner && (i >> tap & 1) ? all : rng() & all;
+        t.wx[e] = corner ? (i & 1 ? (1u << T) - 1 : 0) : rng() % (1u << T);
+        t.wy[e] = corner ? (i & 2 ? (1u << T) - 1 : 0) : rng() % (1u << T);
+      }
+      arp::stage::ColorToken out{};
+      stage.compute(t, out);
+      for (int e = 0; e < 2; ++e)
+        for (int c = 0; c < 3; ++c) {
+          auto ch = [&](uint32_t v) { return static_cast<double>((v >> L.shift[c]) & L.mask[c]); };
+          const uint32_t* q = t.tap_color[e];
+          const double fx = t.wx[e] / double(1u << T), fy = t.wy[e] / double(1u << T);
+          const double exact = (1 - fy) * ((1 - fx) * ch(q[0]) + fx * ch(q[1])) + fy * ((1 - fx) * ch(q[2]) + fx * ch(q[3]));
+          ASSERT_EQ(ch(out.color[e]), std::floor(exact + 0.5))
+              << bits[0] << "-" << bits[1] << "-" << bits[2] << " token " << i << " eye " << e << " channel " << c;
+        }
     }
   }
 }

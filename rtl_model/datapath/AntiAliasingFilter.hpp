@@ -42,15 +42,28 @@ struct ChannelLayout {
         mask{(1u << f.red_bits) - 1, (1u << f.green_bits) - 1, (1u << f.blue_bits) - 1} {}
 };
 
+// The same layout fixed at compile time (R, G, B bits): a caller that has checked its format is
+// this one (same()) gets immediate shifts and masks.
+template <int R, int G, int B>
+struct FixedChannelLayout {
+  static constexpr int shift[3] = {G + B, B, 0};
+  static constexpr uint32_t mask[3] = {(1u << R) - 1, (1u << G) - 1, (1u << B) - 1};
+  static bool same(const ChannelLayout& L) {
+    for (int c = 0; c < 3; ++c)
+      if (L.shift[c] != shift[c] || L.mask[c] != mask[c]) return false;
+    return true;
+  }
+};
+
 // Per channel: ((c00(W-wx) + c10 wx)(W-wy) + (c01(W-wx) + c11 wx) wy) / W^2,
 // rounded half up; W = 2^texel_frac. The sum is at most mask W^2 + W^2/2: 16-bit
 // channels and 16 weight bits fit the 64-bit accumulator, so bilinear_blend always
 // holds it. Acc = uint32_t computes the same value where blend_fits_32 says the
 // sum fits 32 bits (8-bit channels up to texel_frac 12); a vector unit then takes
 // twice the pixels at once.
-template <class Acc>
+template <class Acc, class Layout = ChannelLayout>
 inline uint32_t bilinear_blend_in(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t wx, uint32_t wy,
-                                  int texel_frac, const ChannelLayout& L) {
+                                  int texel_frac, const Layout& L) {
   const Acc W = Acc{1} << texel_frac;
   const int shift = 2 * texel_frac;
   const Acc round = Acc{1} << (shift - 1);

@@ -15,16 +15,25 @@ class FilterStage : public RegisteredStage<FilterStage, ComposedToken, ColorToke
         bilinear_(ctx.config().pipeline.aa == dp::AaMode::Bilinear) {}
 
   void compute(const ComposedToken& in, ColorToken& t) const {
-    for_each_eye(in, t, [&](int k) {
-      const uint32_t* c = in.tap_color[k];
-      t.color[k] = bilinear_ ? dp::bilinear_blend(c[0], c[1], c[2], c[3], in.wx[k], in.wy[k], texel_frac_, layout_) : c[0];
-    });
+    if (!bilinear_) return for_each_eye(in, t, [&](int k) { t.color[k] = in.tap_color[k][0]; });
+    if (rgb888_) return blend(in, t, Rgb888{});
+    blend(in, t, layout_);
   }
 
  private:
+  using Rgb888 = dp::FixedChannelLayout<8, 8, 8>;  // the default format's: immediate shifts and masks
+  template <class Layout>
+  void blend(const ComposedToken& in, ColorToken& t, const Layout& L) const {
+    for_each_eye(in, t, [&](int k) {
+      const uint32_t* c = in.tap_color[k];
+      t.color[k] = dp::bilinear_blend_in<uint64_t>(c[0], c[1], c[2], c[3], in.wx[k], in.wy[k], texel_frac_, L);
+    });
+  }
+
   dp::ChannelLayout layout_;
   int texel_frac_;
   bool bilinear_;
+  bool rgb888_ = Rgb888::same(layout_);
 };
 
 }  // namespace arp::stage
