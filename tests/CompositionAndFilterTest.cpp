@@ -14,6 +14,22 @@ using namespace arp::dp;
 
 namespace {
 uint64_t word(uint32_t color, uint32_t depth) { return (uint64_t{depth} << 32) | color; }
+// A bilinear pipeline of n memories, background (10, 20, 30), and its composition stage.
+arp::stage::TimedInputs bilinear_inputs(int memories) {
+  arp::stage::TimedInputs in;
+  in.config.memory.count = memories;
+  in.config.memory.background = {10, 20, 30};
+  in.config.pipeline.aa = AaMode::Bilinear;
+  return in;
+}
+struct CompositionBench {
+  explicit CompositionBench(int n) : in(bilinear_inputs(n)), ctx{in, PipelineSchedule(in.config)}, stage(ctx) {}
+  arp::stage::TimedInputs in;
+  arp::stage::StageContext ctx;
+  arp::stage::CompositionStage stage;
+  uint32_t empty = MemoryFormat(in.config.memory).empty_depth();
+  uint32_t background = MemoryFormat(in.config.memory).pack_rgb8(10, 20, 30);
+};
 }  // namespace
 
 TEST(CompositionUnit, NearestWinsTiesGoToTheLowerMemoryEmptyShowsBackground) {
@@ -51,14 +67,9 @@ TEST(CompositionUnit, NearestWinsTiesGoToTheLowerMemoryEmptyShowsBackground) {
 // where all are empty -- for both eyes and every tap, with the words past the count ignored.
 TEST(CompositionUnit, TheStageComposesEveryMemoryCountByTheRule) {
   for (int n = 1; n <= kCompositionInputs; ++n) {
-    arp::stage::TimedInputs in;
-    in.config.memory.count = n;
-    in.config.memory.background = {10, 20, 30};
-    in.config.pipeline.aa = AaMode::Bilinear;
-    const arp::stage::StageContext ctx{in, PipelineSchedule(in.config)};
-    const arp::stage::CompositionStage stage(ctx);
-    const MemoryFormat f(in.config.memory);
-    const uint32_t empty = f.empty_depth(), background = f.pack_rgb8(10, 20, 30);
+    const CompositionBench b(n);
+    const arp::stage::CompositionStage& stage = b.stage;
+    const uint32_t empty = b.empty, background = b.background;
     std::mt19937 rng(static_cast<uint32_t>(n));
     for (int i = 0; i < 400; ++i) {
       arp::stage::FetchToken t{};
@@ -93,14 +104,9 @@ TEST(CompositionUnit, TheStageComposesEveryMemoryCountByTheRule) {
 // depth, which would win if it were read. Every mask of held memories, every count.
 TEST(CompositionUnit, TheStageComposesOnlyTheMemoriesHeld) {
   for (int n = 1; n <= kCompositionInputs; ++n) {
-    arp::stage::TimedInputs in;
-    in.config.memory.count = n;
-    in.config.memory.background = {10, 20, 30};
-    in.config.pipeline.aa = AaMode::Bilinear;
-    const arp::stage::StageContext ctx{in, PipelineSchedule(in.config)};
-    const arp::stage::CompositionStage stage(ctx);
-    const MemoryFormat f(in.config.memory);
-    const uint32_t empty = f.empty_depth(), background = f.pack_rgb8(10, 20, 30);
+    const CompositionBench b(n);
+    const arp::stage::CompositionStage& stage = b.stage;
+    const uint32_t empty = b.empty, background = b.background;
     std::mt19937 rng(static_cast<uint32_t>(100 + n));
     for (uint32_t mask = 0; mask < (1u << n); ++mask)
       for (int i = 0; i < 12; ++i) {
