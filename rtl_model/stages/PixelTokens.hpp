@@ -53,12 +53,15 @@ struct FetchToken {
   uint32_t sample;
   uint8_t memories = 0, taps = 0;                          // words in use per eye: taps x memories
   // Per eye, the memories whose words were read (bit m: memory m); the others' faces were never
-  // written, so they read as empty and cannot win the composition (dp::compose_held). All, unless
-  // the memory read says otherwise.
+  // written, so they read as empty and cannot win the composition (dp::compose_held). All in a token
+  // built elsewhere (a bench's); set by every fetch. A token the fast level passes on without a fetch
+  // (FrameSpeculation: memories = taps = 0) keeps a stale mask and is never composed.
   uint8_t held[kMaxEyes] = {0xff, 0xff};
   uint32_t wx[kMaxEyes], wy[kMaxEyes];                    // bilinear weights (0 when off)
   uint64_t words[kMaxEyes][kMaxTaps][dp::kCompositionInputs];  // texel words per eye, tap, memory
 };
+
+static_assert(dp::kCompositionInputs <= 8, "FetchToken::held has a bit per memory");
 
 struct ComposedToken {
   PixelSlot slot;
@@ -102,7 +105,7 @@ inline void copy_token(FetchToken& dst, const FetchToken& src) {
     // A tap's row in two fixed sizes (memcpy of a constant size is a few vector moves): the first half
     // holds every word in use up to half the composition unit's inputs.
     constexpr size_t kRow = sizeof src.words[k][0], kHalf = kRow / 2;
-    if (src.held[k] <= 1) {  // one memory read (memory 0 always is): one word a tap
+    if (src.held[k] <= 1) {  // memory 0 read, or none (memory 0's words are written all the same): one word a tap
       for (int t = 0; t < src.taps; ++t) dst.words[k][t][0] = src.words[k][t][0];
     } else if (2 * src.memories <= dp::kCompositionInputs) {
       for (int t = 0; t < src.taps; ++t) std::memcpy(dst.words[k][t], src.words[k][t], kHalf);
