@@ -62,6 +62,29 @@ TEST(CompositionUnit, NearestWinsTiesGoToTheLowerMemoryEmptyShowsBackground) {
   }
 }
 
+// compose_held over a mask is compose over every input with the ones not held made empty: the colour,
+// the depth and the winning memory, every mask of eight inputs, ties and empty inputs common.
+TEST(CompositionUnit, ComposingTheHeldInputsIsComposingAllWithTheRestEmpty) {
+  const MemoryFormat f;
+  const CompositionParams p(f, {10, 20, 30});
+  std::mt19937 rng(7);
+  for (uint32_t held = 0; held < 256; ++held)
+    for (int i = 0; i < 20; ++i) {
+      uint64_t words[kCompositionInputs], with_empty[kCompositionInputs];
+      for (int m = 0; m < kCompositionInputs; ++m) {
+        const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+        const uint32_t depth = kind == 0 ? f.empty_depth() : std::uniform_int_distribution<uint32_t>(0, 2)(rng);
+        words[m] = word(std::uniform_int_distribution<uint32_t>(0, 0xffffff)(rng), depth);
+        with_empty[m] = held >> m & 1u ? words[m] : f.empty_word();
+        if (!(held >> m & 1u)) words[m] = word(0xabcdef, 0);  // not held: would win if it were read
+      }
+      const Composite a = compose_held(words, held, p), b = compose(with_empty, kCompositionInputs, p);
+      ASSERT_EQ(a.color, b.color) << "held " << held;
+      ASSERT_EQ(a.depth, b.depth) << "held " << held;
+      ASSERT_EQ(a.memory, b.memory) << "held " << held;
+    }
+}
+
 // The timed models' composition stage takes the memory count as a constant (one case per count): each
 // count composes as the rule says -- the smallest depth code, the lower memory on a tie, the background
 // where all are empty -- for both eyes and every tap, with the words past the count ignored.
