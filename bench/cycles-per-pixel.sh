@@ -10,6 +10,8 @@
 # Run after building. Env: FRAMES (200), RUNS (5), METHOD (perf|clock; default:
 # perf if it counts cycles here, else clock).
 set -euo pipefail
+# Paths given relative name files from where the script was started; the defaults, from the repository.
+if [ -n "${LOOP:-}" ]; then LOOP=$(realpath -m -- "$LOOP"); fi
 cd "$(dirname "$0")/.."
 LOOP=${LOOP:-build/bench/arp_frame_loop}
 FRAMES=${FRAMES:-200}

@@ -11,8 +11,11 @@
 # Usage: bench/plan-memory-trade.sh SCENE WALK [OUT]   (env: ARPSIM, THETA=8, LIMITS="0 120 90 60 30",
 #        FRAMES=120, TRUTH=1024, STILL=1, STILL_TRUTH=2048). Needs jq.
 set -euo pipefail
+# Paths given relative name files from where the script was started; the defaults, from the repository.
+file_or_name() { if [ -e "$1" ]; then realpath -- "$1"; else printf '%s' "$1"; fi; }  # a scene or walk may be a built-in name
+SCENE=$(file_or_name "$1") WALK=$(file_or_name "$2") OUT=$(realpath -m -- "${3:-plan-memory-trade}")
+if [ -n "${ARPSIM:-}" ]; then ARPSIM=$(realpath -m -- "$ARPSIM"); fi
 cd "$(dirname "$0")/.."
-SCENE=$1 WALK=$2 OUT=${3:-plan-memory-trade}
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
 THETA=${THETA:-8}
 LIMITS=${LIMITS:-"0 120 90 60 30"}

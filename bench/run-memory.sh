@@ -7,10 +7,13 @@
 # Peak RSS is GNU time's maximum resident set size. Usage:
 #   bench/run-memory.sh [FIDELITY] [CSV]   (env: ARPSIM, FRAMES="1000 10000 100000")
 set -euo pipefail
+# Paths given relative name files from where the script was started; the defaults, from the repository.
+if [ -n "${ARPSIM:-}" ]; then ARPSIM=$(realpath -m -- "$ARPSIM"); fi
+CSV=${2:-}
+if [ -n "$CSV" ]; then CSV=$(realpath -m -- "$CSV"); fi
 cd "$(dirname "$0")/.."
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
 FIDELITY=${1:-functional}
-CSV=${2:-}
 FRAMES=${FRAMES:-"1000 10000 100000"}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

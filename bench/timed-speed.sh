@@ -19,6 +19,9 @@
 # The verilated level needs a build with Verilator (scripts/setup.sh).
 # Usage: bench/timed-speed.sh [CSV]   (env: FRAMES, FUNCTIONAL_FRAMES, VCD_FRAMES, RUNS, ARPSIM)
 set -euo pipefail
+# Paths given relative name files from where the script was started; the defaults, from the repository.
+if [ -n "${ARPSIM:-}" ]; then ARPSIM=$(realpath -m -- "$ARPSIM"); fi
+if [ -n "${1:-}" ]; then set -- "$(realpath -m -- "$1")"; fi
 cd "$(dirname "$0")/.."
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
 FRAMES=${FRAMES:-8}
