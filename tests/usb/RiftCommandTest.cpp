@@ -148,16 +148,19 @@ TEST(RiftCommand, RecordAndLiveRunSurviveAnUnplug) {
     EXPECT_NE(live.output.find("] disconnected"), std::string::npos) << live.output;
     EXPECT_NE(live.output.find("] reconnected"), std::string::npos) << live.output;
     EXPECT_NE(live.output.find("90 frames of Oculus Rift DK1"), std::string::npos) << live.output;
-    // The replug's samples were received and taken, not the pose held: the loop runs a second or more after
-    // the replug (it is 0.5 s after the stream's start), so at least 100 samples more than the child was
-    // sent before the unplug, at even a tenth of the device's rate. (Not their times: a starved emulator's
-    // samples fall behind the loop's clock, and the last one taken can be from well before the end.)
+    // The replug's samples were received and taken, not the pose held: everything past the samples the
+    // child was sent before the unplug came after the replug, and a held pose takes none of them. How many
+    // depends on the pace: the loop runs about 0.8 s after the replug, but a CI run under ASan, with the
+    // other test job, Xvfb and 163 ms renders on 2 cores, starved the emulator to ~110 samples a second
+    // (88 taken after the replug). A margin of 10 holds at any pace that lets the events above be seen.
+    // (Not their times: a starved emulator's samples fall behind the loop's clock, and the last one taken
+    // can be from well before the end.)
     long long taken = -1, before = -1;
     const size_t at = live.output.find("tracker samples taken");
     ASSERT_NE(at, std::string::npos) << live.output;
     ASSERT_EQ(std::sscanf(live.output.c_str() + live.output.rfind("arpsim live: ", at), "arpsim live: %lld tracker samples taken (%lld", &taken, &before), 2)
         << live.output;
-    EXPECT_GT(taken + before, sent_before_unplug + 100) << live.output;
+    EXPECT_GT(taken + before, sent_before_unplug + 10) << live.output;
     EXPECT_EQ(static_cast<long long>(read_trace_csv(d.file("window.csv")).size()), taken);
   }
 }
