@@ -14,6 +14,11 @@ ClockGenerator::ClockGenerator(sc_module_name name, int64_t hz, int64_t base_ps,
   sensitive << wake_;
 }
 
+void ClockGenerator::attach(RisingEdgeCallee& callee) {
+  if (sc_is_running()) SC_REPORT_ERROR("arpsim/clock", (std::string(name()) + ": a module attached after the simulation started").c_str());
+  callees_.push_back(&callee);
+}
+
 int64_t ClockGenerator::edge_ps(int64_t n) const { return clock_.ps(n); }
 
 void ClockGenerator::trace(sc_trace_file* tf, const std::string& name) {
@@ -49,12 +54,14 @@ void ClockGenerator::edge() {
   skipped_ = false;
   ++cycle_;
   ++edges_;
-  // Immediate: the clocked processes run in this evaluation phase, saving the kernel a delta cycle
-  // per clock. Their order against the other processes of this instant cannot matter: they talk
+  // Immediate: the clocked processes run in this evaluation phase (the attached modules here), saving
+  // the kernel a delta cycle per clock. Their order against the other processes of this instant, and
+  // the attached modules' among themselves, cannot matter: they talk
   // through FIFOs settled at the update phase; the orientation register is read by time
   // (dp::register_sample); the buffer swap takes only commits strictly before its blank, so a host
   // port commit in this same instant is not among them, whichever process runs first.
   posedge_.notify();
+  for (RisingEdgeCallee* c : callees_) c->on_rising_edge();
   if (traced_) {
     level_ = true;
     const int64_t rise = edge_ps(cycle_), next = edge_ps(cycle_ + 1);

@@ -2,11 +2,20 @@
 // FIFO it reads and one to the FIFO it writes (named for what they carry:
 // <input>_in, <output>_out from its StageInfo; the first stage has no input, the last no
 // output), the stage object it owns (its registers, state and arithmetic:
-// rtl_model/stages), one process on the rising clock edge running the stage's
+// rtl_model/stages), its activation on the rising clock edge running the stage's
 // tick, and its waveform (the stage's probes). Any stage module can be
 // instantiated alone (testbench/systemc/ModuleBenches).
+//
+// The activation: bound to a ClockGenerator, the module is run by the
+// generator's own process at each rising edge (ClockGenerator::attach), as
+// the stages of a clock domain are evaluated in one pass by a cycle-based
+// simulator; bound to any other clock channel, it is a method process of its
+// own, statically sensitive to the clock's rising edge. Either way it runs in
+// the edge's evaluation phase and talks only through its ports, so the two
+// give the same cycles (the module benches run both).
 #pragma once
 #include <systemc>
+#include <sysc/kernel/sc_dynamic_processes.h>
 
 #include <string>
 #include <type_traits>
@@ -60,7 +69,7 @@ inline std::string port_name(const char* carries, const char* suffix) { return c
 }  // namespace detail
 
 template <class S>
-class StageModule : public sc_core::sc_module {
+class StageModule : public sc_core::sc_module, private RisingEdgeCallee {
  public:
   using Stage = S;
   using Input = typename S::Input;
@@ -72,17 +81,12 @@ class StageModule : public sc_core::sc_module {
   detail::InPort<Input> input;
   detail::OutPort<Output> output;
 
-  SC_HAS_PROCESS(StageModule);
   StageModule(sc_core::sc_module_name name, const stage::StageContext& ctx)
       : sc_core::sc_module(name),
         clk("clk"),
         input(detail::port_name(S::kInfo.input, "_in").c_str()),
         output(detail::port_name(S::kInfo.output, "_out").c_str()),
-        stage_(ctx) {
-    SC_METHOD(on_clock);
-    sensitive << clk;
-    dont_initialize();
-  }
+        stage_(ctx) {}
 
   S& stage() { return stage_; }
   const S& stage() const { return stage_; }
@@ -91,7 +95,8 @@ class StageModule : public sc_core::sc_module {
   // data: the register's data fields too (VcdOptions::data).
   void trace(sc_core::sc_trace_file* tf, bool data = true) { trace_stage(tf, stage_, std::string(name()) + ".", data); }
   void stop_trace() { stage_.set_probing(false); }
-  // After elaboration: whether its clock port is bound to a ClockGenerator, whose cycle it reads directly.
+  // After elaboration: whether its clock port is bound to a ClockGenerator, which runs it and whose
+  // cycle it reads directly.
   bool reads_clock_directly() const { return clock_ != nullptr; }
 
  protected:
@@ -115,8 +120,18 @@ class StageModule : public sc_core::sc_module {
       else stage_.tick(cycle, *in_, *out_);
     }
   }
+  void on_rising_edge() override { on_clock(); }
   void end_of_elaboration() override {
-    clock_ = dynamic_cast<const ClockGenerator*>(clk.operator->());
+    if (ClockGenerator* gen = dynamic_cast<ClockGenerator*>(clk.operator->())) {
+      clock_ = gen;
+      gen->attach(*this);
+    } else {
+      sc_core::sc_spawn_options opt;
+      opt.spawn_method();
+      opt.dont_initialize();
+      opt.set_sensitivity(&clk->posedge_event());
+      sc_core::sc_spawn([this] { on_clock(); }, "on_clock", &opt);
+    }
     if constexpr (!std::is_void_v<Input>) {
       in_ = input.operator->();
       in_fifo_ = dynamic_cast<FifoChannel<Input>*>(in_);

@@ -12,7 +12,9 @@
 #include <memory>
 #include <random>
 #include <set>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "BenchSupport.hpp"
 #include "StageBench.hpp"
@@ -65,6 +67,7 @@ struct Result {
   int64_t forwarded_calls = 0;  // calls the module made through ForwardingFifos
   int64_t forwarded_clock_calls = 0;  // cycle reads through a ForwardingClock
   bool clock_direct = false;          // the module read its ClockGenerator's cycle without the interface
+  std::vector<std::string> processes;  // the module's own processes (none when its ClockGenerator runs it)
 };
 
 // A channel with the FIFO's two interfaces that is not a FifoChannel: it
@@ -188,6 +191,8 @@ Result<typename Module::Input, typename Module::Output> run_bench(World& w, std:
   r.forwarded_calls = in_forward.calls + out_forward.calls;
   r.forwarded_clock_calls = clock_forward.calls;
   r.clock_direct = dut->reads_clock_directly();
+  for (const sc_core::sc_object* o : dut->get_child_objects())
+    if (dynamic_cast<const sc_core::sc_process_b*>(o)) r.processes.push_back(o->name());
   if (keep) *keep = std::move(dut);
   return r;
 }
@@ -514,9 +519,11 @@ void filter_bench(bool through_interfaces) {
     EXPECT_GT(r.forwarded_calls, 2 * static_cast<int64_t>(stim.size())) << "the module must have called the forwarding channels";
     EXPECT_GT(r.forwarded_clock_calls, static_cast<int64_t>(stim.size())) << "the module must have read the forwarding clock";
     EXPECT_FALSE(r.clock_direct);
+    EXPECT_EQ(r.processes, std::vector<std::string>{"dut.on_clock"}) << "a process of its own on another clock channel";
   } else {
     EXPECT_EQ(r.forwarded_calls, 0);
     EXPECT_TRUE(r.clock_direct) << "bound to a ClockGenerator, the module reads its cycle directly";
+    EXPECT_TRUE(r.processes.empty()) << "bound to a ClockGenerator, the generator runs the module";
   }
   const dp::ChannelLayout L{dp::MemoryFormat(w.c.memory)};
   for (size_t i = 0; i < r.got.size(); ++i)
