@@ -60,7 +60,7 @@ void ClockGenerator::edge() {
   // through FIFOs settled at the update phase; the orientation register is read by time
   // (dp::register_sample); the buffer swap takes only commits strictly before its blank, so a host
   // port commit in this same instant is not among them, whichever process runs first.
-  posedge_.notify();
+  if (listened_) posedge_.notify();
   for (RisingEdgeCallee* c : callees_) c->on_rising_edge();
   if (traced_) {
     level_ = true;

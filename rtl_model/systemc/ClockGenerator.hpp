@@ -55,12 +55,18 @@ class ClockGenerator final : public sc_core::sc_module, public ClockIf {
   // generator's own activation -- the evaluation phase in which a process statically sensitive to the
   // edge would run, without the kernel's trigger, queue and dispatch of one process per module and clock
   // (about 100 host instructions each in SystemC 2.3.4). The edge's event is notified all the same, for
-  // the processes that wait on it.
+  // the processes that wait on it (posedge_event).
   void attach(RisingEdgeCallee& callee);
 
   int64_t cycle() const override { return cycle_; }
   int64_t rising_edges() const { return edges_; }  // the cycles clocked (what gating skipped is not among them)
-  const sc_core::sc_event& posedge_event() const override { return posedge_; }
+  // Whoever waits on the edge's event asks for it here first (a port's static sensitivity through
+  // default_event, at elaboration), so the edge is notified only once someone has: an immediate
+  // notification with no process to wake still costs the kernel some 60 instructions a clock.
+  const sc_core::sc_event& posedge_event() const override {
+    listened_ = true;
+    return posedge_;
+  }
   // Waveforms: the clock level (with its falling edge, until stop_trace()), the cycle number.
   void trace(sc_core::sc_trace_file* tf, const std::string& name);
   void trace_cycle(sc_core::sc_trace_file* tf, const std::string& name) const;
@@ -77,6 +83,7 @@ class ClockGenerator final : public sc_core::sc_module, public ClockIf {
   int64_t cycle_;
   int64_t edges_ = 0;
   bool started_ = false, level_ = false, traced_ = false, skipped_ = false;
+  mutable bool listened_ = false;  // posedge_event() was asked for
 };
 
 }  // namespace arp::scm
