@@ -54,8 +54,8 @@ class ClockGenerator final : public sc_core::sc_module, public ClockIf {
   // Before the simulation starts: `callee` runs at each rising edge, in the order attached, inside the
   // generator's own activation -- the evaluation phase in which a process statically sensitive to the
   // edge would run, without the kernel's trigger, queue and dispatch of one process per module and clock
-  // (about 100 host instructions each in SystemC 2.3.4). The edge's event is notified all the same, for
-  // the processes that wait on it (posedge_event).
+  // (about 100 host instructions each in SystemC 2.3.4). The edge's event is still notified for the
+  // processes that wait on it, once one has asked for it (posedge_event).
   void attach(RisingEdgeCallee& callee);
 
   int64_t cycle() const override { return cycle_; }

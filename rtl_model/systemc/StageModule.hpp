@@ -11,8 +11,8 @@
 // the stages of a clock domain are evaluated in one pass by a cycle-based
 // simulator; bound to any other clock channel, it is a method process of its
 // own, statically sensitive to the clock's rising edge. Either way it runs in
-// the edge's evaluation phase and talks only through its ports, so the two
-// give the same cycles (the module benches run both).
+// the edge's evaluation phase and talks to the other stages only through its
+// ports, so the two give the same cycles (the filter's bench runs both).
 #pragma once
 #include <systemc>
 #include <sysc/kernel/sc_dynamic_processes.h>
