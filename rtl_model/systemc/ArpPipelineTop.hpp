@@ -1,9 +1,9 @@
 // The detailed cycle-accurate model: one SC_MODULE per stage, each owning its
 // stage (rtl_model/stages) and run at each rising edge of the pixel clock by
 // the clock generator (StageModule), linked by clocked FIFO channels named
-// for what they carry. The host write port runs on the host clock. The top level only creates and binds: the
-// stages are a list (ArpStages), from which StageChain makes the modules, the
-// FIFOs between them and the schedule.
+// for what they carry. The host write port runs on the host clock. The top
+// level only creates and binds: the stages are a list (ArpStages), from which
+// StageChain makes the modules, the FIFOs between them and the schedule.
 //
 //   VideoTimingGenerator -pixel_requests-> LensVectorTable -view_vectors->
 //   OrientationMatrixUnit (TrackerInterface: orientation register)

@@ -3,8 +3,8 @@
 // drifts from the datapath's VideoTiming; edges jitter by under 1 ps instead.
 // Modules bind a port to it (sc_port<ClockIf>), are sensitive to its rising
 // edge (or run by it: attach) and read the cycle number from it -- no module
-// shares another's counter. Simulated time 0 is absolute time `base_ps` (a run may start
-// before 0). The falling edge exists only for the waveform: while no trace
+// shares another's counter. Simulated time 0 is absolute time `base_ps` (a
+// run may start before 0). The falling edge exists only for the waveform: while no trace
 // shows the clock, each cycle costs one activation.
 #pragma once
 #include <systemc>
