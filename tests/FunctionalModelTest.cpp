@@ -261,6 +261,20 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
     expect_bit_identical(c, std::string("one memory written backwards, ") + (aa == AaMode::Off ? "nearest" : "bilinear"),
                          Fill::OneMemoryBackwards);
   }
+  // Lines wider than the model's per-thread chunk (640 pixels, FunctionalModel::render_impl): a line in two
+  // chunks, the second partial, where the loads' look-ahead starts again. One memory (its own passes), two
+  // and four, both filters.
+  for (const int count : {1, 2, 4})
+    for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
+      c = ArpConfig{};
+      c.timing = dp::VideoTimingConfig::mode(2, {700, 8, 16, 16}, {12, 2, 2, 6}, 1'400'000);
+      c.memory.count = count;
+      c.memory.face_size = 128;
+      c.pipeline.aa = aa;
+      expect_bit_identical(c, "700-pixel lines, " + std::to_string(count) + " memories written in order, " +
+                                  (aa == AaMode::Off ? "nearest" : "bilinear"),
+                           Fill::EveryMemoryInOrder);
+    }
   // Every memory holding something: four to eight (the fixed-count passes, up to the composition unit's
   // eight inputs) and eleven (the run-time count); with the tiles where writes put them, and with every
   // memory's tiles in table order (read without the tables). Faces of 128 texels (4 x 4 tiles): writing eleven
