@@ -261,9 +261,9 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
     expect_bit_identical(c, std::string("one memory written backwards, ") + (aa == AaMode::Off ? "nearest" : "bilinear"),
                          Fill::OneMemoryBackwards);
   }
-  // Lines wider than the model's per-thread chunk (640 pixels, FunctionalModel::render_impl): a line in two
-  // chunks, the second partial, where the loads' look-ahead starts again. One memory (its own passes), two
-  // and four, both filters.
+  // Lines of several of the model's per-thread chunks (128 pixels, FunctionalModel::render_impl), the last
+  // partial, where the loads' look-ahead starts again; the small display above has two. One memory (its own
+  // passes), two and four, both filters.
   for (const int count : {1, 2, 4})
     for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
       c = ArpConfig{};

@@ -146,12 +146,9 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
 
 #pragma omp parallel num_threads(threads)
   {
-    // Per-thread buffers for one chunk of a line (20 KiB; the default display's whole line): the texel
-    // loads look ahead within a chunk, across the passes' blocks. Chunks of 128 kept every pass within
-    // L1 but left the loads little to look ahead to, which cost more once the texels no longer stayed in
-    // the caches (arp_frame_loop, one thread, runs alternating, 2026-12-07: nearest, four memories,
-    // 34.5-35.1 -> 29.7-29.9 cycles a pixel; bilinear 46-49 -> 44-46).
-    constexpr int C = 640;
+    // Per-thread buffers for one chunk of a line (4 KiB): with the passes' own blocks (at most about
+    // 21 KiB, four memories bilinear) every pass works out of a 32 KiB L1.
+    constexpr int C = 128;
     const size_t w = C;
     std::vector<LatchSegment> segs;
     std::vector<int32_t> rx(w), ry(w), rz(w), face(w), u(w), v(w);
@@ -179,6 +176,8 @@ void FunctionalModel::render_impl(const DisplayMemorySet& mem, const Orientation
         uint32_t* dst = dst_line + c0;
         if constexpr (A == AaMode::Bilinear) {
           passes::bilinear_memories_line(src, face.data(), u.data(), v.data(), n, T, S, layout_, comp_, dst);
+        } else if (src.count == 1) {  // one memory: the fused single-memory pass
+          passes::nearest_single_memory_line(src, face.data(), u.data(), v.data(), n, T, comp_, dst);
         } else {
           passes::nearest_refs_line(face.data(), u.data(), v.data(), n, T, src, ref);
           passes::fetch_compose_line(src, ref, n, comp_, dst);

@@ -195,7 +195,6 @@ template <int K>
                                              const CompositionParams& cp, uint32_t* out) {                    \
     compose_nearest_body<K>(w, count, n, cp, out);                                                            \
   }
-ARP_COMPOSE_NEAREST(1)
 ARP_COMPOSE_NEAREST(2)
 ARP_COMPOSE_NEAREST(3)
 ARP_COMPOSE_NEAREST(4)
@@ -217,8 +216,7 @@ void nearest_memories_impl(const EyeSources& src, TexelRef ref, int n, const Com
   for (int i0 = 0; i0 < n; i0 += B) {
     const int m = std::min(B, n - i0);
     nearest_load<K, Dense>(p, ref.tile, ref.word, i0, m, n, w);
-    if constexpr (K == 1) compose_nearest_1(w, p.count, m, cp, out + i0);
-    else if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
+    if constexpr (K == 2) compose_nearest_2(w, p.count, m, cp, out + i0);
     else if constexpr (K == 3) compose_nearest_3(w, p.count, m, cp, out + i0);
     else if constexpr (K == 4) compose_nearest_4(w, p.count, m, cp, out + i0);
     else if constexpr (K == 5) compose_nearest_5(w, p.count, m, cp, out + i0);
@@ -238,7 +236,6 @@ void nearest_memories(const EyeSources& src, TexelRef ref, int n, const Composit
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const CompositionParams& cp, uint32_t* out) {
   switch (src.count) {
     case 0: for (int i = 0; i < n; ++i) out[i] = cp.background; break;
-    case 1: nearest_memories<1>(src, ref, n, cp, out); break;
     case 2: nearest_memories<2>(src, ref, n, cp, out); break;
     case 3: nearest_memories<3>(src, ref, n, cp, out); break;
     case 4: nearest_memories<4>(src, ref, n, cp, out); break;
@@ -246,15 +243,16 @@ void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const Compos
     case 6: nearest_memories<6>(src, ref, n, cp, out); break;
     case 7: nearest_memories<7>(src, ref, n, cp, out); break;
     case 8: nearest_memories<8>(src, ref, n, cp, out); break;
-    default: nearest_memories<0>(src, ref, n, cp, out); break;
+    default: nearest_memories<0>(src, ref, n, cp, out); break;  // one memory too (its fused pass is faster)
   }
 }
 
 namespace {
-// The bilinear path in passes: tap positions (vectors), the texel loads (a scalar loop on purpose), then
-// composition and blend (vectors). One fused vector loop was slower: a gather of eight 64-bit words costs
-// about as much as eight plain loads on Zen 4 and stalls the loop around it, while plain loads overlap
-// (bench/FunctionalModelBench: 117-125 against 139-162 M px/s on one thread, runs alternating, 2026-11-26).
+// The single-memory bilinear path in three passes over a block of pixels: tap positions (vectors),
+// the texel loads (a scalar loop on purpose), composition and blend (vectors). One fused vector loop
+// was slower: a gather of eight 64-bit words costs about as much as eight plain loads on Zen 4 and
+// stalls the loop around it, while plain loads overlap (bench/FunctionalModelBench: 117-125 against
+// 139-162 M px/s on one thread, runs alternating, 2026-11-26).
 
 ARP_VECTOR_CLONES
 void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restrict u, const int32_t* __restrict v, int n,
@@ -272,6 +270,22 @@ void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restric
     // c00 (W - 0) + c10' 0 = c00 W = c00 (W - wx) + c00 wx, the blend of the same texel twice, exactly.
     wx[i] = t.x1 != t.x0 ? t.wx : 0;
     wy[i] = t.wy;
+  }
+}
+
+// No vector clone: the baseline has no gathers, so the loads stay scalar. Each row of a quad is one
+// 16-byte pair, as in bilinear_load below: row0[2 i + column], row1[2 i + column]. Dense: the memory's
+// tiles lie in its pool in table order (EyeSources::dense), so a quad's place is arithmetic, without the
+// tile table's dependent load.
+template <bool Dense>
+void bilinear_load_impl(const uint64_t* __restrict pool, const int32_t* __restrict offset,
+                        const int32_t* __restrict tile, const int32_t* __restrict w0, const int32_t* __restrict dy,
+                        int n, uint64_t* __restrict row0, uint64_t* __restrict row1) {
+  for (int i = 0; i < n; ++i) {
+    const int64_t at = Dense ? int64_t{tile[i]} * DisplayMemoryBank::kTileWords : int64_t{offset[tile[i]]};
+    const uint64_t* q = pool + at + w0[i];
+    std::memcpy(row0 + 2 * i, q, 16);
+    std::memcpy(row1 + 2 * i, q + dy[i], 16);
   }
 }
 
@@ -301,6 +315,22 @@ void bilinear_blend_64(const uint64_t* row0, const uint64_t* row1, const uint32_
   bilinear_blend_body<uint64_t>(row0, row1, wx, wy, n, T, L, cp, out);
 }
 
+void bilinear_single_impl(const uint64_t* pool, const int32_t* offset, bool dense, const int32_t* face,
+                          const int32_t* u, const int32_t* v, int n, int T, int32_t S, int tpr, int tpf,
+                          const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
+  alignas(64) int32_t tile[kBlock], w0[kBlock], dy[kBlock];
+  alignas(64) uint32_t wx[kBlock], wy[kBlock];
+  alignas(64) uint64_t row0[2 * kBlock], row1[2 * kBlock];
+  const auto blend = blend_fits_32(T, L) ? bilinear_blend_32 : bilinear_blend_64;
+  for (int i0 = 0; i0 < n; i0 += kBlock) {
+    const int m = std::min(kBlock, n - i0);
+    bilinear_taps_impl(face + i0, u + i0, v + i0, m, T, S, tpr, tpf, tile, w0, dy, wx, wy);
+    if (dense) bilinear_load_impl<true>(pool, offset, tile, w0, dy, m, row0, row1);
+    else bilinear_load_impl<false>(pool, offset, tile, w0, dy, m, row0, row1);
+    blend(row0, row1, wx, wy, m, T, L, cp, out + i0);
+  }
+}
+
 // Bilinear over several memories likewise: per pixel and memory one tile lookup for the four taps (the
 // apron), their words into per-memory arrays; then each tap's composition and the blend in vectors.
 // Pixels [i0, i0 + n) of a line of `line` pixels whose taps are all known: as nearest_load, the prefetch
@@ -321,10 +351,7 @@ void bilinear_load(const Pools<K, Dense>& p, const int32_t* __restrict tile, con
       }
   for (int i = 0; i < n; ++i) {
     const int j = i0 + i;
-    // One memory: a pixel's quad is in the lines of its neighbours' (about ten pixels a 64-byte line), so
-    // every 4th pixel asks: asking for every pixel cost as much as it saved on two threads, and thinning it
-    // for several memories made them slower (one thread, four memories: 46-48 -> 49-50 cycles a pixel).
-    if (j + kAhead < line && (K != 1 || (j & 3) == 0))
+    if (j + kAhead < line)
       for (int k = 0; k < p.count; ++k) {
         const uint64_t* q = p.at(k, tile[j + kAhead], w0[j + kAhead]);
         __builtin_prefetch(q);
@@ -430,32 +457,6 @@ void bilinear_memories_pass(const EyeSources& src, const int32_t* face, const in
     blend(row0, row1, wx + i0, wy + i0, m, T, L, out + i0);
   }
 }
-// One memory: as over several, the strip's taps first and the loads looking ahead, then the blend straight
-// from the words (one memory's composition is the word's own colour or the background). Until 2026-12-07
-// the taps, loads and blend went per block of 128 with no look-ahead: enough while one memory's texels
-// stayed in the caches, not on a VM whose texels come from further out (bilinear, one memory, one thread,
-// arp_frame_loop, runs alternating: 27.4-29.6 cycles a pixel before, 20.6-22.7 after; two threads level).
-template <bool Dense>
-void bilinear_single_pass(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n, int T,
-                          int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
-  const Pools<1, Dense> p(src);
-  thread_local std::vector<int32_t> taps_of_thread;
-  std::vector<int32_t>& taps = taps_of_thread;
-  taps.resize(5 * static_cast<size_t>(n));
-  int32_t* tile = taps.data();
-  int32_t *w0 = tile + n, *dy = w0 + n;
-  uint32_t* wx = reinterpret_cast<uint32_t*>(dy + n);
-  uint32_t* wy = wx + n;
-  bilinear_taps_impl(face, u, v, n, T, S, src.tiles_per_row, src.tiles_per_face, tile, w0, dy, wx, wy);
-  alignas(64) uint64_t words[1][2][2 * kBlock];
-  const auto blend = blend_fits_32(T, L) ? bilinear_blend_32 : bilinear_blend_64;
-  for (int i0 = 0; i0 < n; i0 += kBlock) {
-    const int m = std::min(kBlock, n - i0);
-    bilinear_load<1, Dense>(p, tile, w0, dy, i0, m, n, words);
-    blend(words[0][0], words[0][1], wx + i0, wy + i0, m, T, L, cp, out + i0);
-  }
-}
-
 template <int K>
 void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                             int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
@@ -463,12 +464,33 @@ void bilinear_memories_impl(const EyeSources& src, const int32_t* face, const in
   else bilinear_memories_pass<K, false>(src, face, u, v, n, T, S, L, cp, out);
 }
 
+template <bool Dense>
+[[gnu::always_inline]] inline void nearest_single_body(const uint64_t* __restrict pool, const int32_t* __restrict offset,
+                                                       const int32_t* __restrict face, const int32_t* __restrict u,
+                                                       const int32_t* __restrict v, int n, int T, int tpr, int tpf,
+                                                       const CompositionParams& cpref, uint32_t* __restrict out) {
+  const CompositionParams cp = cpref;
+  for (int i = 0; i < n; ++i) {
+    const int32_t tx = u[i] >> T, ty = v[i] >> T;
+    const int32_t tile = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), word = (ty & TM) * TR + (tx & TM);
+    // Dense: the tiles in table order (EyeSources::dense), the place arithmetic; else through the table.
+    const uint64_t w = Dense ? pool[int64_t{tile} * DisplayMemoryBank::kTileWords + word] : texel(pool, offset, tile, word);
+    out[i] = compose(&w, 1, cp).color;
+  }
+}
+
+ARP_VECTOR_CLONES
+void nearest_single_impl(const uint64_t* pool, const int32_t* offset, bool dense, const int32_t* face, const int32_t* u,
+                         const int32_t* v, int n, int T, int tpr, int tpf, const CompositionParams& cp, uint32_t* out) {
+  if (dense) nearest_single_body<true>(pool, offset, face, u, v, n, T, tpr, tpf, cp, out);
+  else nearest_single_body<false>(pool, offset, face, u, v, n, T, tpr, tpf, cp, out);
+}
 }  // namespace
 
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int T, int32_t S, const ChannelLayout& L, const CompositionParams& cp, uint32_t* out) {
-  if (src.dense) bilinear_single_pass<true>(src, face, u, v, n, T, S, L, cp, out);
-  else bilinear_single_pass<false>(src, face, u, v, n, T, S, L, cp, out);
+  bilinear_single_impl(src.dense ? src.dense_base[0] : src.pool[0], src.offset[0], src.dense, face, u, v, n, T, S,
+                       src.tiles_per_row, src.tiles_per_face, L, cp, out);
 }
 
 void bilinear_memories_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n, int T,
@@ -485,6 +507,12 @@ void bilinear_memories_line(const EyeSources& src, const int32_t* face, const in
     case 8: bilinear_memories_impl<8>(src, face, u, v, n, T, S, L, cp, out); break;
     default: bilinear_memories_impl<0>(src, face, u, v, n, T, S, L, cp, out); break;
   }
+}
+
+void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                int T, const CompositionParams& cp, uint32_t* out) {
+  nearest_single_impl(src.dense ? src.dense_base[0] : src.pool[0], src.offset[0], src.dense, face, u, v, n, T,
+                      src.tiles_per_row, src.tiles_per_face, cp, out);
 }
 
 }  // namespace arp::passes

@@ -4,10 +4,11 @@
 // pixel (tests/FunctionalModelTest proves it). Passes that vectorise are
 // compiled for x86-64-v4 (AVX-512) and a portable baseline, chosen at run time.
 //
-// Per strip of a line: rotate -> address (face, texel-space u, v) -> tap
-// addresses -> the texel loads, looking ahead across the strip -> composition
-// (per tap for nearest; the four taps of a pixel at once for bilinear, one
-// memory's the word's own colour) -> blend. Scan-out last.
+// Per strip of a line: rotate -> address (face, texel-space u, v) -> then,
+// for an eye whose scene sits in one memory, fused passes (tap addresses,
+// texel loads, composition, blend); for several memories, tap addresses ->
+// fetch and composite (per tap for nearest; the four taps of a pixel at once
+// for bilinear) -> blend. Scan-out last.
 #pragma once
 #include <cstdint>
 
@@ -69,9 +70,9 @@ struct TexelRef {
 // Nearest texel of each pixel.
 void nearest_refs_line(const int32_t* face, const int32_t* u, const int32_t* v, int n, int texel_frac,
                        const EyeSources& src, TexelRef out);
-// The whole bilinear path for an eye with a single memory: tap positions (the
-// tiles' aprons put all four taps in one tile), then per block the texel loads
-// and the blend. out is the memory-colour code per pixel.
+// The whole bilinear path for an eye with a single memory, per block of
+// pixels: tap positions (the tiles' aprons put all four taps in one tile),
+// the texel loads, composition and blend. out is the memory-colour code per pixel.
 void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                                  int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
                                  const dp::CompositionParams& cp, uint32_t* out);
@@ -81,7 +82,11 @@ void bilinear_single_memory_line(const EyeSources& src, const int32_t* face, con
 void bilinear_memories_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
                             int texel_frac, int32_t face_size, const dp::ChannelLayout& L,
                             const dp::CompositionParams& cp, uint32_t* out);
-// Fetch from every memory of the eye and composite (any src.count; one included).
+// The nearest-texel path for an eye with a single memory, fused likewise.
+void nearest_single_memory_line(const EyeSources& src, const int32_t* face, const int32_t* u, const int32_t* v, int n,
+                                int texel_frac, const dp::CompositionParams& cp, uint32_t* out);
+
+// Fetch from every memory of the eye and composite (any src.count).
 void fetch_compose_line(const EyeSources& src, TexelRef ref, int n, const dp::CompositionParams& cp, uint32_t* out);
 
 }  // namespace arp::passes
