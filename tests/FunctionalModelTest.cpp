@@ -262,8 +262,8 @@ TEST(FunctionalModel, BitIdenticalAcrossConfigurations) {
                          Fill::OneMemoryBackwards);
   }
   // Lines of several of the model's per-thread chunks (128 pixels, FunctionalModel::render_impl), the last
-  // partial, where the loads' look-ahead starts again; the small display above has two. One memory (its own
-  // passes), two and four, both filters.
+  // partial; the small display above has two. One memory (its own passes), two and four (whose loads look
+  // ahead within a chunk, starting again in each), both filters.
   for (const int count : {1, 2, 4})
     for (const AaMode aa : {AaMode::Bilinear, AaMode::Off}) {
       c = ArpConfig{};
