@@ -7,7 +7,8 @@
 # ratio to the run detailed throughout; then whether every frame (pixels,
 # photon times, latencies, underflows) is identical to that run's.
 # Usage: bench/detail-windows.sh   (env: ARPSIM, SCENE=gallery, WALK=gallery, FRAMES=600,
-#        WINDOWS="100:103 300:303 500:503", MORE: more options for every run). Needs jq.
+#        WINDOWS="100:103 300:303 500:503", MORE: more options for every run, WINDOW_MORE: for the
+#        windowed run only, e.g. "--detail-warmup 0"). Needs jq.
 set -euo pipefail
 ARPSIM=${ARPSIM:-build/apps/arpsim/arpsim}
 SCENE=${SCENE:-gallery} WALK=${WALK:-gallery} FRAMES=${FRAMES:-600}
@@ -23,7 +24,8 @@ one() {  # name, options... -> $tmp/NAME.json
     --report "$tmp/$name.json" > /dev/null
 }
 one detailed --fidelity detailed
-one windows "${detail[@]}"
+# shellcheck disable=SC2086
+one windows "${detail[@]}" ${WINDOW_MORE:-}
 one functional
 echo "| run | frames detailed | wall s | host s | pipeline s | pipeline time / detailed throughout's | every frame identical to detailed throughout |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
