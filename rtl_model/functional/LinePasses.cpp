@@ -15,6 +15,12 @@ namespace {
 constexpr int TS = DisplayMemoryBank::kTileShift;
 constexpr int TM = DisplayMemoryBank::kTile - 1;
 constexpr int TR = DisplayMemoryBank::kTileStride;  // words a stored tile row (texels + apron)
+
+// The tile of texel (x, y) of `face` in the flattened six-face table (EyeSources), and its word in the tile.
+[[gnu::always_inline]] inline int32_t tile_of(int32_t face, int32_t x, int32_t y, int tpr, int tpf) {
+  return face * tpf + (y >> TS) * tpr + (x >> TS);
+}
+[[gnu::always_inline]] inline int32_t word_of(int32_t x, int32_t y) { return (y & TM) * TR + (x & TM); }
 }  // namespace
 
 namespace {
@@ -94,8 +100,8 @@ void nearest_refs_impl(const int32_t* __restrict face, const int32_t* __restrict
                        int T, int tpr, int tpf, int32_t* __restrict tile, int32_t* __restrict word) {
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;  // the nearest texel: CubeAddress::x, y
-    tile[i] = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS);
-    word[i] = (ty & TM) * TR + (tx & TM);
+    tile[i] = tile_of(face[i], tx, ty, tpr, tpf);
+    word[i] = word_of(tx, ty);
   }
 }
 }  // namespace
@@ -262,8 +268,8 @@ void bilinear_taps_impl(const int32_t* __restrict face, const int32_t* __restric
     const BilinearTaps t = bilinear_taps_as<int32_t>(u[i], v[i], T, S);  // u, v are 32-bit: so is every step
     // All four taps lie in the tile of (x0, y0): x1 - x0 and y1 - y0 are 0 or
     // 1, and a stored tile's apron holds its right and bottom neighbours' edges.
-    tile[i] = face[i] * tpf + (t.y0 >> TS) * tpr + (t.x0 >> TS);
-    w0[i] = (t.y0 & TM) * TR + (t.x0 & TM);
+    tile[i] = tile_of(face[i], t.x0, t.y0, tpr, tpf);
+    w0[i] = word_of(t.x0, t.y0);
     dy[i] = (t.y1 - t.y0) * TR;
     // At a face's first or last column both horizontal taps are the same texel (x1 == x0). The loads then
     // take the pair's right-hand word from the apron, and the weight of x1 is made 0: per channel
@@ -472,7 +478,7 @@ template <bool Dense>
   const CompositionParams cp = cpref;
   for (int i = 0; i < n; ++i) {
     const int32_t tx = u[i] >> T, ty = v[i] >> T;
-    const int32_t tile = face[i] * tpf + (ty >> TS) * tpr + (tx >> TS), word = (ty & TM) * TR + (tx & TM);
+    const int32_t tile = tile_of(face[i], tx, ty, tpr, tpf), word = word_of(tx, ty);
     // Dense: the tiles in table order (EyeSources::dense), the place arithmetic; else through the table.
     const uint64_t w = Dense ? pool[int64_t{tile} * DisplayMemoryBank::kTileWords + word] : texel(pool, offset, tile, word);
     out[i] = compose(&w, 1, cp).color;
