@@ -15,10 +15,23 @@ namespace arp {
 
 namespace fs = std::filesystem;
 
+namespace {
+// Where a path that may not exist yet leads: absolute first (weakly_canonical resolves only the part that
+// exists, so "w.vcd" and "./w.vcd" came out as "w.vcd" and "/here/w.vcd", and two names of one new file were
+// taken for two files), then its links resolved; lexically normalised where the file system cannot say.
+fs::path where_leads(const std::string& p) {
+  std::error_code ec;
+  const fs::path abs = fs::absolute(p, ec);
+  if (ec) return fs::path(p).lexically_normal();
+  const fs::path c = fs::weakly_canonical(abs, ec);
+  return ec ? abs.lexically_normal() : c;
+}
+}  // namespace
+
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
-  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+  return where_leads(a) == where_leads(b);
 }
 
 namespace {

@@ -103,6 +103,9 @@ std::pair<double, double> parse_window(const std::string& opt, const std::string
 // The VCD's final path: ".vcd" added; a bare name goes into waveforms/ (made by build_outputs).
 std::string vcd_path(const std::string& arg) {
   fs::path p(arg);
+  // "W/", "W/." or "..": a folder, where the name below would make a hidden "W/.vcd".
+  if (const fs::path f = p.filename(); f.empty() || f == "." || f == "..")
+    throw InputError("--vcd", arg, "is a folder, not a file: name the waveform (W/run writes W/run.vcd)");
   if (!p.has_parent_path()) p = fs::path("waveforms") / p;
   if (p.extension() != ".vcd") p += ".vcd";
   return p.string();

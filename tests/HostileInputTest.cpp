@@ -361,6 +361,14 @@ TEST(HostileInput, SameFileIsTheSameInodeOrTheSamePath) {
   EXPECT_TRUE(arp::same_file(d.file("a"), d.path() + "/./a"));
   EXPECT_TRUE(arp::same_file(d.file("new"), d.path() + "/../" + fs::path(d.path()).filename().string() + "/new"));
   EXPECT_FALSE(arp::same_file(d.file("a"), d.file("b")));
+  // Two names of one file not made yet, relative to the working folder, one with a folder part: the second
+  // output would have replaced the first without a word.
+  const std::string here = fs::current_path().filename().string(), none = "arpsim-no-such-output.vcd";
+  ASSERT_FALSE(fs::exists(none));
+  EXPECT_TRUE(arp::same_file(none, "./" + none));
+  EXPECT_TRUE(arp::same_file("../" + here + "/" + none, none));
+  EXPECT_FALSE(arp::same_file(none, "./other-" + none));
+  EXPECT_THROW(arp::check_output_paths({{"--report", none}, {"--csv", "./" + none}}, {}), arp::InputError);
   EXPECT_THROW(arp::check_output_paths({{"--out", d.file("link")}}, {{"--in", d.file("a")}}), arp::InputError);
   EXPECT_NO_THROW(arp::check_output_paths({{"--out", d.file("b")}}, {{"--in", d.file("a")}}));
   EXPECT_EQ(d.entries(), 2u);  // the writability probe left nothing behind
