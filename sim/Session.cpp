@@ -241,6 +241,7 @@ Session::Session(RunSpec spec)
   check_spec(spec_, fidelity_);
   start_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame));
   end_ps_ = timing_.cycles_to_ps(timing_.frame_start_cycle(spec_.first_frame + spec_.frames));
+  timed_end_ps_ = timing_.cycles_to_ps(dp::PipelineSchedule(spec_.config).run_end_cycle(spec_.first_frame + spec_.frames));
   stalls_ = stall_windows();  // (a bad window was refused only after the memories were filled: 0.7 s)
   vcd_window_ = vcd_option_window();
   build_motion();
@@ -689,23 +690,26 @@ std::optional<std::pair<int64_t, int64_t>> Session::vcd_option_window() const {
   if (!o.vcd_lines.empty()) {
     const auto [l0, l1] = parse_window("--vcd-lines", o.vcd_lines);
     if (l0 < 0 || l0 != std::floor(l0) || l1 != std::floor(l1)) throw InputError("--vcd-lines", o.vcd_lines, "lines must be whole numbers >= 0");
-    // Within the run's scan lines, compared before any product is formed (a line beyond them traced nothing, or
-    // wrapped the cycle count).
+    // Within the scan lines the timed levels simulate, compared before any product is formed (a line beyond them
+    // traced nothing, or wrapped the cycle count). They end at the last frame's vertical blank: the lines of that
+    // blank were accepted and gave an empty waveform.
     const int64_t base = timing_.frame_start_cycle(spec_.first_frame), h = spec_.config.timing.h_total();
-    const int64_t lines = (timing_.frame_start_cycle(spec_.first_frame + spec_.frames) - base) / h;
+    const int64_t lines = (dp::PipelineSchedule(spec_.config).run_end_cycle(spec_.first_frame + spec_.frames) - base) / h;
     if (l1 > static_cast<double>(lines))
-      throw InputError("--vcd-lines", o.vcd_lines, "the run has " + std::to_string(lines) + " scan lines (--frames " +
-                                                       std::to_string(spec_.frames) + "): END must be at most that");
+      throw InputError("--vcd-lines", o.vcd_lines, "the run simulates " + std::to_string(lines) + " whole scan lines (--frames " +
+                                                       std::to_string(spec_.frames) +
+                                                       ", up to the last frame's vertical blank): END must be at most that");
     return std::pair{timing_.cycles_to_ps(base + static_cast<int64_t>(l0) * h), timing_.cycles_to_ps(base + static_cast<int64_t>(l1) * h)};
   }
   if (!o.vcd_time_us.empty()) {
     const auto [t0, t1] = parse_window("--vcd-time-us", o.vcd_time_us);
     // Within the run's simulated time, compared before rounding to picoseconds (a window past int64's
     // picoseconds wrapped, and was called shorter than one).
-    if (t0 < 0 || t1 * 1e6 > static_cast<double>(end_ps_) || t1 * 1e6 <= static_cast<double>(start_ps_))
+    if (t0 < 0 || t1 * 1e6 > static_cast<double>(timed_end_ps_) || t1 * 1e6 <= static_cast<double>(start_ps_))
       throw InputError("--vcd-time-us", o.vcd_time_us,
                        "the window must lie within the run's simulated time, " + printf_text("%.3f", static_cast<double>(start_ps_) * 1e-6) +
-                           " .. " + printf_text("%.3f", static_cast<double>(end_ps_) * 1e-6) + " us (--first-frame, --frames)");
+                           " .. " + printf_text("%.3f", static_cast<double>(timed_end_ps_) * 1e-6) +
+                           " us (--first-frame, --frames; up to the last frame's vertical blank)");
     const int64_t from_ps = static_cast<int64_t>(std::llround(t0 * 1e6)), to_ps = static_cast<int64_t>(std::llround(t1 * 1e6));
     if (to_ps <= from_ps)
       throw InputError("--vcd-time-us", o.vcd_time_us, "the window is shorter than the simulation's picosecond: nothing to trace");

@@ -88,7 +88,8 @@ class Session {
   bool auto_detail_ = false;                                   // --detail auto
   int64_t auto_fast_frames_ = 0, auto_stall_frames_ = 0;
   dp::VideoTiming timing_;
-  int64_t start_ps_ = 0, end_ps_ = 0;
+  int64_t start_ps_ = 0, end_ps_ = 0;  // the run's first frame's start, the start of the frame after its last
+  int64_t timed_end_ps_ = 0;            // where the timed levels stop: the last frame's vertical blank (swap)
   // The motion not yet in the stream: appends the poses through a time (and
   // one past it) and says whether it has given all it has.
   MorePoses more_poses_;

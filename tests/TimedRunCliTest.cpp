@@ -149,6 +149,28 @@ TEST(TimedRunCli, WaveformComesWithASaveFileAndTheCommittedViewIsCurrent) {
   EXPECT_EQ(files, 2u);
 }
 
+// A waveform window shows every pixel clock of its lines at both cycle levels, wherever it lies: the run's first
+// lines, active lines, the vertical blank (whose idle clocks gating skips in a run not traced). The cycle level
+// evaluated up to 4096 clocks ahead, and both levels' gating jumped over idle ones, before the waveform opened:
+// a window at the run's start, or in a blank, came out with its opening values and nothing after them.
+TEST(TimedRunCli, AWaveformWindowShowsEveryClockOfItsLines) {
+  TempDir d;
+  const int64_t h_total = 640 + 16 + 96 + 48;  // the default mode's clocks a line: active, porches and sync
+  for (const std::string level : {"cycle", "detailed"})
+    for (const std::string lines : {"0:4", "100:104", "490:494"}) {
+      const std::string w = d.file(level + "-" + lines.substr(0, lines.find(':')) + ".vcd");
+      const auto r = run_command(kArpsim + " run -q --frames 2 --every 0 --fidelity " + level + " --vcd " + w +
+                                 " --vcd-lines " + lines + " --vcd-signals control");
+      ASSERT_EQ(r.status, 0) << r.output;
+      // One timestamp a clock at the cycle level (its values change at the rising edge), two at the detailed
+      // level (its clock's falling edge too).
+      const std::string vcd = read_text(w);
+      int64_t stamps = 0;
+      for (size_t at = vcd.find("$enddefinitions"); (at = vcd.find("\n#", at + 1)) != std::string::npos;) ++stamps;
+      EXPECT_EQ(stamps, (level == "cycle" ? 1 : 2) * 4 * h_total) << level << ", lines " << lines;
+    }
+}
+
 TEST(TimedRunCli, BadTimedInputIsRefusedBeforeSimulating) {
   TempDir d;
   const std::string base = kArpsim + " run -q --frames 1 --every 0" + kSmall;

@@ -44,6 +44,9 @@ class PipelineSchedule {
   int64_t orientation_lead() const { return stage_to_scanout(Stage::Rotate) + latch_extra_; }
   // Cycle of the first vertical-blank line after frame `frame`'s last active line (the buffer swap).
   int64_t swap_cycle(int64_t frame) const { return timing_.frame_start_cycle(frame) + swap_offset_; }
+  // The cycle after the last a timed run of frames [.., end_frame) simulates: the last frame's swap (the rest
+  // of its vertical blank is not run).
+  int64_t run_end_cycle(int64_t end_frame) const { return swap_cycle(end_frame - 1) + 1; }
   // Cycles from the swap to the next frame's first active pixel.
   int64_t vblank_cycles() const { return timing_.frame_cycles() - swap_offset_; }
 

@@ -29,7 +29,7 @@ class VideoTimingStage {
   int64_t issue_lead() const { return lead_; }
   // First and last cycle a run needs: the first issue, and the last frame's swap.
   int64_t first_cycle() const { return scan_.timing().frame_start_cycle(scan_.first_frame()) - lead_; }
-  int64_t end_cycle() const { return sched_.swap_cycle(scan_.end_frame() - 1) + 1; }
+  int64_t end_cycle() const { return sched_.run_end_cycle(scan_.end_frame()); }
 
   template <class OutFifo>
   void tick(int64_t cycle, OutFifo& out) {

@@ -69,7 +69,12 @@ class DetailedPipeline : public sc_core::sc_module {
     // (most of the blanking): those clocks would change nothing.
     if (clock_gating) {
       host_clock.gate([&banks](int64_t n) { return banks.host_port().next_active_cycle(n); });
-      pixel_clock.gate([this](int64_t n) { return tracing_ || !idle() ? n : timing().stage().next_busy_cycle(n, w_.end_cycle); });
+      // Nor past the cycle a waveform opens before (trace_from): the window's idle clocks would be lost.
+      pixel_clock.gate([this](int64_t n) {
+        if (tracing_ || !idle()) return n;
+        const int64_t busy = timing().stage().next_busy_cycle(n, w_.end_cycle);
+        return n <= trace_cycle_ ? std::min(busy, trace_cycle_) : busy;
+      });
     }
     chain_.bind_clock(pixel_clock);
     banks.host_clk(host_clock);
@@ -99,6 +104,12 @@ class DetailedPipeline : public sc_core::sc_module {
       if constexpr (std::is_same_v<std::decay_t<decltype(m)>, VideoTimingGenerator>) tracker.trace(tf);
     });
     chain_.for_each_fifo([&](const auto& f) { sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"); });
+  }
+  // Before the simulation starts, for a waveform that opens later, at absolute time abs_ps: clock gating does
+  // not skip past the cycle that starts there (whose edge runs just before the waveform opens, and whose
+  // falling edge is in it), so the window shows its idle clocks as it shows any others.
+  void trace_from(int64_t abs_ps) {
+    trace_cycle_ = abs_ps == INT64_MAX ? INT64_MAX : dp::clock_cycle_at_or_after(abs_ps, chain_.context().config().timing.pixel_clock_hz);
   }
   void stop_tracing() {
     tracing_ = false;
@@ -142,6 +153,7 @@ class DetailedPipeline : public sc_core::sc_module {
   StageChain<List> chain_;
   RunWindow w_;
   bool tracing_ = false;
+  int64_t trace_cycle_ = INT64_MAX;  // the first pixel cycle after the waveform opens (trace_from)
   ClockGenerator pixel_clock, host_clock;
   TrackerInterface tracker;
 };

@@ -74,15 +74,17 @@ void FastCycleModel::pixel_domain() {
   int64_t stop = w_.end_cycle;
   for (int64_t g = f - 1; g <= f + 2; ++g)
     if (sched.swap_cycle(g) > cycle_) stop = std::min(stop, sched.swap_cycle(g));
+  // Nor past the cycle a waveform opens before (trace_from): it would start after cycles it should show.
+  const int64_t hold = !tracing_ && trace_cycle_ > cycle_ ? trace_cycle_ : w_.end_cycle;
   if (tracing_) stop = cycle_ + 1;
-  else stop = std::min(stop, cycle_ + kBatch);
+  else stop = std::min({stop, cycle_ + kBatch, hold});
   int64_t c = cycle_;
   while (c < stop) {
     evaluate(c++);
     if (gating_ && !tracing_ && c < stop && idle()) c = std::min(stop, timing().next_busy_cycle(c, w_.end_cycle));
   }
   cycle_ = c;
-  if (gating_ && !tracing_ && idle()) cycle_ = timing().next_busy_cycle(cycle_, w_.end_cycle);
+  if (gating_ && !tracing_ && idle()) cycle_ = std::min(hold, timing().next_busy_cycle(cycle_, w_.end_cycle));
   if (cycle_ < w_.end_cycle) next_trigger(sim_time(dp::clock_cycle_to_ps(cycle_, pixel_hz_), w_.base_ps) - now);
 }
 
@@ -115,6 +117,12 @@ void FastCycleModel::trace(sc_trace_file* tf, bool data) {
       stages_);
   sc_trace(tf, host_.busy, n + ".display_memory_banks.host_busy");
   std::apply([&](const auto&... f) { (sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"), ...); }, fifos_);
+}
+
+void FastCycleModel::trace_from(int64_t abs_ps) {
+  // The first cycle strictly after it: the kernel runs the activations at the window's own instant before the
+  // waveform opens (sc_start runs to and including its end time), as it runs the detailed level's edges there.
+  trace_cycle_ = abs_ps == INT64_MAX ? INT64_MAX : dp::clock_cycle_at_or_after(abs_ps + 1, pixel_hz_);
 }
 
 void FastCycleModel::stop_tracing() {

@@ -35,6 +35,10 @@ class FastCycleModel : public sc_core::sc_module {
   const RunWindow& window() const { return w_; }
   void trace(sc_core::sc_trace_file* tf, bool data = true);
   void stop_tracing();
+  // Before the simulation starts, for a waveform that opens later, at absolute time abs_ps: the evaluation
+  // does not run ahead past it (neither a batch nor a jump over idle cycles), so the first cycle after it is
+  // evaluated with the waveform open, as the detailed level's clock edges are.
+  void trace_from(int64_t abs_ps);
   const TrackerInterface& tracker_interface() const { return tracker; }
   std::vector<std::pair<std::string, stage::FifoStats>> fifo_stats(int64_t end_cycle) const;
   std::array<stage::StageStats, dp::kStageCount> stage_stats() const;
@@ -74,6 +78,7 @@ class FastCycleModel : public sc_core::sc_module {
   TrackerInterface tracker;
   std::unique_ptr<FrameSpeculation> spec_;
   int64_t cycle_, host_cycle_;
+  int64_t trace_cycle_ = INT64_MAX;  // the first pixel cycle after the waveform opens (trace_from)
   int64_t evaluated_ = 0, host_evaluated_ = 0;
   bool tracing_ = false, started_ = false, host_started_ = false;
   bool gating_ = true;

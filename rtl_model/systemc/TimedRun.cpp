@@ -202,6 +202,10 @@ TimedResult run_timed(const stage::TimedInputs& in, const TimedRunOptions& opt) 
   if (!opt.vcd.path.empty()) {
     from = std::max<int64_t>(0, std::min(span, opt.vcd.from_ps == INT64_MIN ? 0 : opt.vcd.from_ps - w.base_ps));
     to = std::max(from, std::min(span + 1, opt.vcd.to_ps == INT64_MAX ? span + 1 : opt.vcd.to_ps - w.base_ps));
+    if (from > 0) {  // the models must not run ahead past the window's start before it opens
+      if (fast) fast->trace_from(w.base_ps + from);
+      if (rtl) rtl->trace_from(w.base_ps + from);
+    }
   }
   sc_trace_file* tf = nullptr;
   const sc_time vcd_unit(1, SC_PS);
