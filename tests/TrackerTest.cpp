@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -271,6 +272,19 @@ TEST(SyntheticMotion, ConstantRotationAtExtremeRates) {
   const auto still = constant_rotation(glm::dvec3(1, 0, 0), 0.0, s);
   for (const auto& p : still) ASSERT_DOUBLE_EQ(p.orientation.w, 1.0);
   EXPECT_THROW(constant_rotation(glm::dvec3(0, 0, 0), 10.0, s), std::invalid_argument);
+  // An axis is a direction however it is scaled: components whose squares overflow (the length was infinite and
+  // the normalised axis zero: a still head, exit 0) or underflow turn the head as the unit axis does.
+  for (const glm::dvec3 axis : {glm::dvec3(1e200, 0, 0), glm::dvec3(1e308, 1e308, 0), glm::dvec3(1e-320, 0, 0)}) {
+    const glm::dvec3 unit = axis.y != 0 ? glm::normalize(glm::dvec3(1, 1, 0)) : glm::dvec3(1, 0, 0);
+    const auto scaled = constant_rotation(axis, 1000.0, s), plain = constant_rotation(unit, 1000.0, s);
+    ASSERT_EQ(scaled.size(), plain.size());
+    for (size_t i = 0; i < plain.size(); ++i)
+      ASSERT_NEAR(glm::dot(scaled[i].orientation, plain[i].orientation), 1.0, 1e-12) << axis.x << " sample " << i;
+  }
+  EXPECT_EQ(parse_axis("1e200,0,0"), glm::dvec3(1e200, 0, 0));
+  EXPECT_THROW(parse_axis("1e400,0,0"), arp::InputError);
+  EXPECT_THROW(parse_axis("0,0,0"), arp::InputError);
+  EXPECT_THROW(constant_rotation(glm::dvec3(1e308, 0, std::numeric_limits<double>::infinity()), 10.0, s), std::invalid_argument);
   s.rate_hz = 0.0;
   EXPECT_THROW(constant_rotation(glm::dvec3(0, 1, 0), 10.0, s), std::invalid_argument);
 }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include "common/Units.hpp"
@@ -17,8 +18,11 @@ MotionGenerator::MotionGenerator(const glm::dvec3& axis, AngleFn angle, const Sa
     : angle_(std::move(angle)), s_(s), rng_(s.seed) {
   if (!(s.rate_hz > 0.0) || !std::isfinite(s.rate_hz)) throw std::invalid_argument("sample rate must be positive");
   if (!(s.duration_s >= 0.0) || !std::isfinite(s.duration_s)) throw std::invalid_argument("duration must be >= 0");
-  if (!(glm::length(axis) > 0.0)) throw std::invalid_argument("rotation axis must be non-zero");
-  axis_ = glm::normalize(axis);
+  // Only the direction matters: scaled by its largest component first, so that neither 1e200 (whose length
+  // overflowed to infinity, and the axis normalised to zero: a still head) nor 1e-320 is lost.
+  const double big = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
+  if (!(big > 0.0) || !std::isfinite(big)) throw std::invalid_argument("rotation axis must be finite and non-zero");
+  axis_ = glm::normalize(axis / big);
   count_ = static_cast<int64_t>(std::floor(s.duration_s * s.rate_hz + 1e-9)) + 1;
 }
 
@@ -101,7 +105,7 @@ glm::dvec3 parse_axis(const std::string& s) {
   char c1 = 0, c2 = 0;
   if (!(ss >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !ss.eof())
     throw InputError("--axis", "", "expected three comma-separated numbers x,y,z");
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || glm::length(v) == 0.0)
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || (v.x == 0.0 && v.y == 0.0 && v.z == 0.0))
     throw InputError("--axis", "", "the rotation axis must be finite and non-zero");
   return v;
 }
