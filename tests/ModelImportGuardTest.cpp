@@ -82,6 +82,31 @@ TEST(ModelImportGuard, AHungImporterIsStoppedAtItsDeadline) {
   EXPECT_GE(took, 2.0);  // stopped at the deadline, not before (an upper bound would test the machine's speed)
 }
 
+// The limits from the environment are read strictly and named: "inf" or 1e300 seconds overflowed the deadline
+// and blamed a valid model ("took longer than -2147483648 s"), "-1" MiB wrapped to a limit of none.
+TEST(ModelImportGuard, LimitsFromTheEnvironmentAreCheckedAndNamed) {
+  const auto with = [](const char* name, const char* value) {
+    setenv(name, value, 1);
+    std::string what;
+    try {
+      const host::ImportLimits l = host::ImportLimits::from_environment();
+      what = "seconds " + std::to_string(l.seconds) + " bytes " + std::to_string(l.max_bytes);
+    } catch (const arp::InputError& e) {
+      what = e.what();
+    }
+    unsetenv(name);
+    return what;
+  };
+  for (const char* bad : {"inf", "1e300", "nan", "0", "-5", "60s", "0.0001"})
+    EXPECT_NE(with("ARPSIM_IMPORT_SECONDS", bad).find("ARPSIM_IMPORT_SECONDS: " + std::string(bad) + ": must be a number of seconds"),
+              std::string::npos) << bad;
+  for (const char* bad : {"-1", "0", "1.5", "18446744073709551615", "16777217"})
+    EXPECT_NE(with("ARPSIM_IMPORT_MAX_MB", bad).find("ARPSIM_IMPORT_MAX_MB: " + std::string(bad) + ": must be a whole number"),
+              std::string::npos) << bad;
+  EXPECT_EQ(with("ARPSIM_IMPORT_SECONDS", "2.5"), "seconds 2.500000 bytes " + std::to_string(3ull << 30));
+  EXPECT_EQ(with("ARPSIM_IMPORT_MAX_MB", "16777216"), "seconds 60.000000 bytes " + std::to_string(1ull << 44));
+}
+
 TEST(ModelImportGuard, AnImporterThatGrowsPastTheMemoryLimitIsStopped) {
   TempDir d;
   FakeImporter fake("hog");

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -20,6 +21,8 @@
 #include "ModelPrecheck.hpp"
 #include "common/CompanionFile.hpp"
 #include "common/InputError.hpp"
+#include "common/PrintfText.hpp"
+#include "common/WholeNumber.hpp"
 
 extern char** environ;
 
@@ -85,13 +88,24 @@ Drained drain(int fd, std::string& out, size_t keep = SIZE_MAX) {
 
 ImportLimits ImportLimits::from_environment() {
   ImportLimits l;
-  try {
-    l.seconds = std::stod(env_or("ARPSIM_IMPORT_SECONDS", std::to_string(l.seconds)));
-    l.max_bytes = std::stoull(env_or("ARPSIM_IMPORT_MAX_MB", std::to_string(l.max_bytes >> 20))) << 20;
-  } catch (const std::exception&) {
-    throw InputError("ARPSIM_IMPORT_SECONDS / ARPSIM_IMPORT_MAX_MB", "", "must be numbers");
+  // Each read strictly and named: "inf" or 1e300 seconds overflowed the deadline (and the message said
+  // "longer than -2147483648 s"), "-1" MiB wrapped; an empty value is the default.
+  const std::string seconds = env_or("ARPSIM_IMPORT_SECONDS", ""), mb = env_or("ARPSIM_IMPORT_MAX_MB", "");
+  if (!seconds.empty()) {
+    double v = 0;
+    const auto [end, ec] = std::from_chars(seconds.data(), seconds.data() + seconds.size(), v);
+    if (ec != std::errc() || end != seconds.data() + seconds.size() || !(v >= 0.001 && v <= 1e6))
+      throw InputError("ARPSIM_IMPORT_SECONDS", seconds,
+                       "must be a number of seconds from 0.001 to 1e6 (the model importer's time limit; default 60)");
+    l.seconds = v;
   }
-  if (!(l.seconds > 0) || l.max_bytes == 0) throw InputError("ARPSIM_IMPORT_SECONDS / ARPSIM_IMPORT_MAX_MB", "", "must be positive");
+  if (!mb.empty()) {
+    const auto v = whole_number(mb);
+    if (!v || *v < 1 || *v > (int64_t{1} << 24))
+      throw InputError("ARPSIM_IMPORT_MAX_MB", mb,
+                       "must be a whole number of MiB from 1 to 16777216 (the model importer's memory limit; default 3072)");
+    l.max_bytes = static_cast<uint64_t>(*v) << 20;
+  }
   return l;
 }
 
@@ -131,7 +145,7 @@ Mesh import_model(const std::string& path, const ImportLimits& limits) {
     // Its output lands in this process: bounded like its memory.
     if (killed.empty() && mesh_bytes.size() > limits.max_bytes)
       killed = "wrote more than " + std::to_string(limits.max_bytes >> 20) + " MB";
-    if (killed.empty() && Clock::now() > deadline) killed = "took longer than " + std::to_string(static_cast<int>(limits.seconds)) + " s";
+    if (killed.empty() && Clock::now() > deadline) killed = "took longer than " + printf_text("%g", limits.seconds) + " s";
     if (!killed.empty()) ::kill(pid, SIGKILL);
     if (::waitpid(pid, &status, WNOHANG) == pid) break;
   }
