@@ -25,6 +25,10 @@ std::string position(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(col);
 }
 
+// A \u0000 escape decodes to a NUL character, at which every file name and C string ends: "x.obj\u0000y" loaded
+// x.obj and "scan\u0000line" was quoted as "scan".
+constexpr const char* kNulInString = "a string holding \\u0000 (a NUL character), which no name or setting can hold";
+
 }  // namespace
 
 std::string brief(const json& v) {
@@ -64,6 +68,11 @@ json parse_strict_json(const std::string& text, const std::string& source) {
         const std::string k = parsed.get<std::string>();
         path.resize(keys.size());
         path.back() = k;
+        if (k.find('\0') != std::string::npos) {
+          problem_place = where();
+          problem = kNulInString;
+          throw std::out_of_range(problem);
+        }
         if (!keys.back().insert(k).second) {
           problem_place = where();
           problem = "key given twice in the same object";
@@ -71,6 +80,13 @@ json parse_strict_json(const std::string& text, const std::string& source) {
         }
         break;
       }
+      case json::parse_event_t::value:
+        if (parsed.is_string() && parsed.get_ref<const std::string&>().find('\0') != std::string::npos) {
+          problem_place = where();
+          problem = kNulInString;
+          throw std::out_of_range(problem);
+        }
+        break;
       default: break;
     }
     return true;
