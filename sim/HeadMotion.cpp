@@ -59,7 +59,7 @@ int64_t motion_hash(const host::WalkPath& walk, const HeadMotion& head) {
   // written longer ("0,2,0") or reversed with its size ("0,-1,0" at -30 deg/s) turns the head as "0,1,0" at 30 does,
   // sample for sample. (+ 0.0: a zero component's sign, which the product can flip, is not the motion's.)
   const double size = m.motion == "rotate" ? m.rate : m.motion == "shake" ? m.peak : m.amplitude;
-  const glm::dvec3 turn = glm::normalize(tracker::parse_axis(m.axis)) * size;
+  const glm::dvec3 turn = tracker::unit_axis(tracker::parse_axis(m.axis)) * size;
   h.add(m.motion).add(turn.x + 0.0).add(turn.y + 0.0).add(turn.z + 0.0).add(m.hz).add(m.noise);
   if (m.noise > 0) h.add(m.seed);
   if (m.motion == "shake") h.add(m.frequency);

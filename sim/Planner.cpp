@@ -810,6 +810,15 @@ Plan make_plan(const PlanRequest& r) {
     head_motion.trace_poses =
         std::make_shared<const std::vector<tracker::PoseSample>>(read_planned_trace(head_motion.trace, walk_span_s(walk)));
   const MotionSamples ms = sample_motion(walk, head_motion, timing, ipd_m);
+  // A trace that begins after the motion does: its first sample stands for the head before it, as in a run
+  // (sim::Session says the same) -- said, not refused; with no sample within the walk, the head never turns.
+  if (head_motion.trace_poses && !head_motion.trace_poses->empty() && head_motion.trace_poses->front().time_ps > 0) {
+    const double first_s = ps_to_seconds(head_motion.trace_poses->front().time_ps);
+    p.warnings.push_back("the trace " + head_motion.trace + " starts at " + printf_text("%.6f", first_s) +
+                         " s, after the motion's start at 0 s: the head before it holds its first sample" +
+                         (first_s > ms.span_s ? ", through the whole " + printf_text("%.6g", ms.span_s) + " s planned over (no sample falls within it)"
+                                              : std::string()));
+  }
   // The face size's limits are the options' too (the display, the lens): checked before the scene as well.
   const auto [amin, acentre] = pixel_angles(r.base);
   auto face_for = [](double pixel_rad) {
@@ -1534,6 +1543,7 @@ std::string plan_markdown(const Plan& p, const PlanRequest& r) {
        ", " + printf_text("%.1f", p.motion_s) + " s, " + std::to_string(p.samples) + " points evaluated (plan.motion_hash " +
        std::to_string(p.config.plan.motion_hash) + "), the eyes " + printf_text("%g", 1000 * r.memories.checked_ipd_m()) +
        " mm apart (--ipd; plan.ipd_m: a run with another warns). Started from " + r.base_source + ".\n\n";
+  for (const std::string& w : p.warnings) s += "**Warning**: " + w + ".\n\n";
   s += "| keys | value | reason |\n| --- | --- | --- |\n";
   for (const PlanChoice& c : p.choices) s += "| " + c.keys + " | " + c.value + " | " + c.reason + " |\n";
   s += "\n## Figures\n\n| | " + r.base_source + " | plan |\n| --- | --- | --- |\n";

@@ -166,6 +166,7 @@ struct Plan {
   dp::ArpConfig config;
   std::vector<PlanChoice> choices;
   std::vector<std::string> not_decided;  // what a plan should decide and this one does not (yet)
+  std::vector<std::string> warnings;     // what the user should know about the inputs (a trace that starts late)
   std::string scene_name;
   int64_t scene_hash = 0;
   size_t objects = 0, triangles = 0;

@@ -207,6 +207,20 @@ TEST(HostileInput, ATraceStartingAfterTheRunIsSaid) {
   const auto e = run_command(kArpsim + " run -q --frames 2 --every 0 --trace " + d.file("early.csv"));
   EXPECT_EQ(e.status, 0) << e.output;
   EXPECT_EQ(e.output.find("the trace starts at"), std::string::npos) << e.output;
+  // A plan says it too, once on the terminal and in its account; with no sample within the walk, that the head
+  // never turned (a plan over a trace of another session's times was made without a word).
+  const std::string plan = kArpsim + " plan -q --scene " + ARPSIM_SOURCE_DIR + "/scenes/sparse-room.json --walk " +
+                           ARPSIM_SOURCE_DIR + "/scenes/sparse-room-walk.json --keep-widths --fill-points 2 -o " + d.file("p.json") + " --trace ";
+  std::ofstream(d.file("later.csv")) << "time_s,qw,qx,qy,qz\n1000,1,0,0,0\n1000.01,1,0,0,0\n";
+  const auto p = run_command(plan + d.file("later.csv"));
+  EXPECT_EQ(p.status, 0) << p.output;
+  EXPECT_NE(p.output.find("arpsim plan: warning: the trace " + d.file("later.csv") + " starts at 1000.000000 s, after the motion's "
+                          "start at 0 s: the head before it holds its first sample, through the whole 9.6 s planned over"),
+            std::string::npos) << p.output;
+  EXPECT_NE(read_text(d.file("p.md")).find("**Warning**: the trace"), std::string::npos);
+  const auto f = run_command(plan + d.file("early.csv"));
+  EXPECT_EQ(f.status, 0) << f.output;
+  EXPECT_EQ(f.output.find("the trace " + d.file("early.csv") + " starts at"), std::string::npos) << f.output;
 }
 
 // A file a model names (an OBJ's material library) that is a FIFO or a device is refused at once, named: assimp

@@ -1029,8 +1029,10 @@ TEST(PlanCli, ThePlanKnowsItsHeadMotion) {
   EXPECT_NE(hash, config::load_file(d.file("walk-only.json")).plan.motion_hash);
   const std::string run = kArpsim + " run -q --frames 1 --every 0 --scene " + d.file("far.json") + " --walk " + d.file("walk.json");
   const std::string warn = " was planned for another motion";
+  // (0,1e200,0: the axis's length overflows, and normalised it had hashed as no axis at all.)
   for (const std::string& same : {std::string(" --motion rotate --rate 30"), std::string(" --motion rotate --rate 30 --axis 0,2,0"),
-                                   std::string(" --motion rotate --rate -30 --axis 0,-1,0")}) {
+                                   std::string(" --motion rotate --rate -30 --axis 0,-1,0"),
+                                   std::string(" --motion rotate --rate 30 --axis 0,1e200,0")}) {
     const auto o = run_command(run + " --config " + d.file("turning.json") + same);
     ASSERT_EQ(o.status, 0) << same << "\n" << o.output;
     EXPECT_EQ(o.output.find(warn), std::string::npos) << same << "\n" << o.output;

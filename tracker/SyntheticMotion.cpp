@@ -18,11 +18,7 @@ MotionGenerator::MotionGenerator(const glm::dvec3& axis, AngleFn angle, const Sa
     : angle_(std::move(angle)), s_(s), rng_(s.seed) {
   if (!(s.rate_hz > 0.0) || !std::isfinite(s.rate_hz)) throw std::invalid_argument("sample rate must be positive");
   if (!(s.duration_s >= 0.0) || !std::isfinite(s.duration_s)) throw std::invalid_argument("duration must be >= 0");
-  // Only the direction matters: scaled by its largest component first, so that neither 1e200 (whose length
-  // overflowed to infinity, and the axis normalised to zero: a still head) nor 1e-320 is lost.
-  const double big = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
-  if (!(big > 0.0) || !std::isfinite(big)) throw std::invalid_argument("rotation axis must be finite and non-zero");
-  axis_ = glm::normalize(axis / big);
+  axis_ = unit_axis(axis);
   count_ = static_cast<int64_t>(std::floor(s.duration_s * s.rate_hz + 1e-9)) + 1;
 }
 
@@ -97,6 +93,14 @@ std::vector<PoseSample> head_shake(const glm::dvec3& axis, double peak_deg_per_s
 
 std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, double period_s, const SamplingSpec& s) {
   return generate(axis, pendulum_angle(amplitude_deg, period_s), s);
+}
+
+glm::dvec3 unit_axis(const glm::dvec3& axis) {
+  // Scaled by its largest component first, so that neither 1e200 (whose length overflowed to infinity, and the
+  // axis normalised to zero: a still head) nor 1e-320 (whose length underflowed) is lost.
+  const double big = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
+  if (!(big > 0.0) || !std::isfinite(big)) throw std::invalid_argument("rotation axis must be finite and non-zero");
+  return glm::normalize(axis / big);
 }
 
 glm::dvec3 parse_axis(const std::string& s) {

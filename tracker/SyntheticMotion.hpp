@@ -63,6 +63,9 @@ std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, d
 // say): which motion, its parameters, and the sampling.
 // "x,y,z" (--axis) as a vector; InputError naming --axis unless three finite numbers, not all zero.
 glm::dvec3 parse_axis(const std::string& s);
+// The unit vector along a finite, non-zero axis however it is scaled (1e200,0,0 is 1,0,0: its length overflows,
+// and glm::normalize gives zero); std::invalid_argument otherwise.
+glm::dvec3 unit_axis(const glm::dvec3& axis);
 
 struct MotionSpec {
   std::string motion;        // rotate, shake, pendulum; empty: none

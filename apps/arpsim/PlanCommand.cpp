@@ -43,6 +43,7 @@ int run_plan(PlanArgs& a) {
   r.progress = [&](int step, int steps, double f, const std::string& w) { progress.update_step(step, steps, f, w); };
   const sim::Plan p = sim::make_plan(r);
   progress.update(1.0, "planned");
+  for (const std::string& w : p.warnings) std::fprintf(stderr, "arpsim plan: warning: %s\n", w.c_str());
   const std::string text = sim::plan_markdown(p, r);
   // The three together or none: a failure leaves no new plan beside an old picture, nor a picture of no plan.
   OutputGroup outputs;
