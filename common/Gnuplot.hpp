@@ -9,8 +9,11 @@
 namespace arp {
 
 // Writes `script` (atomically) and runs gnuplot on it in its folder, its
-// warnings going to SCRIPT.log. Returns a note for the user when gnuplot is
-// missing or fails (empty when the plot was made).
+// warnings going to SCRIPT.log. The picture it names (its one `set output`)
+// is drawn to a temporary file, checked whole and renamed into place:
+// InputError naming the picture when it was cut short (a full disk). Returns
+// a note for the user when gnuplot is missing or fails (empty when the plot
+// was made).
 std::string run_gnuplot(const std::filesystem::path& script, const std::string& text);
 
 // "'FILE' using 1:C with STYLE lw 2 title 'NAME', ..." for columns first_col, first_col+1, ... (CSV with a header).

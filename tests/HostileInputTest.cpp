@@ -367,6 +367,23 @@ TEST(HostileInput, AWriteThatFailsLeavesNothingAndSaysWhy) {
   EXPECT_EQ(fs::file_size(d.file("real.json")), 2u);
 }
 
+// A plot gnuplot cannot write whole (a file-size limit) is an error naming the picture, not a cut PNG behind
+// "wrote ...": gnuplot writes in place and says nothing of a short write (common/Gnuplot: the picture is drawn to
+// a temporary file, checked to end with its IEND chunk, then renamed into place).
+TEST(HostileInput, APlotCutShortIsAnErrorAndLeavesNoPicture) {
+  TempDir d;
+  const auto r = run_command("cd " + d.path() + " && trap '' XFSZ && ulimit -f 16 && timeout 120 " + kArpsim +
+                             " latency -q --frames 5 --no-sweeps --no-apparatus --out-dir o");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("o/error-over-time.png: writing the plot failed: gnuplot's picture was cut short"), std::string::npos)
+      << r.output;
+  EXPECT_TRUE(fs::exists(d.file("o/error-over-time.gp")));  // the script is whole, for the user to run again
+  for (const auto& e : fs::directory_iterator(d.file("o"))) {
+    EXPECT_NE(e.path().extension(), ".png") << e.path();
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+  }
+}
+
 TEST(HostileInput, SameFileIsTheSameInodeOrTheSamePath) {
   TempDir d;
   std::ofstream(d.file("a")) << "a";
