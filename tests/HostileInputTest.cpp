@@ -384,6 +384,18 @@ TEST(HostileInput, APlotCutShortIsAnErrorAndLeavesNoPicture) {
   }
 }
 
+// The file-size limit's signal left at its default, as a plain `ulimit -f` leaves it: the write fails as with the
+// signal ignored (arpsim ignores it), where the signal killed the run (status 153) with its temporary files left.
+TEST(HostileInput, AFileSizeLimitWithItsSignalAtTheDefaultLeavesNothing) {
+  TempDir d;
+  const auto r = run_command("cd " + d.path() + " && trap - XFSZ && ulimit -f 2 && timeout 120 " + kArpsim +
+                             " run -q --frames 2 --every 0 --photon-times --out-dir o --report r.json --csv c.csv");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+  for (const auto& e : fs::recursive_directory_iterator(d.path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
 TEST(HostileInput, SameFileIsTheSameInodeOrTheSamePath) {
   TempDir d;
   std::ofstream(d.file("a")) << "a";

@@ -3,6 +3,7 @@
 #include <systemc>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -71,5 +72,8 @@ int sc_main(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // keep stdout to arpsim's own output
+  // A write past the file-size limit (`ulimit -f`) then fails with EFBIG, which every writer reports naming its
+  // file and cleans up after; the signal's default action killed the run and left its temporary files behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   return sc_core::sc_elab_and_sim(argc, argv);
 }
