@@ -24,6 +24,11 @@ bool integer_of(const json& v, int64_t& out, std::string& why) {
     out = v.get<int64_t>();
     return true;
   }
+  // Digits beyond uint64 reach here as a real number: its size, not its spelling, is the fault.
+  if (v.is_number_float() && std::abs(v.get<double>()) >= 9.2e18) {
+    why = "is " + brief(v) + ", beyond any integer setting";
+    return false;
+  }
   why = "must be an integer, got " + brief(v);
   // A whole number written with an exponent or a point (1e11, 4.0) is read as a real number: say how to write it.
   if (v.is_number_float() && std::isfinite(v.get<double>()) && std::floor(v.get<double>()) == v.get<double>() &&

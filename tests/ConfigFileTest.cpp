@@ -94,6 +94,11 @@ TEST(ConfigFile, StrictReadingRefusesRepeatsOverflowsAndDeepNesting) {
   EXPECT_NE(e.reason().find("deeper"), std::string::npos) << e.what();
   e = file_error(R"({"memory": {"face_size": 18446744073709551615}})");
   EXPECT_NE(e.reason().find("18446744073709551615"), std::string::npos) << e.what();
+  // One past uint64 is read as a real number: still too large, not "must be an integer".
+  e = file_error(R"({"memory": {"face_size": 18446744073709551616}})");
+  EXPECT_NE(e.reason().find("beyond any integer setting"), std::string::npos) << e.what();
+  e = file_error(R"({"memory": {"face_size": -1e19}})");
+  EXPECT_NE(e.reason().find("beyond any integer setting"), std::string::npos) << e.what();
   e = file_error(R"({"memory": {"background": [4294967296, 0, 0]}})");
   EXPECT_EQ(e.place(), "memory.background");
   EXPECT_NE(e.reason().find("element 0"), std::string::npos) << e.what();
