@@ -163,10 +163,20 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
       mesh = std::make_shared<Mesh>(make_sphere(o.number("sphere", 0.5, 1e-4, 1e5), segments));
     } else {
       std::string file = o.text("model", "");
+      if (file.empty()) o.fail("model", "is empty: name the model file (relative to the scene's folder)");
       if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
       auto it = models.find(file);
       shared = it != models.end();
-      if (!shared) it = models.emplace(file, std::make_shared<Mesh>(import_model(file))).first;
+      if (!shared) {
+        // The model's own error (its file, its place, why) after the scene's place that names it.
+        std::shared_ptr<Mesh> m;
+        try {
+          m = std::make_shared<Mesh>(import_model(file));
+        } catch (const InputError& e) {
+          o.fail("model", e.what());
+        }
+        it = models.emplace(file, std::move(m)).first;
+      }
       mesh = it->second;
     }
     if (mesh->indices.empty()) o.fail("", "the object has no triangles");
@@ -184,13 +194,23 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
       o.fail("", "with this object the scene's meshes and the renderer's copies of them take " +
                      printf_text("%.1f", static_cast<double>(mesh_bytes) / 1e9) + " GB, more than half of the " +
                      printf_text("%.1f", static_cast<double>(available) / 1e9) + " GB this process has available; fewer objects or segments");
+    const bool textured = o.has("texture");
     const std::string texture = o.text("texture", "");
-    if (!texture.empty()) {
+    if (textured && texture.empty()) o.fail("texture", "is empty: name the image file, or leave the key out for no texture");
+    if (textured) {
       if (mesh->uvs.empty()) o.fail("texture", "this shape has no texture coordinates (quads, boxes and models with them do)");
       std::string file = texture;
       if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
       auto it = textures.find(file);
-      if (it == textures.end()) it = textures.emplace(file, std::make_shared<RgbImage>(read_rgb8(file))).first;
+      if (it == textures.end()) {
+        std::shared_ptr<RgbImage> img;
+        try {
+          img = std::make_shared<RgbImage>(read_rgb8(file));
+        } catch (const InputError& e) {
+          o.fail("texture", e.what());
+        }
+        it = textures.emplace(file, std::move(img)).first;
+      }
       mat.texture = it->second;
     }
     SceneObject& so = add_object(s, o.name("object " + std::to_string(i)), mesh,
