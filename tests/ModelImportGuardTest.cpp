@@ -61,12 +61,18 @@ TEST(ModelImportGuard, HeaderCountsBeyondTheFileAreRefusedBeforeImport) {
             "byteLength"},
            {"badtype.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n0\n", "quad"},
            // Found by the fuzzer: "end_header" inside another line; assimp's reader hangs on it.
-           {"inside.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelend_headerted\n0\n1\n2\n", "no end_header line"}}) {
+           {"inside.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nelend_headerted\n0\n1\n2\n", "no end_header line"},
+           // An OFF face's index beyond the vertices: assimp took it as the last vertex, without a word.
+           {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "line 6: face 0: vertex index \"5\" is not one of the 3 vertices"},
+           {"negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "vertex index \"-1\""},
+           {"short.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n# a comment\n3 0 1\n", "line 6: face 0: declares 3 vertices and lists 2"}}) {
     const auto e = error_of([&] { host::import_model(write(d, c.name, c.text)); });
     EXPECT_EQ(e.source(), d.file(c.name));
     EXPECT_NE(e.what() + std::string(), "no error") << c.name;
     EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << c.name << ": " << e.what();
   }
+  // The counts on the magic's line, comments, blank lines and a face's colour after its indices: a valid OFF.
+  EXPECT_EQ(host::import_model(write(d, "valid.off", "OFF 3 1 0\n# c\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n")).indices.size(), 3u);
   EXPECT_NE(std::string(error_of([] { host::import_model("/usr/share/assimp/models/invalid/OutOfMemory.off"); }).what()).find("declares"),
             std::string::npos);
   EXPECT_NE(std::string(error_of([] { host::import_model("/dev/zero"); }).what()).find("regular file"), std::string::npos);

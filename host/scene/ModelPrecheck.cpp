@@ -7,11 +7,13 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <vector>
 
 #include "common/InputError.hpp"
 #include "common/StrictJson.hpp"
+#include "common/WholeNumber.hpp"
 
 namespace arp::host {
 
@@ -116,6 +118,47 @@ void check_ply(const std::string& path, uint64_t size) {
   }
 }
 
+// OFF's faces, line by line as its reader takes them (blank lines and '#' comments skipped; the counts on the
+// magic's line or the next): each "n i1 .. in" with every index a whole number below the vertex count. assimp's
+// reader takes an index beyond the vertices as the last vertex, without a word, where OBJ's and PLY's refuse it.
+void check_off_faces(const std::string& path, uint64_t nv, uint64_t nf) {
+  std::ifstream in(path, std::ios::binary);
+  enum class At { magic, counts, vertices, faces } at = At::magic;
+  uint64_t line_no = 0, vertices = 0, faces = 0;
+  for (std::string line; faces < nf && std::getline(in, line);) {
+    ++line_no;
+    const size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream ls(line.substr(first));
+    std::string token;
+    if (at == At::magic) {
+      ls >> token;  // the counts may follow on the same line
+      at = ls >> token && token[0] != '#' ? (nv > 0 ? At::vertices : At::faces) : At::counts;
+      continue;
+    }
+    if (at == At::counts) {
+      at = nv > 0 ? At::vertices : At::faces;
+      continue;
+    }
+    if (at == At::vertices) {
+      if (++vertices == nv) at = At::faces;
+      continue;
+    }
+    const std::string place = "line " + std::to_string(line_no);
+    const std::string face = "face " + std::to_string(faces++);
+    ls >> token;
+    const std::optional<int64_t> n = whole_number(token);
+    if (!n || *n < 1) refuse(path, place, face + ": expected its vertex count, got \"" + quoted(token) + "\"");
+    for (int64_t j = 0; j < *n; ++j) {
+      if (!(ls >> token)) refuse(path, place, face + ": declares " + std::to_string(*n) + " vertices and lists " + std::to_string(j));
+      const std::optional<int64_t> i = whole_number(token);
+      if (!i || *i < 0 || static_cast<uint64_t>(*i) >= nv)
+        refuse(path, place, face + ": vertex index \"" + quoted(token) + "\" is not one of the " + std::to_string(nv) +
+                                " vertices (0 .. " + std::to_string(nv) + " - 1)");
+    }
+  }
+}
+
 // OFF: "OFF" then "V F E"; at least 3 values a vertex and 4 a face, 2 bytes a value.
 void check_off(const std::string& path, uint64_t size) {
   const std::string head = read_prefix(path, 1 << 12);
@@ -136,6 +179,7 @@ void check_off(const std::string& path, uint64_t size) {
   const uint64_t nv = parse_count(path, "counts", counts[0]), nf = parse_count(path, "counts", counts[1]);
   check_fits(path, "vertices", nv, 6, size);
   check_fits(path, "faces", nf, 8, size - std::min(size, nv * 6));
+  check_off_faces(path, nv, nf);
 }
 
 // Binary STL: an 80-byte header, a triangle count, 50 bytes a triangle.
