@@ -33,14 +33,29 @@ void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bo
     if (shape_needs_motion) opt->needs(o);
   };
   shape(cmd.add_option("--axis", m.axis, "Rotation axis in the head frame, x,y,z (0,1,0: yaw)")->capture_default_str());
-  shape(cmd.add_option("--rate", m.rate, "rotate: degrees per second")->capture_default_str());
-  shape(cmd.add_option("--peak", m.peak, "shake: peak angular velocity, degrees per second")->capture_default_str());
-  shape(cmd.add_option("--frequency", m.frequency, "shake: Hz")->capture_default_str());
-  shape(cmd.add_option("--amplitude", m.amplitude, "pendulum: degrees")->capture_default_str());
-  shape(cmd.add_option("--period", m.period, "pendulum: seconds")->capture_default_str());
+  CLI::Option* rate = cmd.add_option("--rate", m.rate, "rotate: degrees per second")->capture_default_str();
+  CLI::Option* peak = cmd.add_option("--peak", m.peak, "shake: peak angular velocity, degrees per second")->capture_default_str();
+  CLI::Option* frequency = cmd.add_option("--frequency", m.frequency, "shake: Hz")->capture_default_str();
+  CLI::Option* amplitude = cmd.add_option("--amplitude", m.amplitude, "pendulum: degrees")->capture_default_str();
+  CLI::Option* period = cmd.add_option("--period", m.period, "pendulum: seconds")->capture_default_str();
+  for (CLI::Option* opt : {rate, peak, frequency, amplitude, period}) shape(opt);
   shape(cmd.add_option("--hz", m.hz, "Tracker sample rate")->capture_default_str());
   shape(cmd.add_option("--noise", m.noise, "Random extra rotation per sample, degrees (standard deviation)")->capture_default_str());
-  shape(cmd.add_option("--seed", m.seed, "Noise seed")->capture_default_str());
+  CLI::Option* seed = cmd.add_option("--seed", m.seed, "Noise seed (with --noise)")->capture_default_str();
+  shape(seed);
+  // Nor is a shape of another motion than the one played, or a seed of no noise: they changed nothing, without a word.
+  const std::string played = shape_needs_motion ? "" : "shake";  // (without --motion: that default)
+  cmd.parse_complete_callback([&m, rate, peak, frequency, amplitude, period, seed, played] {
+    const std::string motion = m.motion.empty() ? played : m.motion;
+    if (motion.empty()) return;
+    for (const auto& [opt, for_motion] : {std::pair{rate, "rotate"}, {peak, "shake"}, {frequency, "shake"}, {amplitude, "pendulum"},
+                                          {period, "pendulum"}})
+      if (opt->count() > 0 && motion != for_motion)
+        throw CLI::ValidationError(opt->get_name(), std::string("shapes --motion ") + for_motion + ", and the motion is " + motion +
+                                                        (m.motion.empty() ? " (the default)" : "") + ": it would change nothing");
+    if (seed->count() > 0 && !(m.noise > 0))
+      throw CLI::ValidationError("--seed", "seeds --noise, which is 0: it would change nothing");
+  });
 }
 
 }  // namespace arp::app
