@@ -159,6 +159,8 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (o.vcd_signals != "all" && o.vcd_signals != "control") throw InputError("--vcd-signals", o.vcd_signals, "must be all or control");
   if (!s.clock_gating && fid != scm::Fidelity::Detailed && fid != scm::Fidelity::Cycle)
     throw InputError("--no-clock-gating", "", "only the cycle-accurate levels (cycle, detailed) have clocks to gate");
+  if (!s.speculate && fid != scm::Fidelity::Cycle)
+    throw InputError("--no-speculation", "", "only the cycle level speculates (the detailed level never does): it would change nothing");
   if (o.vcd_signals != "all" && o.vcd.empty()) throw InputError("--vcd-signals", o.vcd_signals, "needs --vcd");
   if (o.truth_face_size != 0 && (o.error_every <= 0 || h.walk.empty()))
     throw InputError("--truth-face-size", std::to_string(o.truth_face_size),
