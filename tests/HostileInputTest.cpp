@@ -389,7 +389,7 @@ TEST(HostileInput, APlotCutShortIsAnErrorAndLeavesNoPicture) {
 TEST(HostileInput, AFileSizeLimitWithItsSignalAtTheDefaultLeavesNothing) {
   TempDir d;
   const auto r = run_command("cd " + d.path() + " && trap - XFSZ && ulimit -f 2 && timeout 120 " + kArpsim +
-                             " run -q --frames 2 --every 0 --photon-times --out-dir o --report r.json --csv c.csv");
+                             " run -q --frames 2 --every 1 --photon-times --out-dir o --report r.json --csv c.csv");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
   for (const auto& e : fs::recursive_directory_iterator(d.path()))
