@@ -162,8 +162,6 @@ void check_spec(const RunSpec& s, scm::Fidelity fid) {
   if (!s.speculate && fid != scm::Fidelity::Cycle)
     throw InputError("--no-speculation", "", "only the cycle level speculates (the detailed level never does): it would change nothing");
   if (o.vcd_signals != "all" && o.vcd.empty()) throw InputError("--vcd-signals", o.vcd_signals, "needs --vcd");
-  if (o.photon_times && o.every <= 0)
-    throw InputError("--photon-times", "", "writes with each image --every saves, and --every 0 saves none: give --every N");
   if (o.truth_face_size != 0 && (o.error_every <= 0 || h.walk.empty()))
     throw InputError("--truth-face-size", std::to_string(o.truth_face_size),
                      "needs --walk and --error-every > 0 (it sizes the truth the error is measured against)");

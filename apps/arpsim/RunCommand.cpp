@@ -20,6 +20,10 @@ struct RunArgs {
 };
 
 int run(RunArgs& a) {
+  // (The library's photon_times also has the model fill each frame's photon times for its callers; on the
+  // command line it means the files alone.)
+  if (a.spec.out.photon_times && a.spec.out.every <= 0)
+    throw InputError("--photon-times", "", "writes with each image --every saves, and --every 0 saves none: give --every N");
   a.spec.config = a.cfg.resolve();
   a.spec.config_source = a.cfg.source();
   a.spec.speculate = !a.no_speculation;
