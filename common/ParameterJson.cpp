@@ -25,7 +25,7 @@ bool integer_of(const json& v, int64_t& out, std::string& why) {
     return true;
   }
   // Digits beyond uint64 reach here as a real number: its size, not its spelling, is the fault.
-  if (v.is_number_float() && std::abs(v.get<double>()) >= 9.2e18) {
+  if (v.is_number_float() && std::abs(v.get<double>()) >= 0x1p63) {  // (2^63: past int64)
     why = "is " + brief(v) + ", beyond any integer setting";
     return false;
   }

@@ -71,8 +71,11 @@ TEST(ModelImportGuard, HeaderCountsBeyondTheFileAreRefusedBeforeImport) {
     EXPECT_NE(e.what() + std::string(), "no error") << c.name;
     EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << c.name << ": " << e.what();
   }
-  // The counts on the magic's line, comments, blank lines and a face's colour after its indices: a valid OFF.
-  EXPECT_EQ(host::import_model(write(d, "valid.off", "OFF 3 1 0\n# c\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n")).indices.size(), 3u);
+  // Valid OFFs: the counts on the magic's line, comments, blank lines and a face's colour after its indices; the
+  // counts split over lines, which assimp reads and the face check leaves to it (it had refused them).
+  for (const std::string valid : {"OFF 3 1 0\n# c\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n", "OFF\n3\n1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                                   "OFF\n3 1\n0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"})
+    EXPECT_EQ(host::import_model(write(d, "valid.off", valid)).indices.size(), 3u) << valid;
   EXPECT_NE(std::string(error_of([] { host::import_model("/usr/share/assimp/models/invalid/OutOfMemory.off"); }).what()).find("declares"),
             std::string::npos);
   EXPECT_NE(std::string(error_of([] { host::import_model("/dev/zero"); }).what()).find("regular file"), std::string::npos);

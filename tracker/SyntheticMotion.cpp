@@ -96,10 +96,13 @@ std::vector<PoseSample> pendulum(const glm::dvec3& axis, double amplitude_deg, d
 }
 
 glm::dvec3 unit_axis(const glm::dvec3& axis) {
-  // Scaled by its largest component first, so that neither 1e200 (whose length overflowed to infinity, and the
-  // axis normalised to zero: a still head) nor 1e-320 (whose length underflowed) is lost.
   const double big = std::max({std::abs(axis.x), std::abs(axis.y), std::abs(axis.z)});
   if (!(big > 0.0) || !std::isfinite(big)) throw std::invalid_argument("rotation axis must be finite and non-zero");
+  // An axis whose length is a normal number as it is: normalised directly, bit for bit as before (traces, plans'
+  // motion hashes). Else scaled by its largest component first, so that neither 1e200 (whose length overflowed to
+  // infinity, and the axis normalised to zero: a still head) nor 1e-320 (whose length underflowed) is lost.
+  const double length = glm::length(axis);
+  if (std::isnormal(length)) return glm::normalize(axis);
   return glm::normalize(axis / big);
 }
 

@@ -51,9 +51,11 @@ void add_motion_options(CLI::App& cmd, tracker::MotionSpec& m, bool required, bo
     for (const auto& [opt, for_motion] : {std::pair{rate, "rotate"}, {peak, "shake"}, {frequency, "shake"}, {amplitude, "pendulum"},
                                           {period, "pendulum"}})
       if (opt->count() > 0 && motion != for_motion)
-        throw CLI::ValidationError(opt->get_name(), std::string("shapes --motion ") + for_motion + ", and the motion is " + motion +
-                                                        (m.motion.empty() ? " (the default)" : "") + ": it would change nothing");
-    if (seed->count() > 0 && !(m.noise > 0))
+        throw CLI::ValidationError(opt->get_name(), std::string("shapes --motion ") + for_motion + ", and " +
+                                                        (m.motion.empty() ? "no --motion is given (the default " + motion + " plays, or a --trace)"
+                                                                          : "the motion is " + motion) +
+                                                        ": it would change nothing");
+    if (seed->count() > 0 && m.noise == 0)
       throw CLI::ValidationError("--seed", "seeds --noise, which is 0: it would change nothing");
   });
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "common/InputError.hpp"
@@ -118,25 +119,42 @@ void check_ply(const std::string& path, uint64_t size) {
   }
 }
 
-// OFF's faces, line by line as its reader takes them (blank lines and '#' comments skipped; the counts on the
-// magic's line or the next): each "n i1 .. in" with every index a whole number below the vertex count. assimp's
-// reader takes an index beyond the vertices as the last vertex, without a word, where OBJ's and PLY's refuse it.
+// The whitespace-separated words of a line, in place (no copies: a model may be 1 GiB).
+std::vector<std::string_view> words_of(std::string_view line) {
+  std::vector<std::string_view> w;
+  for (size_t at = 0;;) {
+    at = line.find_first_not_of(" \t\r", at);
+    if (at == std::string_view::npos) return w;
+    const size_t end = std::min(line.size(), line.find_first_of(" \t\r", at));
+    w.push_back(line.substr(at, end - at));
+    at = end;
+  }
+}
+
+// OFF's faces, each "n i1 .. in" with every index a whole number below the vertex count: assimp's reader takes an
+// index beyond the vertices as the last vertex, without a word, where OBJ's and PLY's refuse it. Checked only
+// where the header is laid out plainly -- the magic word "OFF" or "COFF" alone on its line or with the three
+// counts after it, else the three counts alone on the next line (blank lines and '#' comments skipped) -- and each
+// line shorter than 64 KiB; any other layout (counts split over lines, nOFF's dimension, binary) is left to assimp
+// as before, rather than guessed at and a valid model refused.
 void check_off_faces(const std::string& path, uint64_t nv, uint64_t nf) {
   std::ifstream in(path, std::ios::binary);
   enum class At { magic, counts, vertices, faces } at = At::magic;
   uint64_t line_no = 0, vertices = 0, faces = 0;
-  for (std::string line; faces < nf && std::getline(in, line);) {
+  std::vector<char> buf(size_t{1} << 16);  // one line at a time, bounded: a longer one ends the check
+  while (faces < nf && in.getline(buf.data(), static_cast<std::streamsize>(buf.size()))) {
     ++line_no;
-    const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    std::istringstream ls(line.substr(first));
-    std::string token;
+    const std::vector<std::string_view> w = words_of(std::string_view(buf.data(), std::strlen(buf.data())));
+    if (w.empty() || w[0][0] == '#') continue;
     if (at == At::magic) {
-      ls >> token;  // the counts may follow on the same line
-      at = ls >> token && token[0] != '#' ? (nv > 0 ? At::vertices : At::faces) : At::counts;
+      if (w[0] != "OFF" && w[0] != "COFF") return;
+      if (w.size() == 1) at = At::counts;
+      else if (w.size() == 4) at = nv > 0 ? At::vertices : At::faces;
+      else return;
       continue;
     }
     if (at == At::counts) {
+      if (w.size() != 3) return;
       at = nv > 0 ? At::vertices : At::faces;
       continue;
     }
@@ -146,14 +164,14 @@ void check_off_faces(const std::string& path, uint64_t nv, uint64_t nf) {
     }
     const std::string place = "line " + std::to_string(line_no);
     const std::string face = "face " + std::to_string(faces++);
-    ls >> token;
-    const std::optional<int64_t> n = whole_number(token);
-    if (!n || *n < 1) refuse(path, place, face + ": expected its vertex count, got \"" + quoted(token) + "\"");
-    for (int64_t j = 0; j < *n; ++j) {
-      if (!(ls >> token)) refuse(path, place, face + ": declares " + std::to_string(*n) + " vertices and lists " + std::to_string(j));
-      const std::optional<int64_t> i = whole_number(token);
+    const std::optional<int64_t> n = whole_number(w[0]);
+    if (!n || *n < 1) refuse(path, place, face + ": expected its vertex count, got \"" + quoted(std::string(w[0])) + "\"");
+    if (static_cast<uint64_t>(*n) >= w.size())
+      refuse(path, place, face + ": declares " + std::to_string(*n) + " vertices and lists " + std::to_string(w.size() - 1));
+    for (size_t j = 1; j <= static_cast<size_t>(*n); ++j) {
+      const std::optional<int64_t> i = whole_number(w[j]);
       if (!i || *i < 0 || static_cast<uint64_t>(*i) >= nv)
-        refuse(path, place, face + ": vertex index \"" + quoted(token) + "\" is not one of the " + std::to_string(nv) +
+        refuse(path, place, face + ": vertex index \"" + quoted(std::string(w[j])) + "\" is not one of the " + std::to_string(nv) +
                                 " vertices (0 .. " + std::to_string(nv) + " - 1)");
     }
   }

@@ -106,8 +106,9 @@ class DetailedPipeline : public sc_core::sc_module {
     chain_.for_each_fifo([&](const auto& f) { sc_trace(tf, f.occupancy_ref(), n + "." + f.name() + ".occupancy"); });
   }
   // Before the simulation starts, for a waveform that opens later, at absolute time abs_ps: clock gating does
-  // not skip past the cycle that starts there (whose edge runs just before the waveform opens, and whose
-  // falling edge is in it), so the window shows its idle clocks as it shows any others.
+  // not skip past the cycle that starts there (its edge runs at that instant, just before the waveform opens),
+  // so the window shows its idle pixel clocks as it shows any others. (The host clock stays gated while its
+  // port is idle, traced or not.)
   void trace_from(int64_t abs_ps) {
     trace_cycle_ = abs_ps == INT64_MAX ? INT64_MAX : dp::clock_cycle_at_or_after(abs_ps, chain_.context().config().timing.pixel_clock_hz);
   }
