@@ -117,6 +117,28 @@ int64_t copy_bytes(const Mesh& m, bool smooth) {
 // The rest of a run (display memories, frames, the renderer's faces) needs room too: the meshes may take half.
 constexpr int64_t kHeadroom = 2;
 
+// A file the scene names under `key` (relative to the scene's folder), loaded once per path through `cache`:
+// a failure is the file's own error (its file, its place, why) after the scene's place that names it. `shared`:
+// whether an earlier object had loaded it.
+template <class T, class Load>
+std::shared_ptr<const T> named_file(const Fields& o, const char* key, const std::string& name, const std::string& base_dir,
+                                    std::map<std::string, std::shared_ptr<const T>>& cache, Load load, bool* shared = nullptr) {
+  std::string file = name;
+  if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
+  auto it = cache.find(file);
+  if (shared) *shared = it != cache.end();
+  if (it == cache.end()) {
+    std::shared_ptr<const T> loaded;
+    try {
+      loaded = std::make_shared<const T>(load(file));
+    } catch (const InputError& e) {
+      o.fail(key, e.what());
+    }
+    it = cache.emplace(file, std::move(loaded)).first;
+  }
+  return it->second;
+}
+
 }  // namespace
 
 Scene scene_from_json(const json& j, const std::string& source, const std::string& base_dir) {
@@ -162,22 +184,9 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
     } else if (o.has("sphere")) {
       mesh = std::make_shared<Mesh>(make_sphere(o.number("sphere", 0.5, 1e-4, 1e5), segments));
     } else {
-      std::string file = o.text("model", "");
+      const std::string file = o.text("model", "");
       if (file.empty()) o.fail("model", "is empty: name the model file (relative to the scene's folder)");
-      if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
-      auto it = models.find(file);
-      shared = it != models.end();
-      if (!shared) {
-        // The model's own error (its file, its place, why) after the scene's place that names it.
-        std::shared_ptr<Mesh> m;
-        try {
-          m = std::make_shared<Mesh>(import_model(file));
-        } catch (const InputError& e) {
-          o.fail("model", e.what());
-        }
-        it = models.emplace(file, std::move(m)).first;
-      }
-      mesh = it->second;
+      mesh = named_file(o, "model", file, base_dir, models, [](const std::string& f) { return import_model(f); }, &shared);
     }
     if (mesh->indices.empty()) o.fail("", "the object has no triangles");
     Material mat;
@@ -199,19 +208,7 @@ Scene scene_from_json(const json& j, const std::string& source, const std::strin
     if (textured && texture.empty()) o.fail("texture", "is empty: name the image file, or leave the key out for no texture");
     if (textured) {
       if (mesh->uvs.empty()) o.fail("texture", "this shape has no texture coordinates (quads, boxes and models with them do)");
-      std::string file = texture;
-      if (std::filesystem::path(file).is_relative()) file = (std::filesystem::path(base_dir) / file).string();
-      auto it = textures.find(file);
-      if (it == textures.end()) {
-        std::shared_ptr<RgbImage> img;
-        try {
-          img = std::make_shared<RgbImage>(read_rgb8(file));
-        } catch (const InputError& e) {
-          o.fail("texture", e.what());
-        }
-        it = textures.emplace(file, std::move(img)).first;
-      }
-      mat.texture = it->second;
+      mat.texture = named_file(o, "texture", texture, base_dir, textures, [](const std::string& f) { return read_rgb8(f); });
     }
     SceneObject& so = add_object(s, o.name("object " + std::to_string(i)), mesh,
                                  o.vec3("position", {0, 0, 0}, -kWorldLimitM, kWorldLimitM), mat);
